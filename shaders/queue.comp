@@ -1,0 +1,22 @@
+#version 460
+// queue: turns the append counters into indirect-dispatch arguments for the next passes, then
+// zeroes the counters for the next bounce, so the host never reads a count inside a wave.
+// In/out: counters. One invocation.
+#extension GL_GOOGLE_include_directive : require
+layout(local_size_x = 1) in;
+#include "bindings.glsl"
+
+DispatchArgs argsFor(uint count) {
+    return DispatchArgs((count + WF_WORKGROUP_SIZE - 1u) / WF_WORKGROUP_SIZE, 1u, 1u, count);
+}
+
+void main() {
+    uint rays = counters.rayCount;
+    uint shadows = counters.shadowCount;
+    counters.rayArgs = argsFor(rays);
+    counters.shadowArgs = argsFor(shadows);
+    counters.extensionRays += rays;
+    counters.shadowRays += shadows;
+    counters.rayCount = 0u;
+    counters.shadowCount = 0u;
+}

@@ -1,0 +1,22 @@
+#version 460
+// shadow: any-hit visibility of each NEE connection in the shadow queue.
+// In: shadowQueue (count in counters.shadowArgs.count), shadowOrigin/Direction/Radiance.
+// Out: radiance[path] += shadowRadiance[path] when the segment t in (0, 1) is unoccluded.
+#extension GL_GOOGLE_include_directive : require
+layout(local_size_x = WF_WORKGROUP_SIZE) in;
+#include "bindings.glsl"
+
+#define WF_BVH_NODE(i) bvhNodes[i]
+#define WF_BVH_TRIANGLE(i) triangles[i]
+#include "bvh_traverse.h"
+
+void main() {
+    uint index = gl_GlobalInvocationID.x;
+    if (index >= counters.shadowArgs.count)
+        return;
+    uint path = shadowQueue[index];
+    // The direction spans the whole segment; both ends are offset off their surfaces, so the
+    // light's own triangle lies beyond t = 1 and the shading triangle before t = 0.
+    if (!traceAny(shadowOrigin[path].xyz, shadowDirection[path].xyz, 1.0))
+        radiance[path].rgb += shadowRadiance[path].rgb;
+}

@@ -1,0 +1,63 @@
+// Buffer declarations of the shared descriptor set. A pass includes this after defining
+// WF_WORKGROUP_SIZE; the host compiles with WF_HAS_EMITTERS only when the scene has emissive
+// triangles, so an emitter-free scene declares (and binds) no emitter table.
+#include "scene_types.h"
+#include "render_types.h"
+
+layout(std430, binding = WF_BINDING_TRIANGLES) readonly buffer TriangleBuffer {
+    Triangle triangles[];
+};
+layout(std430, binding = WF_BINDING_BVH_NODES) readonly buffer BvhNodeBuffer {
+    BvhNode bvhNodes[];
+};
+layout(std430, binding = WF_BINDING_MATERIALS) readonly buffer MaterialBuffer {
+    Material materials[];
+};
+#if WF_HAS_EMITTERS
+layout(std430, binding = WF_BINDING_EMITTERS) readonly buffer EmitterBuffer {
+    Emitter emitters[];
+};
+#endif
+layout(std430, binding = WF_BINDING_PARAMS) readonly buffer ParamsBuffer {
+    RenderParams params;
+};
+layout(std430, binding = WF_BINDING_COUNTERS) buffer CounterBuffer {
+    QueueCounters counters;
+};
+layout(std430, binding = WF_BINDING_FILM) buffer FilmBuffer {
+    vec4 film[]; // rgb: radiance sum, a: sample count
+};
+layout(std430, binding = WF_BINDING_RAY_ORIGIN) buffer RayOriginBuffer {
+    vec4 rayOrigin[]; // xyz: origin, w: pdf of the BSDF sample that chose the ray (0: none)
+};
+layout(std430, binding = WF_BINDING_RAY_DIRECTION) buffer RayDirectionBuffer {
+    vec4 rayDirection[]; // xyz: unit direction
+};
+layout(std430, binding = WF_BINDING_THROUGHPUT) buffer ThroughputBuffer {
+    vec4 throughput[];
+};
+layout(std430, binding = WF_BINDING_RADIANCE) buffer RadianceBuffer {
+    vec4 radiance[];
+};
+layout(std430, binding = WF_BINDING_HITS) buffer HitBuffer {
+    uvec4 hits[]; // t, b1, b2 as float bits; triangle index, or WF_MISS
+};
+layout(std430, binding = WF_BINDING_RAY_QUEUES) buffer RayQueueBuffer {
+    uint rayQueues[]; // two queues of pathCapacity path indices, by depth parity
+};
+#if WF_HAS_EMITTERS
+layout(std430, binding = WF_BINDING_SHADOW_ORIGIN) buffer ShadowOriginBuffer {
+    vec4 shadowOrigin[];
+};
+layout(std430, binding = WF_BINDING_SHADOW_DIRECTION) buffer ShadowDirectionBuffer {
+    vec4 shadowDirection[]; // xyz: target - origin, so the segment is t in (0, 1)
+};
+layout(std430, binding = WF_BINDING_SHADOW_RADIANCE) buffer ShadowRadianceBuffer {
+    vec4 shadowRadiance[]; // radiance added if the segment is unoccluded
+};
+layout(std430, binding = WF_BINDING_SHADOW_QUEUE) buffer ShadowQueueBuffer {
+    uint shadowQueue[];
+};
+#endif
+
+#define WF_MISS 0xffffffffu

@@ -1,0 +1,102 @@
+// Render state shared by the host and every pass: binding numbers, per-render parameters, the
+// queue counters with their indirect-dispatch arguments, and push constants.
+//
+// Queue protocol of one wave (see docs/ARCHITECTURE.md):
+//   raygen      writes PathState for paths [0, pathCount), rayQueue[0] = identity
+//   intersect   reads rayQueue[depth & 1] (count in rayArgs.count), writes hits
+//   shade       reads rayQueue[depth & 1] + hits; appends to rayQueue[(depth+1) & 1] (rayCount)
+//               and to shadowQueue (shadowCount); adds emission to radiance
+//   queue       copies rayCount/shadowCount into rayArgs/shadowArgs, zeroes them, keeps stats
+//   shadow      reads shadowQueue (count in shadowArgs.count); adds unoccluded NEE to radiance
+//   accumulate  adds each pixel's paths into the film, zeroing NaN/Inf samples
+#ifndef WF_RENDER_TYPES_H
+#define WF_RENDER_TYPES_H
+
+#include "glsl_cpp.h"
+
+#ifdef __cplusplus
+namespace wf::gpu_types {
+#endif
+
+// Scene data
+#define WF_BINDING_TRIANGLES 0
+#define WF_BINDING_BVH_NODES 1
+#define WF_BINDING_MATERIALS 2
+#define WF_BINDING_EMITTERS 3
+// Per render
+#define WF_BINDING_PARAMS 4
+#define WF_BINDING_COUNTERS 5
+#define WF_BINDING_FILM 6
+// Path state, structure of arrays indexed by path
+#define WF_BINDING_RAY_ORIGIN 7
+#define WF_BINDING_RAY_DIRECTION 8
+#define WF_BINDING_THROUGHPUT 9
+#define WF_BINDING_RADIANCE 10
+#define WF_BINDING_HITS 11
+#define WF_BINDING_SHADOW_ORIGIN 12
+#define WF_BINDING_SHADOW_DIRECTION 13
+#define WF_BINDING_SHADOW_RADIANCE 14
+#define WF_BINDING_RAY_QUEUES 15
+#define WF_BINDING_SHADOW_QUEUE 16
+
+struct RenderParams {
+    vec3 cameraPosition;
+    float tanHalfFovY;
+    vec3 cameraForward;
+    float aspect; // width / height of the image
+    vec3 cameraUp;
+    uint seed;
+    vec3 cameraRight;
+    uint maxDepth;      // path segments from the camera (1: emitters seen directly)
+    uint width;
+    uint height;
+    uint pixelCount;
+    uint rrDepth;       // Russian roulette from this bounce on
+    uint emitterCount;
+    uint pathCapacity;  // paths per wave that the buffers hold
+    uint pad0;
+    uint pad1;
+};
+
+// VkDispatchIndirectCommand followed by the item count the dispatch covers.
+struct DispatchArgs {
+    uint groupsX;
+    uint groupsY;
+    uint groupsZ;
+    uint count;
+};
+
+struct QueueCounters {
+    uint rayCount;    // live append counter of the next ray queue
+    uint shadowCount; // live append counter of the shadow queue
+    uint pad0;
+    uint pad1;
+    DispatchArgs rayArgs;
+    DispatchArgs shadowArgs;
+    uint extensionRays; // stats for the wave, summed by the queue pass
+    uint shadowRays;
+    uint nonFiniteSamples;
+    uint pad2;
+};
+
+struct PassConstants {
+    uint depth;       // bounce index: the ray segment being processed is depth + 1
+    uint sampleBase;  // sample index of the wave's first sample per pixel
+    uint pathCount;   // paths in this wave (raygen, accumulate)
+    uint samplesPerPixel; // samples per pixel in this wave (accumulate)
+};
+
+#ifdef __cplusplus
+} // namespace wf::gpu_types
+static_assert(sizeof(wf::gpu_types::RenderParams) == 96);
+static_assert(offsetof(wf::gpu_types::RenderParams, seed) == 44);
+static_assert(offsetof(wf::gpu_types::RenderParams, maxDepth) == 60);
+static_assert(offsetof(wf::gpu_types::RenderParams, pathCapacity) == 84);
+static_assert(sizeof(wf::gpu_types::QueueCounters) == 64);
+static_assert(offsetof(wf::gpu_types::QueueCounters, rayArgs) == 16);
+static_assert(offsetof(wf::gpu_types::QueueCounters, shadowArgs) == 32);
+static_assert(offsetof(wf::gpu_types::QueueCounters, nonFiniteSamples) == 56);
+static_assert(sizeof(wf::gpu_types::PassConstants) == 16);
+#endif
+
+#endif

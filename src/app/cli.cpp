@@ -1,0 +1,94 @@
+#include "app/cli.h"
+
+#include <cerrno>
+#include <cstdlib>
+#include <sstream>
+
+#include "errors.h"
+
+namespace wf {
+
+std::optional<std::string> ParsedArgs::value(const std::string& name) const {
+    auto it = values_.find(name);
+    if (it == values_.end())
+        return std::nullopt;
+    return it->second;
+}
+
+uint32_t ParsedArgs::uintValue(const std::string& name, uint32_t fallback, uint32_t minValue,
+                               uint32_t maxValue) const {
+    auto text = value(name);
+    if (!text)
+        return fallback;
+    const char* begin = text->c_str();
+    char* end = nullptr;
+    errno = 0;
+    unsigned long long parsed = std::strtoull(begin, &end, 10);
+    bool digitsOnly = !text->empty() && text->find_first_not_of("0123456789") == std::string::npos;
+    if (!digitsOnly || *end != '\0' || errno == ERANGE || parsed < minValue || parsed > maxValue)
+        throw UsageError(name + " expects an integer from " + std::to_string(minValue) + " to " +
+                         std::to_string(maxValue) + ", got '" + *text + "'");
+    return static_cast<uint32_t>(parsed);
+}
+
+ParsedArgs parseArgs(const CommandSpec& spec, const std::vector<std::string>& args) {
+    ParsedArgs parsed;
+    for (size_t i = 0; i < args.size(); ++i) {
+        const std::string& arg = args[i];
+        if (arg == "--help" || arg == "-h") {
+            parsed.set("--help", "");
+            continue;
+        }
+        if (arg.size() < 2 || arg[0] != '-') {
+            parsed.positional.push_back(arg);
+            continue;
+        }
+        std::string name = arg, inlineValue;
+        bool hasInline = false;
+        if (auto eq = arg.find('='); eq != std::string::npos && arg.rfind("--", 0) == 0) {
+            name = arg.substr(0, eq);
+            inlineValue = arg.substr(eq + 1);
+            hasInline = true;
+        }
+        const OptionSpec* option = nullptr;
+        for (const auto& candidate : spec.options)
+            if (candidate.name == name || (!candidate.shortName.empty() &&
+                                           candidate.shortName == name))
+                option = &candidate;
+        if (!option)
+            throw UsageError("unknown option '" + name + "' for 'wavefront " + spec.name +
+                             "' (see wavefront " + spec.name + " --help)");
+        if (option->valueName.empty()) {
+            if (hasInline)
+                throw UsageError(option->name + " takes no value");
+            parsed.set(option->name, "");
+        } else if (hasInline) {
+            parsed.set(option->name, inlineValue);
+        } else {
+            if (i + 1 >= args.size())
+                throw UsageError(option->name + " needs a value (" + option->valueName + ")");
+            parsed.set(option->name, args[++i]);
+        }
+    }
+    return parsed;
+}
+
+std::string helpText(const CommandSpec& spec) {
+    std::ostringstream out;
+    out << "Usage: " << spec.usage << "\n\n" << spec.summary << "\n\nOptions:\n";
+    for (const auto& option : spec.options) {
+        std::string flag = option.shortName.empty() ? "    " : option.shortName + ", ";
+        flag += option.name;
+        if (!option.valueName.empty())
+            flag += " " + option.valueName;
+        out << "  " << flag;
+        out << std::string(flag.size() < 26 ? 26 - flag.size() : 1, ' ') << option.description
+            << "\n";
+    }
+    out << "  -h, --help                  show this help\n";
+    if (!spec.epilogue.empty())
+        out << "\n" << spec.epilogue;
+    return out.str();
+}
+
+} // namespace wf

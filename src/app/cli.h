@@ -1,0 +1,45 @@
+// A small declarative command-line parser: each subcommand lists its options once, and the
+// same table drives parsing, validation and --help, so help can never miss a flag.
+#pragma once
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace wf {
+
+struct OptionSpec {
+    std::string name;        // "--spp"
+    std::string shortName;   // "-o" or empty
+    std::string valueName;   // "N"; empty for a switch
+    std::string description; // one line, including the default
+};
+
+struct CommandSpec {
+    std::string name;       // "render"
+    std::string usage;      // "wavefront render SCENE.gltf -o OUT.exr [options]"
+    std::string summary;    // one line
+    std::vector<OptionSpec> options;
+    std::string epilogue;   // extra text after the option list (environment, exit codes)
+};
+
+class ParsedArgs {
+public:
+    std::vector<std::string> positional;
+    bool has(const std::string& name) const { return values_.count(name) > 0; }
+    std::optional<std::string> value(const std::string& name) const;
+    // Unsigned integer in [minValue, maxValue]; UsageError names the flag otherwise.
+    uint32_t uintValue(const std::string& name, uint32_t fallback, uint32_t minValue,
+                       uint32_t maxValue) const;
+    void set(const std::string& name, std::string value) { values_[name] = std::move(value); }
+
+private:
+    std::map<std::string, std::string> values_;
+};
+
+// Throws UsageError on an unknown flag or a missing value. "--help"/"-h" are always accepted.
+ParsedArgs parseArgs(const CommandSpec& spec, const std::vector<std::string>& args);
+std::string helpText(const CommandSpec& spec);
+
+} // namespace wf

@@ -1,0 +1,194 @@
+// wavefront render: load, build, trace all samples in waves, write EXR + PNG (+ JSON stats).
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <unistd.h>
+
+#include "app/cli.h"
+#include "app/commands.h"
+#include "app/stats_json.h"
+#include "errors.h"
+#include "gpu/context.h"
+#include "image/exr_io.h"
+#include "image/png_writer.h"
+#include "render/scene_buffers.h"
+#include "render/wavefront_renderer.h"
+#include "scene/default_camera.h"
+#include "scene/gltf_loader.h"
+
+namespace fs = std::filesystem;
+
+namespace wf {
+namespace {
+
+const CommandSpec& renderSpec() {
+    static const CommandSpec spec{
+        "render",
+        "wavefront render SCENE.gltf -o OUT.exr [options]",
+        "Path traces SCENE (.gltf or .glb) and writes linear radiance to OUT.exr (float32 RGB,\n"
+        "with spp, seed and render time as header attributes) and a tonemapped sRGB preview\n"
+        "beside it (OUT.png).",
+        {
+            {"--output", "-o", "OUT.exr", "output OpenEXR file (required; must end in .exr)"},
+            {"--spp", "", "N", "samples per pixel (default 64)"},
+            {"--width", "", "W", "image width in pixels (default 512)"},
+            {"--height", "", "H", "image height (default: width / the camera's aspect ratio)"},
+            {"--max-depth", "", "D", "path segments from the camera: 1 shows emitters only, 2 "
+                                     "adds direct light (default 16)"},
+            {"--rr-depth", "", "N", "Russian roulette after N bounces (default 3)"},
+            {"--seed", "", "S", "random seed; same seed, same image bit for bit (default 0)"},
+            {"--json", "", "STATS.json", "write statistics: spp, seconds, paths/s, rays/s"},
+            {"--device", "", "N", "Vulkan device index (default: WAVEFRONT_DEVICE, else the "
+                                  "first GPU)"},
+            {"--quiet", "-q", "", "no progress line on stderr"},
+            {"--verbose", "-v", "", "print the scene summary, shader variant and GPU memory"},
+        },
+        "Environment:\n"
+        "  WAVEFRONT_DEVICE=N        Vulkan device index, as --device\n"
+        "  WAVEFRONT_VALIDATION=1    enable the Khronos validation layer (messages to stderr)\n"
+        "  WAVEFRONT_SHADER_DIR=DIR  GLSL sources (default: next to the binary, else the source "
+        "tree)\n"
+        "  WAVEFRONT_CACHE_DIR=DIR   SPIR-V cache (default ~/.cache/wavefront; empty: none)\n"
+        "\n"
+        "Exit codes: 0 done, 2 bad usage or bad input, 1 internal or device failure.\n"};
+    return spec;
+}
+
+std::string pngPathFor(const std::string& exrPath) {
+    return fs::path(exrPath).replace_extension(".png").string();
+}
+
+class ProgressLine {
+public:
+    explicit ProgressLine(bool enabled) : enabled_(enabled), tty_(isatty(STDERR_FILENO)) {}
+    void update(const WaveProgress& progress) {
+        if (!enabled_)
+            return;
+        const bool last = progress.samplesDone == progress.samplesTotal;
+        // On a terminal redraw one line; in a log, at most a line a second.
+        if (!tty_ && !last && progress.secondsElapsed - lastPrinted_ < 1.0)
+            return;
+        lastPrinted_ = progress.secondsElapsed;
+        double eta = progress.secondsElapsed / progress.samplesDone *
+                     (progress.samplesTotal - progress.samplesDone);
+        std::fprintf(stderr, "%swavefront: %u/%u spp, %.1f s elapsed, ETA %.1f s%s",
+                     tty_ ? "\r" : "", progress.samplesDone, progress.samplesTotal,
+                     progress.secondsElapsed, eta, tty_ && !last ? "   " : "\n");
+        std::fflush(stderr);
+    }
+
+private:
+    bool enabled_;
+    bool tty_;
+    double lastPrinted_ = -1.0;
+};
+
+void printVerbose(const PreparedScene& scene, const WavefrontRenderer& renderer,
+                  const Context& context) {
+    std::fprintf(stderr, "wavefront: device %s (%s), subgroup size %u\n",
+                 context.deviceName().c_str(), context.driverInfo().c_str(),
+                 context.subgroupSize());
+    std::fprintf(stderr,
+                 "wavefront: %zu triangles, %zu materials, %zu emitters; BVH %u nodes, depth %u, "
+                 "SAH cost %.2f, built in %.3f s\n",
+                 scene.triangles.size(), scene.materials.size(), scene.lights.emitters.size(),
+                 scene.bvhStats.nodeCount, scene.bvhStats.maxDepth, scene.bvhStats.sahCost,
+                 scene.bvhStats.buildSeconds);
+    std::string variant;
+    for (const auto& [name, value] : renderer.shaderDefines())
+        variant += " " + name + "=" + value;
+    std::fprintf(stderr, "wavefront: shader variant:%s; %u samples per wave\n", variant.c_str(),
+                 renderer.samplesPerWave());
+    uint64_t total = 0;
+    for (const auto& [name, bytes] : renderer.memoryReport()) {
+        std::fprintf(stderr, "wavefront:   %-18s %10.2f KiB\n", name.c_str(), bytes / 1024.0);
+        total += bytes;
+    }
+    std::fprintf(stderr, "wavefront:   %-18s %10.2f MiB\n", "total GPU memory",
+                 total / (1024.0 * 1024.0));
+}
+
+} // namespace
+
+std::string renderHelp() { return helpText(renderSpec()); }
+
+int runRenderCommand(const std::vector<std::string>& args) {
+    ParsedArgs parsed = parseArgs(renderSpec(), args);
+    if (parsed.has("--help")) {
+        std::fputs(renderHelp().c_str(), stdout);
+        return 0;
+    }
+    if (parsed.positional.size() != 1)
+        throw UsageError("render needs exactly one scene file (see wavefront render --help)");
+    auto output = parsed.value("--output");
+    if (!output || output->empty())
+        throw UsageError("render needs -o OUT.exr (see wavefront render --help)");
+    if (fs::path(*output).extension() != ".exr")
+        throw UsageError("output file must end in .exr, got '" + *output + "'");
+    const fs::path outputDir = fs::path(*output).parent_path();
+    if (!outputDir.empty() && !fs::is_directory(outputDir))
+        throw InputError("cannot write " + *output + ": folder " + outputDir.string() +
+                         " does not exist");
+
+    RenderSettings settings;
+    settings.samplesPerPixel = parsed.uintValue("--spp", 64, 1, 1u << 20);
+    settings.maxDepth = parsed.uintValue("--max-depth", 16, 1, 1024);
+    settings.rrDepth = parsed.uintValue("--rr-depth", 3, 0, 1024);
+    settings.seed = parsed.uintValue("--seed", 0, 0, 0xffffffffu);
+    const bool quiet = parsed.has("--quiet");
+    const bool verbose = parsed.has("--verbose");
+
+    const std::string scenePath = parsed.positional.front();
+    Scene scene = loadGltf(scenePath);
+    if (!scene.hasCamera)
+        scene.camera = frameBounds(scene);
+    const float aspect = scene.camera.aspect > 0.0f ? scene.camera.aspect : 1.0f;
+    const bool hasWidth = parsed.has("--width"), hasHeight = parsed.has("--height");
+    settings.width = parsed.uintValue("--width", 512, 1, 16384);
+    settings.height = parsed.uintValue("--height", 0, 1, 16384);
+    if (!hasHeight)
+        settings.height = std::max(1u, static_cast<uint32_t>(std::lround(settings.width / aspect)));
+    else if (!hasWidth)
+        settings.width = std::max(1u, static_cast<uint32_t>(std::lround(settings.height * aspect)));
+
+    ContextOptions contextOptions;
+    if (parsed.has("--device"))
+        contextOptions.deviceIndex = static_cast<int>(parsed.uintValue("--device", 0, 0, 64));
+    contextOptions.quiet = quiet;
+    Context context(contextOptions);
+    ShaderCompiler compiler;
+    PreparedScene prepared = prepareScene(std::move(scene));
+    WavefrontRenderer renderer(context, prepared, settings, compiler);
+    if (verbose)
+        printVerbose(prepared, renderer, context);
+
+    ProgressLine progress(!quiet);
+    renderer.render([&](const WaveProgress& wave) { progress.update(wave); });
+    const RenderStats& stats = renderer.stats();
+    std::vector<float> image = renderer.readImage();
+
+    writeExr(*output, static_cast<int>(settings.width), static_cast<int>(settings.height), image,
+             {{"software", "Wavefront"}, {"scene", scenePath}},
+             {{"renderSeconds", static_cast<float>(stats.seconds)}},
+             {{"spp", static_cast<int>(stats.samplesPerPixel)},
+              {"seed", static_cast<int>(settings.seed)},
+              {"maxDepth", static_cast<int>(settings.maxDepth)}});
+    writePngPreview(pngPathFor(*output), static_cast<int>(settings.width),
+                    static_cast<int>(settings.height), image);
+    if (auto json = parsed.value("--json"))
+        writeStatsJson(*json, stats,
+                       {scenePath, context.deviceName(), settings.width, settings.height,
+                        settings.maxDepth, settings.seed});
+    if (!quiet)
+        std::fprintf(stderr, "wavefront: wrote %s and %s (%.0f paths/s)\n", output->c_str(),
+                     pngPathFor(*output).c_str(), stats.paths / std::max(stats.seconds, 1e-9));
+    if (context.validationMessageCount() > 0) {
+        std::fprintf(stderr, "wavefront: %u validation message(s)\n",
+                     context.validationMessageCount());
+        return 1;
+    }
+    return 0;
+}
+
+} // namespace wf

@@ -1,0 +1,86 @@
+#include "app/stats_json.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "errors.h"
+#include "image/atomic_file.h"
+
+namespace wf {
+namespace {
+
+std::string quoted(const std::string& text) {
+    std::string out = "\"";
+    for (char c : text) {
+        if (c == '"' || c == '\\') {
+            out += '\\';
+            out += c;
+        } else if (static_cast<unsigned char>(c) < 0x20) {
+            char escaped[8];
+            std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
+            out += escaped;
+        } else {
+            out += c;
+        }
+    }
+    return out + "\"";
+}
+
+std::string number(double value) {
+    if (!std::isfinite(value))
+        return "null";
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", value);
+    return text;
+}
+
+} // namespace
+
+std::string statsToJson(const RenderStats& stats, const StatsContext& context) {
+    const double seconds = stats.seconds > 0.0 ? stats.seconds : 1e-9;
+    const uint64_t totalRays = stats.cameraRays + stats.extensionRays + stats.shadowRays;
+    std::ostringstream out;
+    out << "{\n"
+        << "  \"scene\": " << quoted(context.scene) << ",\n"
+        << "  \"device\": " << quoted(context.device) << ",\n"
+        << "  \"width\": " << context.width << ",\n"
+        << "  \"height\": " << context.height << ",\n"
+        << "  \"maxDepth\": " << context.maxDepth << ",\n"
+        << "  \"seed\": " << context.seed << ",\n"
+        << "  \"spp\": " << stats.samplesPerPixel << ",\n"
+        << "  \"seconds\": " << number(stats.seconds) << ",\n"
+        << "  \"waves\": " << stats.waves << ",\n"
+        << "  \"paths\": " << stats.paths << ",\n"
+        << "  \"pathsPerSecond\": " << number(stats.paths / seconds) << ",\n"
+        << "  \"rays\": {\"camera\": " << stats.cameraRays
+        << ", \"extension\": " << stats.extensionRays << ", \"shadow\": " << stats.shadowRays
+        << ", \"total\": " << totalRays << "},\n"
+        << "  \"raysPerSecond\": {\"camera\": " << number(stats.cameraRays / seconds)
+        << ", \"extension\": " << number(stats.extensionRays / seconds)
+        << ", \"shadow\": " << number(stats.shadowRays / seconds)
+        << ", \"total\": " << number(totalRays / seconds) << "},\n"
+        << "  \"nonFiniteSamples\": " << stats.nonFiniteSamples << ",\n"
+        << "  \"gpuMilliseconds\": {";
+    bool first = true;
+    for (const auto& [pass, ms] : stats.passMilliseconds) {
+        out << (first ? "" : ", ") << quoted(pass) << ": " << number(ms);
+        first = false;
+    }
+    out << "}\n}\n";
+    return out.str();
+}
+
+void writeStatsJson(const std::string& path, const RenderStats& stats,
+                    const StatsContext& context) {
+    const std::string text = statsToJson(stats, context);
+    writeFileAtomically(path, [&](const std::string& tmp) {
+        std::ofstream out(tmp, std::ios::binary);
+        out << text;
+        if (!out)
+            throw InputError("cannot write " + path);
+    });
+}
+
+} // namespace wf

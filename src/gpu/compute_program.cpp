@@ -1,0 +1,141 @@
+#include "gpu/compute_program.h"
+
+#include "errors.h"
+#include "gpu/buffer.h"
+#include "gpu/context.h"
+#include "gpu/vk_check.h"
+
+namespace wf {
+
+DescriptorTable::DescriptorTable(const Context& context,
+                                 const std::vector<std::pair<uint32_t, const Buffer*>>& bindings)
+    : device_(context.device()) {
+    std::vector<VkDescriptorSetLayoutBinding> layoutBindings;
+    for (const auto& [binding, buffer] : bindings) {
+        VkDescriptorSetLayoutBinding entry{};
+        entry.binding = binding;
+        entry.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        entry.descriptorCount = 1;
+        entry.stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
+        layoutBindings.push_back(entry);
+    }
+    VkDescriptorSetLayoutCreateInfo layoutInfo{
+        VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    layoutInfo.bindingCount = static_cast<uint32_t>(layoutBindings.size());
+    layoutInfo.pBindings = layoutBindings.data();
+    VK_CHECK(vkCreateDescriptorSetLayout(device_, &layoutInfo, nullptr, &layout_));
+
+    VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                                  static_cast<uint32_t>(bindings.size())};
+    VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    poolInfo.maxSets = 1;
+    poolInfo.poolSizeCount = 1;
+    poolInfo.pPoolSizes = &poolSize;
+    VK_CHECK(vkCreateDescriptorPool(device_, &poolInfo, nullptr, &pool_));
+
+    VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    allocInfo.descriptorPool = pool_;
+    allocInfo.descriptorSetCount = 1;
+    allocInfo.pSetLayouts = &layout_;
+    VK_CHECK(vkAllocateDescriptorSets(device_, &allocInfo, &set_));
+
+    std::vector<VkDescriptorBufferInfo> infos(bindings.size());
+    std::vector<VkWriteDescriptorSet> writes(bindings.size());
+    for (size_t i = 0; i < bindings.size(); ++i) {
+        infos[i] = {bindings[i].second->handle(), 0, VK_WHOLE_SIZE};
+        writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        writes[i].dstSet = set_;
+        writes[i].dstBinding = bindings[i].first;
+        writes[i].descriptorCount = 1;
+        writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        writes[i].pBufferInfo = &infos[i];
+    }
+    vkUpdateDescriptorSets(device_, static_cast<uint32_t>(writes.size()), writes.data(), 0,
+                           nullptr);
+}
+
+DescriptorTable::~DescriptorTable() {
+    vkDestroyDescriptorPool(device_, pool_, nullptr);
+    vkDestroyDescriptorSetLayout(device_, layout_, nullptr);
+}
+
+ComputeProgram::ComputeProgram(const Context& context, std::string name,
+                               const std::vector<uint32_t>& spirv, const DescriptorTable& table,
+                               uint32_t pushConstantBytes)
+    : device_(context.device()), name_(std::move(name)), set_(table.set()),
+      pushBytes_(pushConstantBytes) {
+    try {
+        VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, pushConstantBytes};
+        VkDescriptorSetLayout setLayout = table.layout();
+        VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+        layoutInfo.setLayoutCount = 1;
+        layoutInfo.pSetLayouts = &setLayout;
+        layoutInfo.pushConstantRangeCount = pushConstantBytes ? 1 : 0;
+        layoutInfo.pPushConstantRanges = &range;
+        VK_CHECK(vkCreatePipelineLayout(device_, &layoutInfo, nullptr, &layout_));
+
+        VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+        moduleInfo.codeSize = spirv.size() * sizeof(uint32_t);
+        moduleInfo.pCode = spirv.data();
+        VkShaderModule module = VK_NULL_HANDLE;
+        VK_CHECK(vkCreateShaderModule(device_, &moduleInfo, nullptr, &module));
+
+        VkComputePipelineCreateInfo pipelineInfo{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+        pipelineInfo.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+        pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+        pipelineInfo.stage.module = module;
+        pipelineInfo.stage.pName = "main";
+        pipelineInfo.layout = layout_;
+        VkResult result = vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &pipelineInfo,
+                                                   nullptr, &pipeline_);
+        vkDestroyShaderModule(device_, module, nullptr);
+        VK_CHECK(result);
+    } catch (const InternalError& error) {
+        release();
+        throw InternalError(std::string(error.what()) + " (pass \"" + name_ + "\")");
+    }
+}
+
+ComputeProgram::~ComputeProgram() { release(); }
+
+void ComputeProgram::release() {
+    if (pipeline_)
+        vkDestroyPipeline(device_, pipeline_, nullptr);
+    if (layout_)
+        vkDestroyPipelineLayout(device_, layout_, nullptr);
+    pipeline_ = VK_NULL_HANDLE;
+    layout_ = VK_NULL_HANDLE;
+}
+
+void ComputeProgram::bind(VkCommandBuffer cmd, const void* push) const {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &set_, 0,
+                            nullptr);
+    if (pushBytes_ && push)
+        vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes_, push);
+}
+
+void ComputeProgram::dispatch(VkCommandBuffer cmd, uint32_t groupsX, const void* push) const {
+    bind(cmd, push);
+    vkCmdDispatch(cmd, groupsX, 1, 1);
+}
+
+void ComputeProgram::dispatchIndirect(VkCommandBuffer cmd, const Buffer& args,
+                                      VkDeviceSize offset, const void* push) const {
+    bind(cmd, push);
+    vkCmdDispatchIndirect(cmd, args.handle(), offset);
+}
+
+void computeBarrier(VkCommandBuffer cmd) {
+    VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
+    barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT |
+                            VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT;
+    vkCmdPipelineBarrier(cmd,
+                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT |
+                             VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         0, 1, &barrier, 0, nullptr, 0, nullptr);
+}
+
+} // namespace wf

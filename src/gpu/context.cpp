@@ -1,0 +1,260 @@
+#include "gpu/context.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <vector>
+
+#include "errors.h"
+#include "gpu/vk_check.h"
+
+namespace wf {
+namespace {
+
+const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+
+bool envFlag(const char* name) {
+    const char* value = std::getenv(name);
+    return value && *value && std::strcmp(value, "0") != 0;
+}
+
+bool hasLayer(const char* name) {
+    uint32_t count = 0;
+    VK_CHECK(vkEnumerateInstanceLayerProperties(&count, nullptr));
+    std::vector<VkLayerProperties> layers(count);
+    VK_CHECK(vkEnumerateInstanceLayerProperties(&count, layers.data()));
+    for (const auto& layer : layers)
+        if (std::strcmp(layer.layerName, name) == 0)
+            return true;
+    return false;
+}
+
+int deviceTypeRank(VkPhysicalDeviceType type) {
+    switch (type) {
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 4;
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 3;
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
+    case VK_PHYSICAL_DEVICE_TYPE_CPU: return 1;
+    default: return 0;
+    }
+}
+
+} // namespace
+
+Context::Context(const ContextOptions& options) {
+    std::optional<int> index = options.deviceIndex;
+    if (!index) {
+        if (const char* env = std::getenv("WAVEFRONT_DEVICE"); env && *env) {
+            char* end = nullptr;
+            long value = std::strtol(env, &end, 10);
+            if (*end != '\0' || value < 0)
+                throw UsageError("WAVEFRONT_DEVICE must be a device index (0, 1, ...), got '" +
+                                 std::string(env) + "'");
+            index = static_cast<int>(value);
+        }
+    }
+    createInstance(options.validation || envFlag("WAVEFRONT_VALIDATION"));
+    pickPhysicalDevice(index, options.quiet);
+    createDevice();
+}
+
+Context::~Context() {
+    if (device_) {
+        vkDeviceWaitIdle(device_);
+        vkDestroyCommandPool(device_, commandPool_, nullptr);
+        vkDestroyDevice(device_, nullptr);
+    }
+    if (messenger_) {
+        auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+            vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
+        destroy(instance_, messenger_, nullptr);
+    }
+    if (instance_)
+        vkDestroyInstance(instance_, nullptr);
+}
+
+void Context::createInstance(bool validation) {
+    VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+    app.pApplicationName = "wavefront";
+    app.apiVersion = VK_API_VERSION_1_2;
+
+    std::vector<const char*> layers;
+    std::vector<const char*> extensions;
+    if (validation) {
+        if (!hasLayer(kValidationLayer))
+            throw InternalError("validation requested but VK_LAYER_KHRONOS_validation is not "
+                                "installed. On Debian install vulkan-validationlayers.");
+        layers.push_back(kValidationLayer);
+        extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+    }
+    VkDebugUtilsMessengerCreateInfoEXT messengerInfo{
+        VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+    messengerInfo.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
+                                    VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+    messengerInfo.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
+                                VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                                VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+    messengerInfo.pfnUserCallback = &Context::onDebugMessage;
+    messengerInfo.pUserData = this;
+
+    VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+    info.pApplicationInfo = &app;
+    info.enabledLayerCount = static_cast<uint32_t>(layers.size());
+    info.ppEnabledLayerNames = layers.data();
+    info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
+    info.ppEnabledExtensionNames = extensions.data();
+    if (validation)
+        info.pNext = &messengerInfo; // also catches messages from instance creation itself
+    VkResult result = vkCreateInstance(&info, nullptr, &instance_);
+    if (result == VK_ERROR_INCOMPATIBLE_DRIVER)
+        throw InternalError("No Vulkan 1.2 driver found. On Debian install mesa-vulkan-drivers.");
+    VK_CHECK(result);
+
+    if (validation) {
+        auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+            vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
+        VK_CHECK(create(instance_, &messengerInfo, nullptr, &messenger_));
+    }
+}
+
+VkBool32 Context::onDebugMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                 VkDebugUtilsMessageTypeFlagsEXT,
+                                 const VkDebugUtilsMessengerCallbackDataEXT* data, void* self) {
+    auto* context = static_cast<Context*>(self);
+    context->validationMessages_.fetch_add(1);
+    const char* level =
+        severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "error" : "warning";
+    std::fprintf(stderr, "wavefront: validation %s: %s\n", level, data->pMessage);
+    return VK_FALSE;
+}
+
+void Context::pickPhysicalDevice(std::optional<int> index, bool quiet) {
+    uint32_t count = 0;
+    VK_CHECK(vkEnumeratePhysicalDevices(instance_, &count, nullptr));
+    if (count == 0)
+        throw InternalError("No Vulkan device found. On Debian install mesa-vulkan-drivers.");
+    std::vector<VkPhysicalDevice> devices(count);
+    VK_CHECK(vkEnumeratePhysicalDevices(instance_, &count, devices.data()));
+
+    if (index) {
+        if (*index < 0 || *index >= static_cast<int>(count))
+            throw UsageError("device index " + std::to_string(*index) + " out of range: " +
+                             std::to_string(count) + " Vulkan device(s) present");
+        physicalDevice_ = devices[*index];
+    } else {
+        int bestRank = -1;
+        for (VkPhysicalDevice candidate : devices) {
+            VkPhysicalDeviceProperties props;
+            vkGetPhysicalDeviceProperties(candidate, &props);
+            if (props.apiVersion < VK_API_VERSION_1_2)
+                continue;
+            if (deviceTypeRank(props.deviceType) > bestRank) {
+                bestRank = deviceTypeRank(props.deviceType);
+                physicalDevice_ = candidate;
+            }
+        }
+        if (!physicalDevice_)
+            throw InternalError("No Vulkan 1.2 device found. On Debian install "
+                                "mesa-vulkan-drivers.");
+    }
+    VkPhysicalDeviceSubgroupProperties subgroup{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
+    VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+    subgroup.pNext = &driver;
+    VkPhysicalDeviceProperties2 props2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+    props2.pNext = &subgroup;
+    vkGetPhysicalDeviceProperties2(physicalDevice_, &props2);
+    properties_ = props2.properties;
+    if (properties_.apiVersion < VK_API_VERSION_1_2)
+        throw InternalError(std::string("device '") + properties_.deviceName +
+                            "' supports only Vulkan " +
+                            std::to_string(VK_API_VERSION_MINOR(properties_.apiVersion)) +
+                            ".x; Wavefront needs 1.2");
+    const VkSubgroupFeatureFlags needed =
+        VK_SUBGROUP_FEATURE_BASIC_BIT | VK_SUBGROUP_FEATURE_BALLOT_BIT;
+    if ((subgroup.supportedOperations & needed) != needed ||
+        !(subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT))
+        throw InternalError(std::string("device '") + properties_.deviceName +
+                            "' lacks subgroup ballot in compute shaders");
+    subgroupSize_ = subgroup.subgroupSize;
+    deviceName_ = properties_.deviceName;
+    driverInfo_ = std::string(driver.driverName) + " " + driver.driverInfo;
+    vkGetPhysicalDeviceMemoryProperties(physicalDevice_, &memoryProperties_);
+    if (!quiet && std::getenv("WAVEFRONT_VERBOSE"))
+        std::fprintf(stderr, "wavefront: device %s (%s)\n", deviceName_.c_str(),
+                     driverInfo_.c_str());
+}
+
+void Context::createDevice() {
+    uint32_t familyCount = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(physicalDevice_, &familyCount, nullptr);
+    std::vector<VkQueueFamilyProperties> families(familyCount);
+    vkGetPhysicalDeviceQueueFamilyProperties(physicalDevice_, &familyCount, families.data());
+    bool found = false;
+    for (uint32_t i = 0; i < familyCount && !found; ++i) {
+        if ((families[i].queueFlags & VK_QUEUE_COMPUTE_BIT) && families[i].timestampValidBits) {
+            queueFamily_ = i;
+            found = true;
+        }
+    }
+    if (!found)
+        throw InternalError(deviceName_ + " has no compute queue with timestamps");
+
+    float priority = 1.0f;
+    VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+    queueInfo.queueFamilyIndex = queueFamily_;
+    queueInfo.queueCount = 1;
+    queueInfo.pQueuePriorities = &priority;
+
+    VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+    info.queueCreateInfoCount = 1;
+    info.pQueueCreateInfos = &queueInfo;
+    VK_CHECK(vkCreateDevice(physicalDevice_, &info, nullptr, &device_));
+    vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
+
+    VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    poolInfo.queueFamilyIndex = queueFamily_;
+    VK_CHECK(vkCreateCommandPool(device_, &poolInfo, nullptr, &commandPool_));
+}
+
+uint32_t Context::findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags wanted) const {
+    for (uint32_t i = 0; i < memoryProperties_.memoryTypeCount; ++i)
+        if ((typeBits & (1u << i)) &&
+            (memoryProperties_.memoryTypes[i].propertyFlags & wanted) == wanted)
+            return i;
+    throw InternalError("no Vulkan memory type with the needed properties on " + deviceName_);
+}
+
+void Context::submitAndWait(const std::function<void(VkCommandBuffer)>& record) const {
+    VkCommandBufferAllocateInfo allocInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    allocInfo.commandPool = commandPool_;
+    allocInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    allocInfo.commandBufferCount = 1;
+    VkCommandBuffer cmd = VK_NULL_HANDLE;
+    VK_CHECK(vkAllocateCommandBuffers(device_, &allocInfo, &cmd));
+    VkFence fence = VK_NULL_HANDLE;
+    try {
+        VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+        begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+        VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
+        record(cmd);
+        VK_CHECK(vkEndCommandBuffer(cmd));
+        VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+        VK_CHECK(vkCreateFence(device_, &fenceInfo, nullptr, &fence));
+        VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+        submit.commandBufferCount = 1;
+        submit.pCommandBuffers = &cmd;
+        VK_CHECK(vkQueueSubmit(queue_, 1, &submit, fence));
+        VK_CHECK(vkWaitForFences(device_, 1, &fence, VK_TRUE, UINT64_MAX));
+    } catch (...) {
+        if (fence)
+            vkDestroyFence(device_, fence, nullptr);
+        vkFreeCommandBuffers(device_, commandPool_, 1, &cmd);
+        throw;
+    }
+    vkDestroyFence(device_, fence, nullptr);
+    vkFreeCommandBuffers(device_, commandPool_, 1, &cmd);
+}
+
+} // namespace wf

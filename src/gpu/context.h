@@ -1,0 +1,67 @@
+// The Vulkan instance, device and compute queue, plus the validation-message counter that the
+// tests read. With WAVEFRONT_VALIDATION=1 the Khronos validation layer is enabled and every
+// message it emits is printed and counted.
+#pragma once
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include <vulkan/vulkan.h>
+
+namespace wf {
+
+struct ContextOptions {
+    std::optional<int> deviceIndex; // --device N; otherwise WAVEFRONT_DEVICE, else the best one
+    bool validation = false;        // also switched on by WAVEFRONT_VALIDATION=1
+    bool quiet = false;
+};
+
+class Context {
+public:
+    explicit Context(const ContextOptions& options = {});
+    ~Context();
+    Context(const Context&) = delete;
+    Context& operator=(const Context&) = delete;
+
+    VkDevice device() const { return device_; }
+    VkPhysicalDevice physicalDevice() const { return physicalDevice_; }
+    VkQueue queue() const { return queue_; }
+    uint32_t queueFamily() const { return queueFamily_; }
+    VkCommandPool commandPool() const { return commandPool_; }
+    const VkPhysicalDeviceProperties& properties() const { return properties_; }
+    uint32_t subgroupSize() const { return subgroupSize_; }
+    const std::string& deviceName() const { return deviceName_; }
+    const std::string& driverInfo() const { return driverInfo_; }
+    bool validationEnabled() const { return messenger_ != VK_NULL_HANDLE; }
+    uint32_t validationMessageCount() const { return validationMessages_.load(); }
+    uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags wanted) const;
+
+    // Records commands into a fresh command buffer, submits it and waits for it.
+    void submitAndWait(const std::function<void(VkCommandBuffer)>& record) const;
+
+private:
+    void createInstance(bool validation);
+    void pickPhysicalDevice(std::optional<int> index, bool quiet);
+    void createDevice();
+    static VKAPI_ATTR VkBool32 VKAPI_CALL onDebugMessage(
+        VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT types,
+        const VkDebugUtilsMessengerCallbackDataEXT* data, void* self);
+
+    VkInstance instance_ = VK_NULL_HANDLE;
+    VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+    VkPhysicalDevice physicalDevice_ = VK_NULL_HANDLE;
+    VkDevice device_ = VK_NULL_HANDLE;
+    VkQueue queue_ = VK_NULL_HANDLE;
+    uint32_t queueFamily_ = 0;
+    VkCommandPool commandPool_ = VK_NULL_HANDLE;
+    VkPhysicalDeviceProperties properties_{};
+    VkPhysicalDeviceMemoryProperties memoryProperties_{};
+    uint32_t subgroupSize_ = 0;
+    std::string deviceName_;
+    std::string driverInfo_;
+    std::atomic<uint32_t> validationMessages_{0};
+};
+
+} // namespace wf

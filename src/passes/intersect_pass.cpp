@@ -1,0 +1,12 @@
+#include "passes/intersect_pass.h"
+
+#include <cstddef>
+
+namespace wf {
+
+void IntersectPass::record(VkCommandBuffer cmd, uint32_t depth) const {
+    pass_.dispatchIndirect(cmd, offsetof(gpu_types::QueueCounters, rayArgs),
+                           PassConstants{depth, 0, 0, 0});
+}
+
+} // namespace wf

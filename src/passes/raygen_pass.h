@@ -1,0 +1,17 @@
+// raygen: camera rays for every path of a wave (shaders/raygen.comp).
+#pragma once
+#include "passes/pass.h"
+
+namespace wf {
+
+class RaygenPass {
+public:
+    explicit RaygenPass(const PassResources& resources)
+        : pass_(resources, "raygen", "raygen.comp") {}
+    void record(VkCommandBuffer cmd, uint32_t sampleBase, uint32_t pathCount) const;
+
+private:
+    Pass pass_;
+};
+
+} // namespace wf

@@ -1,0 +1,37 @@
+// Per-render GPU state: parameters, queue counters, the film, and the path state as
+// structure-of-arrays buffers of `pathCapacity` entries (one path per pixel sample of a wave).
+// The shadow-ray buffers exist only for scenes with emitters to connect to.
+#pragma once
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "gpu/buffer.h"
+
+namespace wf {
+
+class Context;
+
+struct PathBuffers {
+    PathBuffers(const Context& context, uint32_t pathCapacity, uint32_t pixelCount,
+                bool withShadowRays);
+
+    void appendBindings(std::vector<std::pair<uint32_t, const Buffer*>>& bindings) const;
+    void appendMemoryReport(std::vector<std::pair<std::string, uint64_t>>& report) const;
+
+    Buffer params;
+    Buffer counters;
+    Buffer film;
+    Buffer rayOrigin;
+    Buffer rayDirection;
+    Buffer throughput;
+    Buffer radiance;
+    Buffer hits;
+    Buffer shadowOrigin;
+    Buffer shadowDirection;
+    Buffer shadowRadiance;
+    Buffer rayQueues;
+    Buffer shadowQueue;
+};
+
+} // namespace wf

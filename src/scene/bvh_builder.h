@@ -1,0 +1,38 @@
+// Binned-SAH BVH over the scene's triangles, flattened into the depth-first layout that
+// shaders/shared/bvh_traverse.h walks on the GPU and on the CPU.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace wf {
+
+// Traversal keeps one stack slot per level below the root; WF_BVH_STACK_SIZE (64) - 1.
+constexpr std::uint32_t BVH_MAX_DEPTH = 63;
+
+struct BvhBuildOptions {
+    std::uint32_t maxLeafSize = 4;     // at or below this count a node is always a leaf
+    std::uint32_t maxSahLeafSize = 16; // SAH may stop splitting early only up to this count
+    std::uint32_t binCount = 32;       // SAH candidate planes per axis, over centroid bounds
+    float traversalCost = 1.0f;        // cost of visiting an interior node ...
+    float intersectionCost = 1.0f;     // ... relative to one ray-triangle test
+    std::uint32_t maxDepth = BVH_MAX_DEPTH; // root is depth 0; must be <= BVH_MAX_DEPTH
+};
+
+struct BvhBuildStats {
+    double sahCost = 0.0;      // expected cost per ray hitting the root box, same units as above
+    double buildSeconds = 0.0;
+    std::uint32_t nodeCount = 0;
+    std::uint32_t leafCount = 0;
+    std::uint32_t maxDepth = 0; // deepest node; the root is depth 0
+};
+
+// Builds `nodes` (cleared first) and reorders `triangles` in place so every leaf indexes a
+// contiguous range. Always emits at least one node: for no triangles, a root with count 0 and
+// an inverted box, which traversal treats as empty. Degenerate triangles are kept and binned
+// like any other.
+BvhBuildStats buildBvh(std::vector<Triangle>& triangles, std::vector<BvhNode>& nodes,
+                       const BvhBuildOptions& opts = {});
+
+} // namespace wf

@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# The command-line contract of `wavefront render`: outputs, exit codes, one-line errors.
+# Usage: test_cli.sh PATH/TO/wavefront PATH/TO/scenes
+set -u
+wavefront=$1
+scenes=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+passes=0
+
+check() { # check NAME EXPECTED_CODE COMMAND...
+    local name=$1 expected=$2
+    shift 2
+    "$@" >"$work/stdout" 2>"$work/stderr"
+    local code=$?
+    if [ "$code" -ne "$expected" ]; then
+        echo "FAIL $name: exit $code, expected $expected"; sed 's/^/  /' "$work/stderr" | head -5
+        failures=$((failures + 1))
+    else
+        passes=$((passes + 1))
+    fi
+}
+expect() { # expect NAME CONDITION...
+    local name=$1
+    shift
+    if "$@"; then passes=$((passes + 1)); else echo "FAIL $name"; failures=$((failures + 1)); fi
+}
+one_line_error() { [ "$(wc -l <"$work/stderr")" -eq 1 ] && grep -q . "$work/stderr"; }
+
+check "top help" 0 "$wavefront" --help
+expect "top help lists render" grep -q "render" "$work/stdout"
+check "render help" 0 "$wavefront" render --help
+for flag in --output --spp --width --height --max-depth --seed --json --quiet --device; do
+    expect "render help lists $flag" grep -q -- "$flag" "$work/stdout"
+done
+
+out="$work/cornell.exr"
+check "render" 0 "$wavefront" render "$scenes/cornell_box.gltf" -o "$out" --spp 4 --width 64 \
+    --max-depth 4 --seed 9 --json "$work/stats.json"
+expect "exr written" test -s "$out"
+expect "png written" test -s "$work/cornell.png"
+expect "png signature" bash -c "head -c 8 '$work/cornell.png' | od -An -tx1 | grep -q '89 50 4e 47 0d 0a 1a 0a'"
+expect "json has paths/s" grep -q '"pathsPerSecond"' "$work/stats.json"
+expect "json has shadow rays/s" grep -q '"shadow"' "$work/stats.json"
+expect "json spp" grep -q '"spp": 4' "$work/stats.json"
+expect "progress on stderr" grep -q "spp" "$work/stderr"
+expect "no temp files left" bash -c "! ls '$work' | grep -q tmp"
+
+check "quiet render" 0 "$wavefront" render "$scenes/cornell_box.gltf" -o "$work/q.exr" --spp 1 \
+    --width 16 --quiet
+expect "quiet prints nothing" test ! -s "$work/stderr"
+
+check "no arguments" 2 "$wavefront"
+check "unknown command" 2 "$wavefront" frobnicate
+expect "unknown command: one line" one_line_error
+check "unknown flag" 2 "$wavefront" render "$scenes/cornell_box.gltf" -o "$work/x.exr" --bogus
+expect "unknown flag: one line" one_line_error
+check "missing output" 2 "$wavefront" render "$scenes/cornell_box.gltf"
+check "bad spp" 2 "$wavefront" render "$scenes/cornell_box.gltf" -o "$work/x.exr" --spp -3
+expect "bad spp: one line" one_line_error
+check "spp zero" 2 "$wavefront" render "$scenes/cornell_box.gltf" -o "$work/x.exr" --spp 0
+check "missing scene" 2 "$wavefront" render "$work/none.gltf" -o "$work/x.exr"
+expect "missing scene: one line" one_line_error
+printf '{ not json' >"$work/bad.gltf"
+check "malformed scene" 2 "$wavefront" render "$work/bad.gltf" -o "$work/x.exr"
+expect "malformed scene: one line" one_line_error
+check "output folder missing" 2 "$wavefront" render "$scenes/cornell_box.gltf" \
+    -o "$work/no/such/dir/x.exr" --spp 1 --width 8
+expect "nothing written on failure" test ! -e "$work/x.exr"
+check "bad device" 2 "$wavefront" render "$scenes/cornell_box.gltf" -o "$work/x.exr" --device 7
+
+echo "$passes passed, $failures failed"
+[ "$failures" -eq 0 ]

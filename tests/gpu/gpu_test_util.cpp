@@ -1,0 +1,54 @@
+#include "gpu_test_util.h"
+
+#include <array>
+#include <memory>
+
+#include "render/scene_buffers.h"
+
+namespace wf::test {
+
+Context& gpuContext() {
+    static std::unique_ptr<Context> context = [] {
+        ContextOptions options;
+        options.validation = true;
+        options.quiet = true;
+        return std::make_unique<Context>(options);
+    }();
+    return *context;
+}
+
+Scene furnaceBox(float albedo, float emission) {
+    Scene scene;
+    Material material{};
+    material.baseColor = glm::vec4(albedo, albedo, albedo, 1.0f);
+    material.emission = glm::vec3(emission);
+    material.flags = WF_MATERIAL_DOUBLE_SIDED;
+    scene.materials.push_back(material);
+    const std::array<glm::vec3, 8> corners = {
+        glm::vec3(-1, -1, -1), glm::vec3(1, -1, -1), glm::vec3(1, 1, -1), glm::vec3(-1, 1, -1),
+        glm::vec3(-1, -1, 1),  glm::vec3(1, -1, 1),  glm::vec3(1, 1, 1),  glm::vec3(-1, 1, 1)};
+    const int quads[6][4] = {{0, 1, 2, 3}, {5, 4, 7, 6}, {4, 0, 3, 7},
+                             {1, 5, 6, 2}, {3, 2, 6, 7}, {4, 5, 1, 0}};
+    for (const auto& q : quads) {
+        scene.triangles.push_back({corners[q[0]], 0, corners[q[1]], WF_NO_EMITTER, corners[q[2]], 0});
+        scene.triangles.push_back({corners[q[0]], 0, corners[q[2]], WF_NO_EMITTER, corners[q[3]], 0});
+    }
+    scene.camera.position = glm::vec3(0.1f, -0.05f, 0.2f);
+    scene.camera.forward = glm::normalize(glm::vec3(0.3f, 0.2f, -1.0f));
+    scene.camera.up = glm::normalize(glm::cross(glm::cross(scene.camera.forward,
+                                                           glm::vec3(0, 1, 0)),
+                                                scene.camera.forward));
+    scene.camera.yfov = 1.2f;
+    scene.hasCamera = true;
+    return scene;
+}
+
+RenderResult renderScene(const Scene& scene, const RenderSettings& settings) {
+    static ShaderCompiler compiler;
+    PreparedScene prepared = prepareScene(scene);
+    WavefrontRenderer renderer(gpuContext(), prepared, settings, compiler);
+    renderer.render();
+    return {renderer.readImage(), renderer.stats()};
+}
+
+} // namespace wf::test

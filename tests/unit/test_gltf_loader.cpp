@@ -1,0 +1,521 @@
+// glTF loader: the shipped Cornell box, then small files written here, each breaking or
+// exercising one rule (transforms, index types, strides, bounds checks, file access, winding).
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "errors.h"
+#include "scene/gltf_loader.h"
+#include "scene/scene_summary.h"
+
+namespace wf {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int U8 = 5121, U16 = 5123, U32 = 5125, F32 = 5126;
+
+// A fresh folder per test under the system temp dir, removed afterwards.
+class TempDir {
+public:
+    TempDir() {
+        const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+        std::string name = std::string("wf_gltf_") + test->test_suite_name() + "_" +
+                           test->name() + "_" + std::to_string(::getpid());
+        for (char& c : name) {
+            c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+        }
+        path_ = fs::temp_directory_path() / name;
+        fs::remove_all(path_);
+        fs::create_directories(path_);
+    }
+    ~TempDir() {
+        std::error_code ignored;
+        fs::remove_all(path_, ignored);
+    }
+    std::string file(const std::string& name) const { return (path_ / name).string(); }
+
+private:
+    fs::path path_;
+};
+
+void writeBytes(const std::string& path, const std::vector<uint8_t>& bytes) {
+    std::ofstream(path, std::ios::binary)
+        .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+}
+
+std::string base64(const std::vector<uint8_t>& in) {
+    static const char* digits =
+        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    for (size_t i = 0; i < in.size(); i += 3) {
+        uint32_t v = uint32_t(in[i]) << 16;
+        v |= i + 1 < in.size() ? uint32_t(in[i + 1]) << 8 : 0;
+        v |= i + 2 < in.size() ? uint32_t(in[i + 2]) : 0;
+        out += digits[(v >> 18) & 63];
+        out += digits[(v >> 12) & 63];
+        out += i + 1 < in.size() ? digits[(v >> 6) & 63] : '=';
+        out += i + 2 < in.size() ? digits[v & 63] : '=';
+    }
+    return out;
+}
+
+std::string join(const std::vector<std::string>& items) {
+    std::string out;
+    for (const auto& item : items) {
+        out += (out.empty() ? "" : ",") + item;
+    }
+    return "[" + out + "]";
+}
+
+// Builds a glTF document piece by piece; members are JSON text, so a test can break any of
+// them on purpose.
+struct MiniGltf {
+    std::vector<uint8_t> bin;
+    std::vector<std::string> views, accessors, meshes, nodes, materials, cameras;
+    std::string scenes = R"([{"nodes":[0]}])";
+    std::string bufferUri; // empty: the buffer is embedded as a data: URI
+
+    int addView(const void* data, size_t bytes, size_t stride = 0) {
+        while (bin.size() % 4) {
+            bin.push_back(0);
+        }
+        views.push_back("{\"buffer\":0,\"byteOffset\":" + std::to_string(bin.size()) +
+                        ",\"byteLength\":" + std::to_string(bytes) +
+                        (stride ? ",\"byteStride\":" + std::to_string(stride) : "") + "}");
+        const auto* p = static_cast<const uint8_t*>(data);
+        bin.insert(bin.end(), p, p + bytes);
+        return int(views.size()) - 1;
+    }
+    int addAccessor(int view, int componentType, size_t count, const std::string& type,
+                    size_t offset = 0) {
+        accessors.push_back("{\"bufferView\":" + std::to_string(view) + ",\"byteOffset\":" +
+                            std::to_string(offset) + ",\"componentType\":" +
+                            std::to_string(componentType) + ",\"count\":" +
+                            std::to_string(count) + ",\"type\":\"" + type + "\"}");
+        return int(accessors.size()) - 1;
+    }
+    int addPositions(const std::vector<float>& xyz) {
+        int view = addView(xyz.data(), xyz.size() * sizeof(float));
+        return addAccessor(view, F32, xyz.size() / 3, "VEC3");
+    }
+    template <class T> int addIndices(const std::vector<T>& indices, int componentType) {
+        int view = addView(indices.data(), indices.size() * sizeof(T));
+        return addAccessor(view, componentType, indices.size(), "SCALAR");
+    }
+    int addMesh(int positions, int indices = -1, int material = -1, int mode = 4) {
+        meshes.push_back("{\"primitives\":[{\"attributes\":{\"POSITION\":" +
+                         std::to_string(positions) + "}" +
+                         (indices >= 0 ? ",\"indices\":" + std::to_string(indices) : "") +
+                         (material >= 0 ? ",\"material\":" + std::to_string(material) : "") +
+                         ",\"mode\":" + std::to_string(mode) + "}]}");
+        return int(meshes.size()) - 1;
+    }
+    std::string json(bool glb = false) const {
+        std::string buffer = "{\"byteLength\":" + std::to_string(bin.size());
+        if (!glb) {
+            buffer += ",\"uri\":\"" +
+                      (bufferUri.empty() ? "data:application/octet-stream;base64," + base64(bin)
+                                         : bufferUri) +
+                      "\"";
+        }
+        return "{\"asset\":{\"version\":\"2.0\"},\"scenes\":" + scenes +
+               ",\"nodes\":" + join(nodes) + ",\"meshes\":" + join(meshes) +
+               ",\"materials\":" + join(materials) + ",\"cameras\":" + join(cameras) +
+               ",\"accessors\":" + join(accessors) + ",\"bufferViews\":" + join(views) +
+               ",\"buffers\":[" + buffer + "}]}";
+    }
+    // Writes <dir>/<name>, and the buffer beside it when bufferUri names a plain file.
+    std::string write(const TempDir& dir, const std::string& name = "scene.gltf") const {
+        std::ofstream(dir.file(name)) << json();
+        if (!bufferUri.empty() && bufferUri.find('/') == std::string::npos) {
+            writeBytes(dir.file(bufferUri), bin);
+        }
+        return dir.file(name);
+    }
+    std::string writeGlb(const TempDir& dir, const std::string& name = "scene.glb") const {
+        std::string text = json(true);
+        while (text.size() % 4) {
+            text += ' ';
+        }
+        std::vector<uint8_t> chunk = bin;
+        while (chunk.size() % 4) {
+            chunk.push_back(0);
+        }
+        auto u32 = [](std::vector<uint8_t>& out, uint32_t v) {
+            for (int i = 0; i < 4; ++i) {
+                out.push_back(uint8_t(v >> (8 * i)));
+            }
+        };
+        std::vector<uint8_t> out = {'g', 'l', 'T', 'F'};
+        u32(out, 2);
+        u32(out, uint32_t(12 + 8 + text.size() + 8 + chunk.size()));
+        u32(out, uint32_t(text.size()));
+        u32(out, 0x4E4F534A); // "JSON"
+        out.insert(out.end(), text.begin(), text.end());
+        u32(out, uint32_t(chunk.size()));
+        u32(out, 0x004E4942); // "BIN\0"
+        out.insert(out.end(), chunk.begin(), chunk.end());
+        writeBytes(dir.file(name), out);
+        return dir.file(name);
+    }
+};
+
+const std::vector<float> TRIANGLE = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+
+// One triangle in mesh 0 under node 0 with the given extra node members.
+MiniGltf oneTriangle(const std::string& nodeMembers = "") {
+    MiniGltf g;
+    g.addMesh(g.addPositions(TRIANGLE));
+    g.nodes.push_back("{\"mesh\":0" + nodeMembers + "}");
+    return g;
+}
+
+// The InputError message loading `path` gives; fails the test if there is none.
+std::string inputError(const std::string& path) {
+    try {
+        loadGltf(path);
+    } catch (const InputError& e) {
+        std::string message = e.what();
+        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+        EXPECT_EQ(message.rfind(path + ": ", 0), 0u) << message;
+        return message;
+    }
+    ADD_FAILURE() << "no InputError for " << path;
+    return "";
+}
+
+void expectNear(const glm::vec3& actual, const glm::vec3& expected) {
+    EXPECT_NEAR(actual.x, expected.x, 1e-5f);
+    EXPECT_NEAR(actual.y, expected.y, 1e-5f);
+    EXPECT_NEAR(actual.z, expected.z, 1e-5f);
+}
+
+glm::vec3 unitNormal(const Triangle& t) {
+    return glm::normalize(glm::cross(t.p1 - t.p0, t.p2 - t.p0));
+}
+
+TEST(GltfLoader, CornellBox) {
+    Scene scene = loadGltf(std::string(WF_TEST_SCENE_DIR) + "/cornell_box.gltf");
+    EXPECT_EQ(scene.triangles.size(), 32u); // 5 walls, light, 2 blocks of 5 faces; 2 each
+    ASSERT_TRUE(scene.hasCamera);
+    expectNear(scene.camera.forward, {0, 0, 1});
+    expectNear(scene.camera.up, {0, 1, 0});
+    EXPECT_NEAR(scene.camera.yfov, 0.686f, 0.01f);
+    EXPECT_FLOAT_EQ(scene.camera.aspect, 1.0f);
+    SceneSummary summary = summarize(scene);
+    EXPECT_EQ(summary.emissiveTriangleCount, 2u);
+    expectNear(summary.boundsLo, {0, 0, 0});
+    expectNear(summary.boundsHi, {5.55f, 5.55f, 5.55f});
+    for (const Triangle& t : scene.triangles) {
+        for (const glm::vec3& p : {t.p0, t.p1, t.p2}) {
+            EXPECT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
+        }
+        ASSERT_LT(t.material, scene.materials.size());
+        EXPECT_EQ(t.emitter, WF_NO_EMITTER);
+        const glm::vec3 emission = scene.materials[t.material].emission;
+        if (emission.x > 0) {
+            EXPECT_NEAR(emission.x, 17.0f, 1e-4f);
+            EXPECT_LT(unitNormal(t).y, -0.99f); // the light faces down, into the box
+        }
+    }
+    EXPECT_NE(describe(summary).find("32 triangles"), std::string::npos);
+}
+
+TEST(GltfLoader, TrsIsTranslateRotateScale) {
+    TempDir dir;
+    // Scale 2, then 90 degrees about +Z, then move by (1, 2, 3).
+    const float h = std::sqrt(0.5f);
+    MiniGltf g = oneTriangle(",\"translation\":[1,2,3],\"rotation\":[0,0," + std::to_string(h) +
+                             "," + std::to_string(h) + "],\"scale\":[2,2,2]");
+    Scene scene = loadGltf(g.write(dir));
+    ASSERT_EQ(scene.triangles.size(), 1u);
+    expectNear(scene.triangles[0].p0, {1, 2, 3});
+    expectNear(scene.triangles[0].p1, {1, 4, 3});
+    expectNear(scene.triangles[0].p2, {-1, 2, 3});
+}
+
+TEST(GltfLoader, MatrixIsColumnMajor) {
+    TempDir dir;
+    MiniGltf g = oneTriangle(",\"matrix\":[0,2,0,0, -2,0,0,0, 0,0,2,0, 1,2,3,1]");
+    Scene scene = loadGltf(g.write(dir));
+    ASSERT_EQ(scene.triangles.size(), 1u);
+    expectNear(scene.triangles[0].p1, {1, 4, 3});
+    expectNear(scene.triangles[0].p2, {-1, 2, 3});
+}
+
+TEST(GltfLoader, ChildTransformAppliesAfterParent) {
+    TempDir dir;
+    MiniGltf g = oneTriangle(",\"scale\":[2,2,2]");
+    g.nodes.push_back(R"({"translation":[10,0,0],"children":[0]})");
+    g.scenes = R"([{"nodes":[1]}])";
+    Scene scene = loadGltf(g.write(dir));
+    ASSERT_EQ(scene.triangles.size(), 1u);
+    expectNear(scene.triangles[0].p1, {12, 0, 0});
+}
+
+TEST(GltfLoader, WithoutScenesAllRootNodesLoad) {
+    TempDir dir;
+    MiniGltf g = oneTriangle();
+    g.nodes.push_back(R"({"mesh":0,"translation":[0,0,5]})");
+    g.scenes = "[]";
+    EXPECT_EQ(loadGltf(g.write(dir)).triangles.size(), 2u);
+}
+
+template <class T> void checkQuadWithIndices(int componentType) {
+    TempDir dir;
+    MiniGltf g;
+    const int positions = g.addPositions({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0});
+    g.addMesh(positions, g.addIndices(std::vector<T>{0, 1, 2, 0, 2, 3}, componentType));
+    g.nodes.push_back(R"({"mesh":0})");
+    Scene scene = loadGltf(g.write(dir));
+    ASSERT_EQ(scene.triangles.size(), 2u);
+    expectNear(scene.triangles[1].p0, {0, 0, 0});
+    expectNear(scene.triangles[1].p1, {1, 1, 0});
+    expectNear(scene.triangles[1].p2, {0, 1, 0});
+}
+
+TEST(GltfLoader, IndicesU8) { checkQuadWithIndices<uint8_t>(U8); }
+TEST(GltfLoader, IndicesU16) { checkQuadWithIndices<uint16_t>(U16); }
+TEST(GltfLoader, IndicesU32) { checkQuadWithIndices<uint32_t>(U32); }
+
+TEST(GltfLoader, NonIndexedTakesVerticesInOrder) {
+    TempDir dir;
+    MiniGltf g;
+    g.addMesh(g.addPositions({0, 0, 0, 1, 0, 0, 0, 1, 0, 5, 0, 0, 6, 0, 0, 5, 1, 0}));
+    g.nodes.push_back(R"({"mesh":0})");
+    Scene scene = loadGltf(g.write(dir));
+    ASSERT_EQ(scene.triangles.size(), 2u);
+    expectNear(scene.triangles[1].p1, {6, 0, 0});
+}
+
+TEST(GltfLoader, ByteStrideSkipsInterleavedData) {
+    TempDir dir;
+    MiniGltf g;
+    const float nan = std::nanf("");
+    // Position, then three floats of another attribute that must never be read as one.
+    const std::vector<float> interleaved = {0, 0, 0, nan, nan, nan, 1, 0, 0, nan, nan, nan,
+                                            0, 1, 0, nan, nan, nan};
+    int view = g.addView(interleaved.data(), interleaved.size() * sizeof(float), 24);
+    g.addMesh(g.addAccessor(view, F32, 3, "VEC3"));
+    g.nodes.push_back(R"({"mesh":0})");
+    Scene scene = loadGltf(g.write(dir));
+    ASSERT_EQ(scene.triangles.size(), 1u);
+    expectNear(scene.triangles[0].p2, {0, 1, 0});
+}
+
+TEST(GltfLoader, IndexPastVertexCountIsRejected) {
+    TempDir dir;
+    MiniGltf g;
+    const int positions = g.addPositions(TRIANGLE);
+    g.addMesh(positions, g.addIndices(std::vector<uint16_t>{0, 1, 3}, U16));
+    g.nodes.push_back(R"({"mesh":0})");
+    EXPECT_NE(inputError(g.write(dir)).find("is 3, but there are only 3 vertices"),
+              std::string::npos);
+}
+
+TEST(GltfLoader, AccessorPastBufferViewIsRejected) {
+    TempDir dir;
+    MiniGltf g;
+    int view = g.addView(TRIANGLE.data(), TRIANGLE.size() * sizeof(float));
+    g.addMesh(g.addAccessor(view, F32, 3, "VEC3", 4)); // 4 bytes in, 4 bytes too long
+    g.nodes.push_back(R"({"mesh":0})");
+    EXPECT_NE(inputError(g.write(dir)).find("accessor 0"), std::string::npos);
+}
+
+TEST(GltfLoader, BufferViewPastBufferIsRejected) {
+    TempDir dir;
+    MiniGltf g = oneTriangle();
+    g.views[0] = R"({"buffer":0,"byteOffset":8,"byteLength":36})";
+    EXPECT_NE(inputError(g.write(dir)).find("bufferView 0"), std::string::npos);
+}
+
+TEST(GltfLoader, BufferOutsideTheFolderIsRefused) {
+    TempDir dir;
+    fs::create_directories(dir.file("sub"));
+    MiniGltf g = oneTriangle();
+    writeBytes(dir.file("secret.bin"), g.bin); // exists and is valid: only the path is wrong
+    g.bufferUri = "../secret.bin";
+    const std::string path = dir.file("sub/scene.gltf");
+    std::ofstream(path) << g.json();
+    const std::string message = inputError(path);
+    EXPECT_NE(message.find("../secret.bin"), std::string::npos) << message;
+    EXPECT_NE(message.find("'..' is not allowed"), std::string::npos) << message;
+}
+
+TEST(GltfLoader, SymbolicLinkOutOfTheFolderIsRefused) {
+    TempDir dir;
+    fs::create_directories(dir.file("sub"));
+    MiniGltf g = oneTriangle();
+    writeBytes(dir.file("secret.bin"), g.bin);
+    fs::create_symlink("../secret.bin", dir.file("sub/link.bin"));
+    g.bufferUri = "link.bin";
+    const std::string path = dir.file("sub/scene.gltf");
+    std::ofstream(path) << g.json();
+    EXPECT_NE(inputError(path).find("outside the scene's folder"), std::string::npos);
+}
+
+TEST(GltfLoader, AbsoluteBufferPathIsRefused) {
+    TempDir dir;
+    MiniGltf g = oneTriangle();
+    writeBytes(dir.file("data.bin"), g.bin);
+    g.bufferUri = dir.file("data.bin");
+    EXPECT_NE(inputError(g.write(dir)).find("only paths relative"), std::string::npos);
+}
+
+TEST(GltfLoader, BufferFileBesideTheSceneLoads) {
+    TempDir dir;
+    MiniGltf g = oneTriangle();
+    g.bufferUri = "data.bin";
+    EXPECT_EQ(loadGltf(g.write(dir)).triangles.size(), 1u);
+}
+
+TEST(GltfLoader, MissingBufferFileIsNamed) {
+    TempDir dir;
+    MiniGltf g = oneTriangle();
+    g.bufferUri = "missing.bin";
+    const std::string path = dir.file("scene.gltf");
+    std::ofstream(path) << g.json(); // and no missing.bin
+    EXPECT_NE(inputError(path).find("missing.bin"), std::string::npos);
+}
+
+TEST(GltfLoader, GlbLoads) {
+    TempDir dir;
+    MiniGltf g = oneTriangle(",\"translation\":[0,0,-1]");
+    Scene scene = loadGltf(g.writeGlb(dir));
+    ASSERT_EQ(scene.triangles.size(), 1u);
+    expectNear(scene.triangles[0].p1, {1, 0, -1});
+}
+
+TEST(GltfLoader, NanPositionNamesTheAccessor) {
+    TempDir dir;
+    MiniGltf g;
+    g.addPositions(TRIANGLE); // accessor 0, unused
+    g.addMesh(g.addPositions({0, 0, 0, 1, std::nanf(""), 0, 0, 1, 0}));
+    g.nodes.push_back(R"({"mesh":0})");
+    const std::string message = inputError(g.write(dir));
+    EXPECT_NE(message.find("accessor 1"), std::string::npos) << message;
+    EXPECT_NE(message.find("element 1"), std::string::npos) << message;
+}
+
+TEST(GltfLoader, DegenerateTrianglesAreDropped) {
+    TempDir dir;
+    MiniGltf g;
+    g.addMesh(g.addPositions({0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 0, 0, 1, 0, 0, 0, 1, 0}));
+    g.nodes.push_back(R"({"mesh":0})");
+    Scene scene = loadGltf(g.write(dir));
+    ASSERT_EQ(scene.triangles.size(), 1u);
+    expectNear(scene.triangles[0].p2, {0, 1, 0});
+    // A zero scale makes every triangle degenerate after the transform.
+    EXPECT_TRUE(loadGltf(oneTriangle(",\"scale\":[1,0,1]").write(dir)).triangles.empty());
+}
+
+TEST(GltfLoader, NodeCycleIsRejected) {
+    TempDir dir;
+    MiniGltf g = oneTriangle(",\"children\":[1]");
+    g.nodes.push_back(R"({"children":[0]})");
+    EXPECT_NE(inputError(g.write(dir)).find("cycle"), std::string::npos);
+}
+
+TEST(GltfLoader, NodeWithTwoParentsIsRejected) {
+    TempDir dir;
+    MiniGltf g = oneTriangle();
+    g.nodes.push_back(R"({"children":[0]})");
+    g.nodes.push_back(R"({"children":[0]})");
+    g.scenes = R"([{"nodes":[1,2]}])";
+    EXPECT_NE(inputError(g.write(dir)).find("two parents"), std::string::npos);
+}
+
+TEST(GltfLoader, MirroringNodeKeepsTheFrontFace) {
+    TempDir dir;
+    MiniGltf g;
+    g.addMesh(g.addPositions({1, 0, 0, 0, 1, 0, 0, 0, 1})); // front face towards (1, 1, 1)
+    g.nodes.push_back(R"({"mesh":0,"scale":[-1,1,1]})");
+    Scene scene = loadGltf(g.write(dir));
+    ASSERT_EQ(scene.triangles.size(), 1u);
+    // The mirror image of a surface facing (1, 1, 1) faces (-1, 1, 1).
+    expectNear(unitNormal(scene.triangles[0]), glm::normalize(glm::vec3(-1, 1, 1)));
+}
+
+TEST(GltfLoader, MaterialsAndEmissiveStrength) {
+    TempDir dir;
+    MiniGltf g = oneTriangle();
+    g.meshes[0] = R"({"primitives":[{"attributes":{"POSITION":0},"material":0},
+                                    {"attributes":{"POSITION":0}}]})";
+    g.materials.push_back(R"({"pbrMetallicRoughness":{"baseColorFactor":[0.5,0.25,0.125,1]},
+        "emissiveFactor":[1,0.5,0.25],"doubleSided":true,
+        "extensions":{"KHR_materials_emissive_strength":{"emissiveStrength":4}}})");
+    Scene scene = loadGltf(g.write(dir));
+    ASSERT_EQ(scene.materials.size(), 2u); // the file's, then the default for primitive 1
+    expectNear(scene.materials[0].emission, {4, 2, 1});
+    expectNear(glm::vec3(scene.materials[0].baseColor), {0.5f, 0.25f, 0.125f});
+    EXPECT_EQ(scene.materials[0].flags, WF_MATERIAL_DOUBLE_SIDED);
+    expectNear(glm::vec3(scene.materials[1].baseColor), {0.8f, 0.8f, 0.8f});
+    expectNear(scene.materials[1].emission, {0, 0, 0});
+    ASSERT_EQ(scene.triangles.size(), 2u);
+    EXPECT_EQ(scene.triangles[0].material, 0u);
+    EXPECT_EQ(scene.triangles[1].material, 1u);
+    EXPECT_EQ(scene.triangles[1].pad, 0u);
+}
+
+TEST(GltfLoader, DefaultMaterialAppendedOnce) {
+    TempDir dir;
+    MiniGltf g = oneTriangle();
+    g.nodes.push_back(R"({"mesh":0})");
+    g.scenes = R"([{"nodes":[0,1]}])";
+    Scene scene = loadGltf(g.write(dir));
+    ASSERT_EQ(scene.materials.size(), 1u);
+    EXPECT_EQ(scene.triangles.size(), 2u);
+}
+
+TEST(GltfLoader, MaterialIndexOutOfRangeIsRejected) {
+    TempDir dir;
+    MiniGltf g;
+    g.addMesh(g.addPositions(TRIANGLE), -1, 3);
+    g.nodes.push_back(R"({"mesh":0})");
+    EXPECT_NE(inputError(g.write(dir)).find("material 3"), std::string::npos);
+}
+
+TEST(GltfLoader, NonTriangleModesAreSkipped) {
+    TempDir dir;
+    MiniGltf g;
+    g.addMesh(g.addPositions(TRIANGLE), -1, -1, 1); // LINES
+    g.nodes.push_back(R"({"mesh":0})");
+    EXPECT_TRUE(loadGltf(g.write(dir)).triangles.empty());
+}
+
+TEST(GltfLoader, FirstPerspectiveCameraIsUsed) {
+    TempDir dir;
+    MiniGltf g = oneTriangle();
+    g.cameras.push_back(R"({"type":"orthographic","orthographic":{"xmag":1,"ymag":1,
+                            "znear":0.1,"zfar":10}})");
+    g.cameras.push_back(R"({"type":"perspective","perspective":{"yfov":0.5,"znear":0.1}})");
+    // Node 1: orthographic (ignored). Node 2: turned 90 degrees about +Y, so it looks to -X.
+    g.nodes.push_back(R"({"camera":0})");
+    g.nodes.push_back(R"({"camera":1,"translation":[1,2,3],"rotation":[0,0.70710678,0,0.70710678]})");
+    g.scenes = R"([{"nodes":[0,1,2]}])";
+    Scene scene = loadGltf(g.write(dir));
+    ASSERT_TRUE(scene.hasCamera);
+    expectNear(scene.camera.position, {1, 2, 3});
+    expectNear(scene.camera.forward, {-1, 0, 0});
+    expectNear(scene.camera.up, {0, 1, 0});
+    EXPECT_FLOAT_EQ(scene.camera.yfov, 0.5f);
+    EXPECT_EQ(scene.camera.aspect, 0.0f);
+}
+
+TEST(GltfLoader, UnreadableOrWrongFilesAreInputErrors) {
+    TempDir dir;
+    inputError(dir.file("absent.gltf"));
+    std::ofstream(dir.file("broken.gltf")) << "{ not json";
+    inputError(dir.file("broken.gltf"));
+    std::ofstream(dir.file("text.glb")) << "{\"asset\":{\"version\":\"2.0\"}}";
+    inputError(dir.file("text.glb"));
+    EXPECT_THROW(loadGltf(dir.file("scene.obj")), InputError);
+}
+
+} // namespace
+} // namespace wf

@@ -1,0 +1,120 @@
+// The structs in shaders/shared/*.h are compiled by both C++ and glslang. This test asks
+// glslang's reflection for the std430 offset of every member the shaders see and compares it
+// with the C++ offsetof, so a layout drift fails here instead of corrupting a render.
+#include <cstddef>
+#include <map>
+#include <string>
+
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+#include <gtest/gtest.h>
+
+#include "shaders/shared/render_types.h"
+#include "shaders/shared/scene_types.h"
+
+namespace wf {
+namespace {
+
+using namespace gpu_types;
+
+std::map<std::string, int> reflectedOffsets() {
+    const char* source = R"(#version 460
+#include "scene_types.h"
+#include "render_types.h"
+layout(local_size_x = 1) in;
+layout(std430, binding = 0) buffer B0 { Triangle tri; BvhNode node; Material mat; Emitter em; };
+layout(std430, binding = 1) buffer B1 { RenderParams params; QueueCounters counters; };
+void main() {
+    tri.pad = tri.material + tri.emitter + uint(tri.p0.x + tri.p1.x + tri.p2.x);
+    node.count = node.rightOrFirst + uint(node.lo.x + node.hi.x);
+    mat.flags = uint(mat.baseColor.x + mat.emission.x);
+    em.alias = em.triangle + uint(em.pmf + em.aliasProb);
+    params.pad0 = uint(params.cameraPosition.x + params.tanHalfFovY + params.cameraForward.x +
+        params.aspect + params.cameraUp.x + params.cameraRight.x) + params.seed +
+        params.maxDepth + params.width + params.height + params.pixelCount + params.rrDepth +
+        params.emitterCount + params.pathCapacity + params.pad1;
+    counters.pad2 = counters.rayCount + counters.shadowCount + counters.rayArgs.count +
+        counters.rayArgs.groupsX + counters.shadowArgs.groupsX + counters.shadowArgs.count +
+        counters.extensionRays + counters.shadowRays + counters.nonFiniteSamples;
+}
+)";
+    glslang::InitializeProcess();
+    std::map<std::string, int> offsets;
+    {
+        glslang::TShader shader(EShLangCompute);
+        shader.setStrings(&source, 1);
+        std::string preamble = "#extension GL_GOOGLE_include_directive : require\n";
+        shader.setPreamble(preamble.c_str());
+        shader.setEnvInput(glslang::EShSourceGlsl, EShLangCompute, glslang::EShClientVulkan, 100);
+        shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_2);
+        shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_5);
+        struct Includer : glslang::TShader::Includer {
+            IncludeResult* includeLocal(const char* name, const char*, size_t) override {
+                std::string path = std::string(WF_SOURCE_SHADER_DIR) + "/shared/" + name;
+                FILE* file = std::fopen(path.c_str(), "rb");
+                if (!file)
+                    return nullptr;
+                auto* text = new std::string;
+                char buffer[4096];
+                size_t n;
+                while ((n = std::fread(buffer, 1, sizeof buffer, file)) > 0)
+                    text->append(buffer, n);
+                std::fclose(file);
+                return new IncludeResult(path, text->data(), text->size(), text);
+            }
+            void releaseInclude(IncludeResult* result) override {
+                if (result) {
+                    delete static_cast<std::string*>(result->userData);
+                    delete result;
+                }
+            }
+        } includer;
+        auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
+        EXPECT_TRUE(shader.parse(GetDefaultResources(), 460, false, messages, includer))
+            << shader.getInfoLog();
+        glslang::TProgram program;
+        program.addShader(&shader);
+        EXPECT_TRUE(program.link(messages)) << program.getInfoLog();
+        EXPECT_TRUE(program.buildReflection(EShReflectionAllBlockVariables));
+        for (int i = 0; i < program.getNumBufferVariables(); ++i) {
+            const auto& variable = program.getBufferVariable(i);
+            offsets[variable.name] = variable.offset;
+        }
+    }
+    glslang::FinalizeProcess();
+    return offsets;
+}
+
+TEST(SharedLayout, GlslOffsetsMatchCpp) {
+    auto offsets = reflectedOffsets();
+    ASSERT_FALSE(offsets.empty());
+    auto expectOffset = [&](const std::string& name, size_t base, size_t offset) {
+        auto it = offsets.find(name);
+        ASSERT_NE(it, offsets.end()) << name << " not reflected";
+        EXPECT_EQ(size_t(it->second), base + offset) << name;
+    };
+    expectOffset("tri.p1", 0, offsetof(Triangle, p1));
+    expectOffset("tri.emitter", 0, offsetof(Triangle, emitter));
+    expectOffset("tri.p2", 0, offsetof(Triangle, p2));
+    expectOffset("tri.pad", 0, offsetof(Triangle, pad));
+    expectOffset("node.hi", sizeof(Triangle), offsetof(BvhNode, hi));
+    expectOffset("node.count", sizeof(Triangle), offsetof(BvhNode, count));
+    const size_t materialBase = sizeof(Triangle) + sizeof(BvhNode);
+    expectOffset("mat.emission", materialBase, offsetof(Material, emission));
+    expectOffset("mat.flags", materialBase, offsetof(Material, flags));
+    expectOffset("em.alias", materialBase + sizeof(Material), offsetof(Emitter, alias));
+    expectOffset("params.seed", 0, offsetof(RenderParams, seed));
+    expectOffset("params.cameraRight", 0, offsetof(RenderParams, cameraRight));
+    expectOffset("params.maxDepth", 0, offsetof(RenderParams, maxDepth));
+    expectOffset("params.pathCapacity", 0, offsetof(RenderParams, pathCapacity));
+    expectOffset("params.pad1", 0, offsetof(RenderParams, pad1));
+    const size_t countersBase = sizeof(RenderParams);
+    expectOffset("counters.rayArgs.count", countersBase,
+                 offsetof(QueueCounters, rayArgs) + offsetof(DispatchArgs, count));
+    expectOffset("counters.shadowArgs.groupsX", countersBase, offsetof(QueueCounters, shadowArgs));
+    expectOffset("counters.nonFiniteSamples", countersBase,
+                 offsetof(QueueCounters, nonFiniteSamples));
+}
+
+} // namespace
+} // namespace wf
