@@ -5,6 +5,9 @@
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "bindings.glsl"
+#if !WF_HAS_EMITTERS
+#error "the shadow pass exists only for scenes with emitters"
+#endif
 
 #define WF_BVH_NODE(i) bvhNodes[i]
 #define WF_BVH_TRIANGLE(i) triangles[i]

@@ -27,9 +27,16 @@ constexpr uintmax_t MAX_FILE_BYTES = uintmax_t(1) << 30;
 // from thousands of nodes from exhausting memory here.
 constexpr size_t MAX_TRIANGLES = size_t(1) << 26;
 
+// tinygltf's messages become one line; they may quote a whole data: URI, so long ones are
+// cut to keep the error readable.
 std::string collapseLines(const std::string& text) {
+    constexpr size_t MAX_CHARS = 400;
     std::string out;
     for (char c : text) {
+        if (out.size() >= MAX_CHARS) {
+            out += "...";
+            break;
+        }
         bool lineBreak = c == '\n' || c == '\r';
         if (lineBreak && !out.empty() && out.back() != ' ') {
             out += "; ";
@@ -144,6 +151,30 @@ bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigne
 bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int,
                const unsigned char*, int, void*) {
     return true;
+}
+
+// tinygltf's JSON parser recurses once per nesting level, so a file of a few megabytes of
+// "[[[[..." would overflow the stack; glTF itself needs fewer than ten levels.
+bool nestedTooDeep(const unsigned char* text, size_t length) {
+    constexpr int MAX_DEPTH = 256;
+    int depth = 0;
+    bool inString = false;
+    for (size_t i = 0; i < length; ++i) {
+        const unsigned char c = text[i];
+        if (inString) {
+            i += c == '\\' ? 1 : 0; // skip the escaped character
+            inString = c != '"';
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > MAX_DEPTH) {
+                return true;
+            }
+        } else if (c == ']' || c == '}') {
+            --depth;
+        }
+    }
+    return false;
 }
 
 // --- Model to Scene. ---
@@ -623,6 +654,16 @@ Scene loadGltf(const std::string& path) {
     const bool binary = size >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
     if (ext == ".glb" && !binary) {
         throw InputError(path + ": not a binary glTF file (no 'glTF' magic)");
+    }
+    size_t jsonStart = 0, jsonLength = size;
+    if (binary && size >= 20) {
+        uint32_t chunkLength = 0; // the JSON chunk's length; tinygltf checks it against size
+        std::memcpy(&chunkLength, bytes.data() + 12, 4);
+        jsonStart = 20;
+        jsonLength = std::min<size_t>(chunkLength, size - 20);
+    }
+    if (nestedTooDeep(bytes.data() + jsonStart, jsonLength)) {
+        throw InputError(path + ": JSON nested more than 256 levels deep");
     }
     // tinygltf 2.7.0's GLB chunk check forgets the 8-byte chunk header, so it may read up to
     // 8 bytes past the end; zero padding makes that harmless.

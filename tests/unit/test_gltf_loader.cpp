@@ -515,6 +515,11 @@ TEST(GltfLoader, UnreadableOrWrongFilesAreInputErrors) {
     std::ofstream(dir.file("text.glb")) << "{\"asset\":{\"version\":\"2.0\"}}";
     inputError(dir.file("text.glb"));
     EXPECT_THROW(loadGltf(dir.file("scene.obj")), InputError);
+    // Deep nesting would overflow tinygltf's recursive JSON parser: refused before parsing.
+    std::ofstream(dir.file("deep.gltf"))
+        << "{\"asset\":{\"version\":\"2.0\"},\"extras\":" << std::string(100000, '[')
+        << std::string(100000, ']') << "}";
+    EXPECT_NE(inputError(dir.file("deep.gltf")).find("nested"), std::string::npos);
 }
 
 } // namespace

@@ -24,7 +24,8 @@ struct Case {
     vec3 p0, p1, p2;
     vec3 n;      // float geometric normal, as a renderer computes it
     dvec3 exactN; // unnormalised normal of the float vertices, in double
-    vec3 p, pError, w;
+    vec3 p, pError, w; // pError: hit point only (pbrt-v4's bound)
+    float b1, b2;
 };
 
 // Random triangle, hit point and outgoing direction; false when the triangle is degenerate
@@ -60,6 +61,8 @@ bool makeCase(std::mt19937& rng, Case& c) {
         return false;
     }
     vec2 b = sampleUniformTriangle(vec2(float(uniform(rng)), float(uniform(rng))));
+    c.b1 = b.x;
+    c.b2 = b.y;
     c.p = triangleHitPoint(c.p0, c.p1, c.p2, b.x, b.y);
     c.pError = triangleHitPointError(c.p0, c.p1, c.p2, b.x, b.y);
     c.w = vec3(randomDir()); // either hemisphere, grazing ones included
@@ -75,7 +78,8 @@ TEST(RayOffset, SpawnedRaysNeverHitTheirOwnTriangle) {
             continue;
         }
         ++valid;
-        vec3 o = offsetRayOrigin(c.p, c.pError, c.n, c.w);
+        vec3 spawnError = triangleSpawnError(c.p0, c.p1, c.p2, c.b1, c.b2);
+        vec3 o = offsetRayOrigin(c.p, spawnError, c.n, c.w);
         float t, b1, b2;
         if (intersectTriangle(o, c.w, c.p0, c.p1, c.p2, INF, t, b1, b2)) {
             if (++selfHits <= 5) {
@@ -113,6 +117,25 @@ TEST(RayOffset, RawHitPointsDoSelfIntersect) {
         selfHits += intersectTriangle(c.p, c.w, c.p0, c.p1, c.p2, INF, t, b1, b2);
     }
     EXPECT_GT(selfHits, valid / 20) << selfHits << " self-hits of " << valid;
+}
+
+TEST(RayOffset, HitPointBoundAloneIsNotEnoughForNeedles) {
+    // Why triangleSpawnError adds triangleIntersectSlack: with pbrt's hit-point bound alone,
+    // Möller-Trumbore's own rounding still re-hits thin triangles. Should this start passing
+    // with zero self-hits, the intersector became more robust and the slack can be revisited.
+    std::mt19937 rng(4242u);
+    int valid = 0, selfHits = 0;
+    for (int i = 0; i < TRIALS / 4; ++i) {
+        Case c;
+        if (!makeCase(rng, c)) {
+            continue;
+        }
+        ++valid;
+        vec3 o = offsetRayOrigin(c.p, c.pError, c.n, c.w);
+        float t, b1, b2;
+        selfHits += intersectTriangle(o, c.w, c.p0, c.p1, c.p2, INF, t, b1, b2);
+    }
+    EXPECT_GT(selfHits, 0) << "of " << valid;
 }
 
 TEST(RayOffset, NextFloatStepsOneUlpAcrossZero) {

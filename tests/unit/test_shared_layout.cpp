@@ -76,8 +76,9 @@ void main() {
         program.addShader(&shader);
         EXPECT_TRUE(program.link(messages)) << program.getInfoLog();
         EXPECT_TRUE(program.buildReflection(EShReflectionAllBlockVariables));
-        for (int i = 0; i < program.getNumBufferVariables(); ++i) {
-            const auto& variable = program.getBufferVariable(i);
+        // glslang 12 lists the members of storage blocks among its "uniform" variables.
+        for (int i = 0; i < program.getNumUniformVariables(); ++i) {
+            const auto& variable = program.getUniform(i);
             offsets[variable.name] = variable.offset;
         }
     }

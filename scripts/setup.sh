@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Installs whatever Debian 12 packages are missing, then configures and builds Wavefront
+# (CMake, Release) into build/. Run as root on a fresh machine; safe to run again.
+# Usage: scripts/setup.sh [--with-tests]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(
+    build-essential cmake ninja-build pkg-config
+    libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers
+    glslang-dev libglm-dev libtinygltf-dev libopenexr-dev libstb-dev
+)
+tests=OFF
+if [ "${1:-}" = "--with-tests" ]; then
+    packages+=(googletest libgtest-dev)
+    tests=ON
+fi
+
+missing=()
+for package in "${packages[@]}"; do
+    status=$(dpkg-query -W -f='${Status}' "$package" 2>/dev/null || true)
+    [ "$status" = "install ok installed" ] || missing+=("$package")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+    echo "setup: installing ${missing[*]}"
+    sudo=""
+    [ "$(id -u)" -eq 0 ] || sudo="sudo"
+    $sudo apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends \
+        "${missing[@]}" >/dev/null
+fi
+
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DWF_BUILD_TESTS="$tests" >/dev/null
+cmake --build build --parallel "$(nproc)"
