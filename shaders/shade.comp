@@ -61,7 +61,7 @@ void main() {
         }
 
         vec3 p = triangleHitPoint(tri.p0, tri.p1, tri.p2, b1, b2);
-        vec3 pError = triangleHitPointError(tri.p0, tri.p1, tri.p2, b1, b2);
+        vec3 pError = triangleSpawnError(tri.p0, tri.p1, tri.p2, b1, b2);
         vec3 albedo = material.baseColor.rgb;
         vec3 tangent, bitangent;
         buildOrthonormalBasis(n, tangent, bitangent);

@@ -11,7 +11,8 @@
 //   WF_BVH_TRIANGLE(i)  an expression yielding Triangle i
 //   WF_BVH_STACK_SIZE   optional, default 64; the builder keeps depth <= WF_BVH_STACK_SIZE - 1
 // In C++ the functions become members of BvhTraversal, whose two pointers the default
-// accessors read.
+// accessors read; use it through src/scene/bvh_cpu.h and leave the macros undefined (a second
+// definition in another translation unit would break the one-definition rule).
 #ifndef WF_BVH_TRAVERSE_H
 #define WF_BVH_TRAVERSE_H
 
@@ -30,7 +31,7 @@ using namespace glm;
 #endif
 
 struct HitRecord {
-    float t;
+    float t; // tMax on a miss
     float b1; // barycentric weight of p1
     float b2; // barycentric weight of p2
     uint triangle; // WF_NO_TRIANGLE on a miss

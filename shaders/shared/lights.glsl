@@ -51,7 +51,7 @@ LightSample sampleEmitter(float uChoice, vec2 uPoint, vec3 p) {
     result.pdf = emitterSolidAnglePdf(emitter, 0.5 * length(cross12), distance, cosLight);
     result.direction = direction;
     result.emission = material.emission;
-    vec3 qError = triangleHitPointError(tri.p0, tri.p1, tri.p2, b.x, b.y);
+    vec3 qError = triangleSpawnError(tri.p0, tri.p1, tri.p2, b.x, b.y);
     result.offsetPoint = offsetRayOrigin(q, qError, nl, -direction);
     return result;
 }

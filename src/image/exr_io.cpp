@@ -45,18 +45,23 @@ void writeExr(const std::string& path, int width, int height, const std::vector<
                             std::to_string(rgb.size()) + " floats");
     }
     Imf::Header header(width, height);
-    header.compression() = Imf::ZIP_COMPRESSION;
-    for (const char* name : CHANNELS) {
-        header.channels().insert(name, Imf::Channel(Imf::FLOAT));
-    }
-    for (const auto& [name, value] : stringAttrs) {
-        header.insert(name, Imf::StringAttribute(value));
-    }
-    for (const auto& [name, value] : floatAttrs) {
-        header.insert(name, Imf::FloatAttribute(value));
-    }
-    for (const auto& [name, value] : intAttrs) {
-        header.insert(name, Imf::IntAttribute(value));
+    try {
+        header.compression() = Imf::ZIP_COMPRESSION;
+        for (const char* name : CHANNELS) {
+            header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+        }
+        // OpenEXR throws here when a name is empty or a standard attribute of another type.
+        for (const auto& [name, value] : stringAttrs) {
+            header.insert(name, Imf::StringAttribute(value));
+        }
+        for (const auto& [name, value] : floatAttrs) {
+            header.insert(name, Imf::FloatAttribute(value));
+        }
+        for (const auto& [name, value] : intAttrs) {
+            header.insert(name, Imf::IntAttribute(value));
+        }
+    } catch (const std::exception& e) {
+        throw InternalError("cannot write " + path + ": " + e.what());
     }
 
     writeFileAtomically(path, [&](const std::string& tmpPath) {

@@ -32,8 +32,8 @@ struct Bounds {
         lo = glm::min(lo, b.lo);
         hi = glm::max(hi, b.hi);
     }
-    // Half the surface area: SAH only ever uses ratios. Doubles, as float products of large
-    // scenes lose the small terms that separate candidate splits.
+    // Half the surface area: SAH only ever uses ratios. In double, as float products overflow
+    // for extents past ~1e19 and drop the small terms that separate candidate splits.
     double halfArea() const {
         if (lo.x > hi.x) {
             return 0.0;
@@ -70,6 +70,8 @@ std::uint32_t medianLevels(std::uint32_t n, std::uint32_t leafSize) {
 
 class Builder {
 public:
+    static constexpr std::uint32_t MAX_BINS = 64;
+
     Builder(std::vector<PrimRef>& refs, std::vector<BvhNode>& nodes, const BvhBuildOptions& opts,
             BvhBuildStats& stats)
         : refs_(refs), nodes_(nodes), opts_(opts), stats_(stats) {}
@@ -103,8 +105,9 @@ private:
     std::uint32_t chooseSplit(std::uint32_t begin, std::uint32_t end, std::uint32_t depth,
                               const Bounds& box, const Bounds& centroids) {
         std::uint32_t n = end - begin;
+        // Past maxDepth only when maxDepth is too small for the scene (medianLevels keeps every
+        // subtree finishable otherwise); an oversized leaf is then the only choice.
         if (n <= opts_.maxLeafSize || depth >= opts_.maxDepth) {
-            assert(n <= opts_.maxLeafSize && "medianLevels should have prevented this");
             return begin;
         }
         vec3 extent = centroids.hi - centroids.lo;
@@ -113,16 +116,18 @@ private:
             // plane separates them, so halve by index to keep the tree balanced.
             return n <= opts_.maxSahLeafSize ? begin : begin + n / 2;
         }
-        int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+        int axis = extent.x >= extent.y && extent.x >= extent.z ? 0
+                   : extent.y >= extent.z                        ? 1
+                                                                 : 2;
         double area = box.halfArea();
         if (area <= 0.0) {
             return medianSplit(begin, end, axis); // a line of triangles: SAH costs are all 0
         }
         Split split = findSahSplit(begin, end, centroids, area);
-        double leafCost = double(opts_.intersectionCost) * n * area;
         if (split.axis < 0) {
-            return medianSplit(begin, end, axis);
+            return medianSplit(begin, end, axis); // no axis could be binned
         }
+        double leafCost = double(opts_.intersectionCost) * n * area;
         if (split.cost >= leafCost && n <= opts_.maxSahLeafSize) {
             return begin;
         }
@@ -223,10 +228,6 @@ private:
         return mid;
     }
 
-public:
-    static constexpr std::uint32_t MAX_BINS = 64;
-
-private:
     std::vector<PrimRef>& refs_;
     std::vector<BvhNode>& nodes_;
     const BvhBuildOptions& opts_;
@@ -251,6 +252,10 @@ double sahCost(const std::vector<BvhNode>& nodes, const BvhBuildOptions& opts) {
     return cost;
 }
 
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 } // namespace
 
 BvhBuildStats buildBvh(std::vector<Triangle>& triangles, std::vector<BvhNode>& nodes,
@@ -271,7 +276,7 @@ BvhBuildStats buildBvh(std::vector<Triangle>& triangles, std::vector<BvhNode>& n
         // Inverted box: see bvhIsEmpty() in bvh_traverse.h.
         nodes.push_back(BvhNode{vec3(FLT_MAX), 0, vec3(-FLT_MAX), 0});
         stats.nodeCount = 1;
-        stats.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        stats.buildSeconds = secondsSince(start);
         return stats;
     }
     std::vector<PrimRef> refs(n);
@@ -292,7 +297,7 @@ BvhBuildStats buildBvh(std::vector<Triangle>& triangles, std::vector<BvhNode>& n
 
     stats.nodeCount = std::uint32_t(nodes.size());
     stats.sahCost = sahCost(nodes, opts);
-    stats.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    stats.buildSeconds = secondsSince(start);
     return stats;
 }
 

@@ -31,7 +31,7 @@ struct BvhBuildStats {
 // Builds `nodes` (cleared first) and reorders `triangles` in place so every leaf indexes a
 // contiguous range. Always emits at least one node: for no triangles, a root with count 0 and
 // an inverted box, which traversal treats as empty. Degenerate triangles are kept and binned
-// like any other.
+// like any other; vertex coordinates must be finite.
 BvhBuildStats buildBvh(std::vector<Triangle>& triangles, std::vector<BvhNode>& nodes,
                        const BvhBuildOptions& opts = {});
 

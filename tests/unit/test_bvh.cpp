@@ -19,6 +19,9 @@ namespace {
 using glm::vec3;
 using wf::BvhNode;
 using wf::Triangle;
+using wf::gpu_types::intersectTriangle;
+using wf::gpu_types::sampleUniformTriangle;
+using wf::gpu_types::triangleHitPoint;
 
 const float INF = std::numeric_limits<float>::infinity();
 
@@ -36,7 +39,7 @@ bool bruteClosest(const std::vector<Triangle>& tris, vec3 o, vec3 d, float tMax,
     bool found = false;
     for (const Triangle& tri : tris) {
         float t, b1, b2;
-        if (wf::gpu_types::intersectTriangle(o, d, tri.p0, tri.p1, tri.p2, tBest, t, b1, b2)) {
+        if (intersectTriangle(o, d, tri.p0, tri.p1, tri.p2, tBest, t, b1, b2)) {
             tBest = t;
             found = true;
         }
@@ -108,7 +111,8 @@ void compareWithBruteForce(std::vector<Triangle> tris, int rays, std::uint32_t s
     std::normal_distribution<float> gauss;
     int hits = 0, exact = 0;
     for (int r = 0; r < rays; ++r) {
-        vec3 o = lo - margin + (hi - lo + 2.0f * margin) * vec3(uniform(rng), uniform(rng), uniform(rng));
+        vec3 u(uniform(rng), uniform(rng), uniform(rng));
+        vec3 o = lo - margin + (hi - lo + 2.0f * margin) * u;
         if (r % 5 == 0) {
             o.z = std::round(o.z); // on a sheet's plane
         }
@@ -116,8 +120,8 @@ void compareWithBruteForce(std::vector<Triangle> tris, int rays, std::uint32_t s
         int kind = r % 6;
         if (kind == 3 || kind == 5) { // aimed at a random point of a random triangle
             const Triangle& target = tris[rng() % tris.size()];
-            glm::vec2 b = wf::gpu_types::sampleUniformTriangle(glm::vec2(uniform(rng), uniform(rng)));
-            d = wf::gpu_types::triangleHitPoint(target.p0, target.p1, target.p2, b.x, b.y) - o;
+            glm::vec2 b = sampleUniformTriangle(glm::vec2(uniform(rng), uniform(rng)));
+            d = triangleHitPoint(target.p0, target.p1, target.p2, b.x, b.y) - o;
         }
         if (kind == 1) { // along an axis, either sign
             int a = int(uniform(rng) * 3.0f) % 3;
@@ -154,7 +158,7 @@ void compareWithBruteForce(std::vector<Triangle> tris, int rays, std::uint32_t s
             ASSERT_EQ(hit.t, tBrute) << "ray " << r;
         }
         float t, b1, b2;
-        ASSERT_TRUE(wf::gpu_types::intersectTriangle(o, d, tri.p0, tri.p1, tri.p2, INF, t, b1, b2));
+        ASSERT_TRUE(intersectTriangle(o, d, tri.p0, tri.p1, tri.p2, INF, t, b1, b2));
         EXPECT_EQ(t, hit.t);
         EXPECT_EQ(b1, hit.b1);
         EXPECT_EQ(b2, hit.b2);
@@ -207,8 +211,9 @@ std::vector<Triangle> degenerateMesh(std::uint32_t seed) {
         for (int x = -4; x < 4; ++x) {
             for (int y = -4; y < 4; ++y) {
                 vec3 p{float(x), float(y), float(z)};
-                tris.push_back(makeTriangle(p, p + vec3(1, 0, 0), p + vec3(0, 1, 0)));
-                tris.push_back(makeTriangle(p + vec3(1, 0, 0), p + vec3(1, 1, 0), p + vec3(0, 1, 0)));
+                vec3 px = p + vec3(1, 0, 0), py = p + vec3(0, 1, 0);
+                tris.push_back(makeTriangle(p, px, py));
+                tris.push_back(makeTriangle(px, p + vec3(1, 1, 0), py));
             }
         }
     }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -496,7 +497,8 @@ TEST(GltfLoader, FirstPerspectiveCameraIsUsed) {
     g.cameras.push_back(R"({"type":"perspective","perspective":{"yfov":0.5,"znear":0.1}})");
     // Node 1: orthographic (ignored). Node 2: turned 90 degrees about +Y, so it looks to -X.
     g.nodes.push_back(R"({"camera":0})");
-    g.nodes.push_back(R"({"camera":1,"translation":[1,2,3],"rotation":[0,0.70710678,0,0.70710678]})");
+    g.nodes.push_back(R"({"camera":1,"translation":[1,2,3],
+                          "rotation":[0,0.70710678,0,0.70710678]})");
     g.scenes = R"([{"nodes":[0,1,2]}])";
     Scene scene = loadGltf(g.write(dir));
     ASSERT_TRUE(scene.hasCamera);
