@@ -13,6 +13,7 @@ layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "rng.h"
 #include "sampling.h"
 #include "lights.glsl"
+#include "surface.glsl"
 
 layout(push_constant) uniform Push { PassConstants pass; };
 
@@ -32,37 +33,30 @@ void main() {
     if (hit.w != WF_MISS) {
         uint pixel = path % params.pixelCount;
         uint sampleIndex = pass.sampleBase + path / params.pixelCount;
-        Triangle tri = triangles[hit.w];
-        Material material = materials[tri.material];
         vec3 wo = -rayDirection[path].xyz;
         vec3 beta = throughput[path].rgb;
         float t = uintBitsToFloat(hit.x);
-        float b1 = uintBitsToFloat(hit.y);
-        float b2 = uintBitsToFloat(hit.z);
-        vec3 cross12 = cross(tri.p1 - tri.p0, tri.p2 - tri.p0);
-        vec3 ng = normalize(cross12);
-        bool frontFace = dot(ng, wo) > 0.0;
-        vec3 n = frontFace ? ng : -ng; // two-sided shading: the side the ray arrived on
+        SurfaceHit surface = loadSurface(hit.w, uintBitsToFloat(hit.y), uintBitsToFloat(hit.z), wo);
 
-        bool emits = frontFace || (material.flags & WF_MATERIAL_DOUBLE_SIDED) != 0u;
-        if (emits && any(greaterThan(material.emission, vec3(0.0)))) {
+        if (any(greaterThan(surface.emission, vec3(0.0)))) {
             // rayOrigin.w is the BSDF pdf of the sampled direction; 0 means the vertex had no
             // light sampling (camera ray), so emission counts in full.
             float bsdfPdf = rayOrigin[path].w;
             float weight = 1.0;
 #if WF_HAS_EMITTERS
-            if (bsdfPdf > 0.0 && tri.emitter != WF_NO_EMITTER) {
-                float lightPdf = emitterSolidAnglePdf(tri.emitter, 0.5 * length(cross12), t,
-                                                      abs(dot(ng, wo)));
+            if (bsdfPdf > 0.0 && surface.emitter != WF_NO_EMITTER) {
+                float lightPdf = emitterSolidAnglePdf(surface.emitter, surface.area, t,
+                                                      abs(dot(surface.ng, wo)));
                 weight = powerHeuristic(bsdfPdf, lightPdf);
             }
 #endif
-            radiance[path].rgb += beta * material.emission * weight;
+            radiance[path].rgb += beta * surface.emission * weight;
         }
 
-        vec3 p = triangleHitPoint(tri.p0, tri.p1, tri.p2, b1, b2);
-        vec3 pError = triangleSpawnError(tri.p0, tri.p1, tri.p2, b1, b2);
-        vec3 albedo = material.baseColor.rgb;
+        vec3 p = surface.p;
+        vec3 pError = surface.pError;
+        vec3 n = surface.ns;
+        vec3 albedo = surface.baseColor;
         vec3 tangent, bitangent;
         buildOrthonormalBasis(n, tangent, bitangent);
 

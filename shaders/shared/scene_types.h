@@ -31,11 +31,31 @@ struct BvhNode {
 };
 
 #define WF_MATERIAL_DOUBLE_SIDED 1u
+#define WF_MATERIAL_ALPHA_MASK 2u  // alpha below alphaCutoff is a hole, for every ray
+#define WF_MATERIAL_ALPHA_BLEND 4u // see the loader for how BLEND is approximated
+#define WF_NO_TEXTURE 0xffffffffu
 
+// glTF metallic-roughness material with KHR_materials_specular, _transmission, _ior and
+// _emissive_strength folded in. Texture fields index the texture-reference table, or hold
+// WF_NO_TEXTURE.
 struct Material {
-    vec4 baseColor; // rgb: Lambert albedo (linear), a: unused
-    vec3 emission;  // emissiveFactor x KHR_materials_emissive_strength
-    uint flags;     // WF_MATERIAL_*
+    vec4 baseColor;     // rgb: linear base colour, a: alpha
+    vec3 emission;      // emissiveFactor x KHR_materials_emissive_strength
+    uint flags;         // WF_MATERIAL_*
+    float metallic;
+    float roughness;    // perceptual roughness; alpha = roughness^2
+    float ior;          // KHR_materials_ior, 1.5 by default
+    float transmission; // KHR_materials_transmission factor
+    vec3 specularColor; // KHR_materials_specular specularColorFactor
+    float specular;     // KHR_materials_specular specularFactor; 0 leaves exact Lambert
+    float alphaCutoff;
+    float normalScale;
+    uint baseColorTexture;
+    uint metallicRoughnessTexture;
+    uint normalTexture;
+    uint emissiveTexture;
+    uint transmissionTexture;
+    uint pad;
 };
 
 // One emissive triangle in the light table, chosen by power through a Walker alias table.
@@ -55,9 +75,12 @@ static_assert(offsetof(wf::gpu_types::Triangle, p2) == 32);
 static_assert(sizeof(wf::gpu_types::BvhNode) == 32);
 static_assert(offsetof(wf::gpu_types::BvhNode, hi) == 16);
 static_assert(offsetof(wf::gpu_types::BvhNode, count) == 28);
-static_assert(sizeof(wf::gpu_types::Material) == 32);
+static_assert(sizeof(wf::gpu_types::Material) == 96);
 static_assert(offsetof(wf::gpu_types::Material, emission) == 16);
 static_assert(offsetof(wf::gpu_types::Material, flags) == 28);
+static_assert(offsetof(wf::gpu_types::Material, specularColor) == 48);
+static_assert(offsetof(wf::gpu_types::Material, specular) == 60);
+static_assert(offsetof(wf::gpu_types::Material, pad) == 92);
 static_assert(sizeof(wf::gpu_types::Emitter) == 16);
 #endif
 

@@ -70,15 +70,16 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
         shadow_ = std::make_unique<ShadowPass>(resources);
     accumulate_ = std::make_unique<AccumulatePass>(resources);
 
-    uploadParams(scene);
-    std::vector<float> zeros(size_t(pixelCount_) * 4, 0.0f);
-    pathBuffers_->film.upload(zeros);
+    camera_ = scene.camera;
+    emitterCount_ = static_cast<uint32_t>(scene.lights.emitters.size());
+    uploadParams();
+    reset();
 }
 
 WavefrontRenderer::~WavefrontRenderer() = default;
 
-void WavefrontRenderer::uploadParams(const PreparedScene& scene) {
-    const Camera& camera = scene.camera;
+void WavefrontRenderer::uploadParams() {
+    const Camera& camera = camera_;
     RenderParams params{};
     params.cameraPosition = camera.position;
     params.tanHalfFovY = std::tan(0.5f * camera.yfov);
@@ -92,7 +93,7 @@ void WavefrontRenderer::uploadParams(const PreparedScene& scene) {
     params.height = settings_.height;
     params.pixelCount = pixelCount_;
     params.rrDepth = settings_.rrDepth;
-    params.emitterCount = static_cast<uint32_t>(scene.lights.emitters.size());
+    params.emitterCount = emitterCount_;
     params.pathCapacity = pathCapacity_;
     pathBuffers_->params.upload(&params, sizeof params);
 }
@@ -118,30 +119,59 @@ void WavefrontRenderer::recordWave(VkCommandBuffer cmd, uint32_t sampleBase, uin
     accumulate_->record(cmd, pixelCount_, samples);
 }
 
-void WavefrontRenderer::render(const std::function<void(const WaveProgress&)>& onWave) {
+void WavefrontRenderer::runWave(uint32_t samples) {
     const auto start = std::chrono::steady_clock::now();
-    for (uint32_t done = 0; done < settings_.samplesPerPixel;) {
-        const uint32_t samples = std::min(samplesPerWave_, settings_.samplesPerPixel - done);
-        context_.submitAndWait([&](VkCommandBuffer cmd) { recordWave(cmd, done, samples); });
+    const uint32_t sampleBase = samplesDone_;
+    context_.submitAndWait([&](VkCommandBuffer cmd) { recordWave(cmd, sampleBase, samples); });
 
-        QueueCounters counters{};
-        pathBuffers_->counters.download(&counters, sizeof counters);
-        stats_.cameraRays += uint64_t(pixelCount_) * samples;
-        stats_.paths += uint64_t(pixelCount_) * samples;
-        stats_.extensionRays += counters.extensionRays;
-        stats_.shadowRays += counters.shadowRays;
-        stats_.nonFiniteSamples += counters.nonFiniteSamples;
-        for (const auto& [pass, ms] : timer_->collect())
-            stats_.passMilliseconds[pass] += ms;
-        ++stats_.waves;
-        done += samples;
-        stats_.samplesPerPixel = done;
-        stats_.seconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    QueueCounters counters{};
+    pathBuffers_->counters.download(&counters, sizeof counters);
+    stats_.cameraRays += uint64_t(pixelCount_) * samples;
+    stats_.paths += uint64_t(pixelCount_) * samples;
+    stats_.extensionRays += counters.extensionRays;
+    stats_.shadowRays += counters.shadowRays;
+    stats_.nonFiniteSamples += counters.nonFiniteSamples;
+    for (const auto& [pass, ms] : timer_->collect())
+        stats_.passMilliseconds[pass] += ms;
+    ++stats_.waves;
+    samplesDone_ += samples;
+    stats_.samplesPerPixel = samplesDone_;
+    stats_.seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+uint32_t WavefrontRenderer::renderSamples(uint32_t samples) {
+    uint32_t done = 0;
+    while (done < samples) {
+        const uint32_t wave = std::min(samplesPerWave_, samples - done);
+        runWave(wave);
+        done += wave;
+    }
+    return samplesDone_;
+}
+
+void WavefrontRenderer::render(const std::function<void(const WaveProgress&)>& onWave) {
+    while (samplesDone_ < settings_.samplesPerPixel) {
+        runWave(std::min(samplesPerWave_, settings_.samplesPerPixel - samplesDone_));
         if (onWave)
-            onWave({done, settings_.samplesPerPixel, stats_.seconds});
+            onWave({samplesDone_, settings_.samplesPerPixel, stats_.seconds});
     }
 }
+
+void WavefrontRenderer::reset() {
+    std::vector<float> zeros(size_t(pixelCount_) * 4, 0.0f);
+    pathBuffers_->film.upload(zeros);
+    samplesDone_ = 0;
+    stats_ = {};
+}
+
+void WavefrontRenderer::setCamera(const Camera& camera) {
+    camera_ = camera;
+    uploadParams();
+    reset();
+}
+
+const Buffer& WavefrontRenderer::film() const { return pathBuffers_->film; }
 
 std::vector<float> WavefrontRenderer::readImage() const {
     std::vector<float> film = pathBuffers_->film.download<float>();

@@ -17,6 +17,7 @@
 
 namespace wf {
 
+class Buffer;
 class Context;
 class TimestampTimer;
 class DescriptorTable;
@@ -64,8 +65,19 @@ public:
                       const RenderSettings& settings, const ShaderCompiler& compiler);
     ~WavefrontRenderer();
 
-    // Renders all samples, calling `onWave` after each wave.
+    // Renders the remaining samples of settings.samplesPerPixel, calling `onWave` after each
+    // wave.
     void render(const std::function<void(const WaveProgress&)>& onWave = {});
+    // Progressive use (the viewer): adds `samples` more samples per pixel, in as many waves as
+    // needed, and returns the total so far.
+    uint32_t renderSamples(uint32_t samples);
+    // Clears the film and the statistics; the next sample is sample 0 again.
+    void reset();
+    // Moves the camera (and resets).
+    void setCamera(const Camera& camera);
+    uint32_t samplesDone() const { return samplesDone_; }
+    // The film: per pixel, RGB radiance sum and sample count (vec4), for display passes.
+    const Buffer& film() const;
 
     // Linear radiance per pixel (mean of the samples), RGB, top row first.
     std::vector<float> readImage() const;
@@ -75,8 +87,9 @@ public:
     std::vector<std::pair<std::string, uint64_t>> memoryReport() const;
 
 private:
-    void uploadParams(const PreparedScene& scene);
+    void uploadParams();
     void recordWave(VkCommandBuffer cmd, uint32_t sampleBase, uint32_t samples);
+    void runWave(uint32_t samples);
 
     const Context& context_;
     RenderSettings settings_;
@@ -84,6 +97,9 @@ private:
     uint32_t samplesPerWave_;
     uint32_t pathCapacity_;
     bool hasEmitters_;
+    uint32_t emitterCount_ = 0;
+    uint32_t samplesDone_ = 0;
+    Camera camera_;
     ShaderDefines defines_;
     RenderStats stats_;
     std::unique_ptr<SceneBuffers> sceneBuffers_;

@@ -27,7 +27,10 @@ layout(std430, binding = 1) buffer B1 { RenderParams params; QueueCounters count
 void main() {
     tri.pad = tri.material + tri.emitter + uint(tri.p0.x + tri.p1.x + tri.p2.x);
     node.count = node.rightOrFirst + uint(node.lo.x + node.hi.x);
-    mat.flags = uint(mat.baseColor.x + mat.emission.x);
+    mat.flags = uint(mat.baseColor.x + mat.emission.x + mat.metallic + mat.roughness + mat.ior +
+        mat.transmission + mat.specularColor.x + mat.specular + mat.alphaCutoff +
+        mat.normalScale) + mat.baseColorTexture + mat.metallicRoughnessTexture +
+        mat.normalTexture + mat.emissiveTexture + mat.transmissionTexture + mat.pad;
     em.alias = em.triangle + uint(em.pmf + em.aliasProb);
     params.pad0 = uint(params.cameraPosition.x + params.tanHalfFovY + params.cameraForward.x +
         params.aspect + params.cameraUp.x + params.cameraRight.x) + params.seed +
@@ -103,6 +106,10 @@ TEST(SharedLayout, GlslOffsetsMatchCpp) {
     const size_t materialBase = sizeof(Triangle) + sizeof(BvhNode);
     expectOffset("mat.emission", materialBase, offsetof(Material, emission));
     expectOffset("mat.flags", materialBase, offsetof(Material, flags));
+    expectOffset("mat.specularColor", materialBase, offsetof(Material, specularColor));
+    expectOffset("mat.specular", materialBase, offsetof(Material, specular));
+    expectOffset("mat.normalScale", materialBase, offsetof(Material, normalScale));
+    expectOffset("mat.pad", materialBase, offsetof(Material, pad));
     expectOffset("em.alias", materialBase + sizeof(Material), offsetof(Emitter, alias));
     expectOffset("params.seed", 0, offsetof(RenderParams, seed));
     expectOffset("params.cameraRight", 0, offsetof(RenderParams, cameraRight));
