@@ -1,6 +1,7 @@
-// tinygltf parses the JSON and fetches buffers through the file-system hooks below; nothing
-// in the parsed model is trusted: every index, offset, stride and count is checked against
-// the arrays and buffer sizes before a byte is read (tinygltf 2.7.0 checks few of them).
+// glTF model to Scene: walks the default scene's node tree, converts materials and the first
+// perspective camera, and flattens triangle primitives into world space. tinygltf parses the
+// JSON through the hooks in gltf_file_access; nothing in the parsed model is trusted, and the
+// accessor bounds checks live in gltf_accessors (tinygltf 2.7.0 checks few of them).
 #include "scene/gltf_loader.h"
 
 #include <tiny_gltf.h>
@@ -10,20 +11,19 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <limits>
 #include <optional>
-#include <unordered_map>
 
 #include "errors.h"
+#include "scene/gltf_accessors.h"
+#include "scene/gltf_file_access.h"
 
 namespace wf {
 namespace {
 
 namespace fs = std::filesystem;
 
-constexpr uintmax_t MAX_FILE_BYTES = uintmax_t(1) << 30;
 // Far above what the GPU buffers hold; it only stops a small file that instances a big mesh
 // from thousands of nodes from exhausting memory here.
 constexpr size_t MAX_TRIANGLES = size_t(1) << 26;
@@ -51,154 +51,7 @@ std::string collapseLines(const std::string& text) {
     return out;
 }
 
-// --- File access: tinygltf may read only regular files inside the scene's folder. ---
-
-struct FsPolicy {
-    fs::path folder;     // canonical
-    std::string refusal; // first refused path and why, for the error message
-};
-
-// tinygltf asks for "<base dir>/<uri>" and then "./<uri>"; both are taken relative to the
-// scene's folder, never to the working directory.
-std::optional<fs::path> resolveInFolder(FsPolicy& policy, const std::string& requested) {
-    std::string uri = requested;
-    std::string prefix = policy.folder.string();
-    if (prefix.empty() || prefix.back() != '/') {
-        prefix += '/';
-    }
-    if (uri.rfind(prefix, 0) == 0) {
-        uri.erase(0, prefix.size());
-    } else if (uri.rfind("./", 0) == 0) {
-        uri.erase(0, 2);
-    }
-    auto refuse = [&](const std::string& why) -> std::optional<fs::path> {
-        if (policy.refusal.empty()) {
-            policy.refusal = "refused to read '" + uri + "': " + why;
-        }
-        return std::nullopt;
-    };
-    const fs::path relative(uri);
-    if (uri.empty() || relative.is_absolute() || relative.has_root_path()) {
-        return refuse("only paths relative to the scene's folder are allowed");
-    }
-    for (const fs::path& part : relative) {
-        if (part == "..") {
-            return refuse("'..' is not allowed in paths");
-        }
-    }
-    std::error_code ec;
-    const fs::path resolved = fs::weakly_canonical(policy.folder / relative, ec);
-    if (ec) {
-        return refuse(ec.message());
-    }
-    // A symbolic link may still lead out of the folder: compare the canonical paths.
-    auto [folderEnd, unused] = std::mismatch(policy.folder.begin(), policy.folder.end(),
-                                             resolved.begin(), resolved.end());
-    if (folderEnd != policy.folder.end()) {
-        return refuse("it resolves outside the scene's folder");
-    }
-    return resolved;
-}
-
-bool fileExists(const std::string& path, void* userData) {
-    std::optional<fs::path> resolved = resolveInFolder(*static_cast<FsPolicy*>(userData), path);
-    std::error_code ec;
-    return resolved && fs::is_regular_file(*resolved, ec);
-}
-
-std::string expandFilePath(const std::string& path, void*) {
-    return path; // no "~" or environment expansion: URIs are plain relative paths
-}
-
-// Reads a whole regular file of at most MAX_FILE_BYTES; `error` says why not otherwise.
-bool readLimited(const fs::path& path, std::vector<unsigned char>& out, std::string& error) {
-    std::error_code ec;
-    if (!fs::is_regular_file(path, ec)) {
-        error = "not found or not a regular file";
-        return false;
-    }
-    const uintmax_t size = fs::file_size(path, ec);
-    if (ec || size > MAX_FILE_BYTES) {
-        error = ec ? ec.message() : "larger than 1 GiB";
-        return false;
-    }
-    std::ifstream in(path, std::ios::binary);
-    out.resize(static_cast<size_t>(size));
-    if (!in || !in.read(reinterpret_cast<char*>(out.data()), std::streamsize(size))) {
-        error = "read failed";
-        return false;
-    }
-    return true;
-}
-
-bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path,
-                   void* userData) {
-    std::optional<fs::path> resolved = resolveInFolder(*static_cast<FsPolicy*>(userData), path);
-    std::string why = "outside the scene's folder";
-    if (resolved && readLimited(*resolved, *out, why)) {
-        return true;
-    }
-    *err += why;
-    return false;
-}
-
-bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
-    *err += "writing is disabled";
-    return false;
-}
-
-// Textures are not used yet: accepting every image undecoded keeps stb_image (and the
-// unchecked image bufferView offsets tinygltf hands it) away from untrusted bytes.
-bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int,
-               const unsigned char*, int, void*) {
-    return true;
-}
-
-// tinygltf's JSON parser recurses once per nesting level, so a file of a few megabytes of
-// "[[[[..." would overflow the stack; glTF itself needs fewer than ten levels.
-bool nestedTooDeep(const unsigned char* text, size_t length) {
-    constexpr int MAX_DEPTH = 256;
-    int depth = 0;
-    bool inString = false;
-    for (size_t i = 0; i < length; ++i) {
-        const unsigned char c = text[i];
-        if (inString) {
-            i += c == '\\' ? 1 : 0; // skip the escaped character
-            inString = c != '"';
-        } else if (c == '"') {
-            inString = true;
-        } else if (c == '[' || c == '{') {
-            if (++depth > MAX_DEPTH) {
-                return true;
-            }
-        } else if (c == ']' || c == '}') {
-            --depth;
-        }
-    }
-    return false;
-}
-
 // --- Model to Scene. ---
-
-struct AccessorData {
-    const unsigned char* bytes = nullptr;
-    size_t count = 0;
-    size_t stride = 0;
-    int componentType = 0;
-};
-
-size_t componentSize(int componentType) {
-    switch (componentType) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
-    case TINYGLTF_COMPONENT_TYPE_SHORT:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
-    case TINYGLTF_COMPONENT_TYPE_INT:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-    case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
-    default: return 0;
-    }
-}
 
 bool allFinite(const glm::dmat4& m) {
     for (int c = 0; c < 4; ++c) {
@@ -235,18 +88,14 @@ bool isDegenerate(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
 
 class Converter {
 public:
-    Converter(const tinygltf::Model& model, const std::string& file) : model_(model), file_(file) {}
+    Converter(const tinygltf::Model& model, const std::string& file)
+        : model_(model), file_(file), reader_(model, file) {}
     Scene run();
 
 private:
-    [[noreturn]] void fail(const std::string& problem) const {
-        throw InputError(file_ + ": " + problem);
-    }
+    [[noreturn]] void fail(const std::string& problem) const { gltf::fail(file_, problem); }
     void checkIndex(int index, size_t size, const std::string& what, const std::string& by) const {
-        if (index < 0 || size_t(index) >= size) {
-            fail(by + " refers to " + what + " " + std::to_string(index) +
-                 ", which does not exist (the file has " + std::to_string(size) + ")");
-        }
+        gltf::checkIndex(file_, index, size, what, by);
     }
     void convertMaterials();
     void checkNodeTree();
@@ -255,15 +104,11 @@ private:
     void addCamera(int nodeIndex, const glm::dmat4& world);
     void addPrimitive(const tinygltf::Primitive& primitive, const std::string& where,
                       const glm::dmat4& world);
-    AccessorData accessorData(int index, const std::string& role, int type);
-    const std::vector<glm::vec3>& positions(int accessor, const std::string& where);
-    std::vector<uint32_t> indices(int accessor, size_t vertexCount, const std::string& where);
-
     const tinygltf::Model& model_;
     const std::string& file_;
     Scene scene_;
     std::vector<int> parent_;
-    std::unordered_map<int, std::vector<glm::vec3>> positionCache_;
+    gltf::AccessorReader reader_;
     std::optional<uint32_t> defaultMaterial_;
     size_t skippedPrimitives_ = 0;
     size_t degenerateTriangles_ = 0;
@@ -430,101 +275,6 @@ void Converter::addCamera(int nodeIndex, const glm::dmat4& world) {
     scene_.hasCamera = true;
 }
 
-AccessorData Converter::accessorData(int index, const std::string& role, int type) {
-    checkIndex(index, model_.accessors.size(), "accessor", role);
-    const tinygltf::Accessor& acc = model_.accessors[index];
-    const std::string name = "accessor " + std::to_string(index) + " (" + role + ")";
-    const bool vec3 = type == TINYGLTF_TYPE_VEC3;
-    if (acc.type != type) {
-        fail(name + " has the wrong type (" + (vec3 ? "VEC3" : "SCALAR") + " expected)");
-    }
-    if (acc.sparse.isSparse) {
-        fail(name + " is sparse, which is not supported");
-    }
-    if (acc.bufferView == -1) {
-        fail(name + " has no bufferView, which is not supported");
-    }
-    checkIndex(acc.bufferView, model_.bufferViews.size(), "bufferView", name);
-    const tinygltf::BufferView& view = model_.bufferViews[acc.bufferView];
-    const std::string viewName = "bufferView " + std::to_string(acc.bufferView);
-    checkIndex(view.buffer, model_.buffers.size(), "buffer", viewName);
-    const size_t bufferSize = model_.buffers[view.buffer].data.size();
-    if (view.byteLength > bufferSize || view.byteOffset > bufferSize - view.byteLength) {
-        fail(viewName + " extends past the end of buffer " + std::to_string(view.buffer) + " (" +
-             std::to_string(bufferSize) + " bytes)");
-    }
-    const size_t elementSize = componentSize(acc.componentType) * (vec3 ? 3 : 1);
-    const size_t stride = view.byteStride != 0 ? view.byteStride : elementSize;
-    if (elementSize == 0 || stride < elementSize) {
-        fail(name + ": bad componentType or byteStride smaller than one element");
-    }
-    const size_t length = view.byteLength;
-    if (acc.count > 0 &&
-        (acc.byteOffset > length || elementSize > length - acc.byteOffset ||
-         (acc.count - 1) > (length - acc.byteOffset - elementSize) / stride)) {
-        fail(name + ": " + std::to_string(acc.count) + " elements extend past the end of " +
-             viewName + " (" + std::to_string(length) + " bytes)");
-    }
-    const unsigned char* base = model_.buffers[view.buffer].data.data() + view.byteOffset;
-    return {base + acc.byteOffset, acc.count, stride, acc.componentType};
-}
-
-const std::vector<glm::vec3>& Converter::positions(int accessor, const std::string& where) {
-    auto cached = positionCache_.find(accessor);
-    if (cached != positionCache_.end()) {
-        return cached->second;
-    }
-    AccessorData data = accessorData(accessor, "POSITION of " + where, TINYGLTF_TYPE_VEC3);
-    if (data.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT) {
-        fail("accessor " + std::to_string(accessor) + " (POSITION of " + where +
-             ") must hold floats");
-    }
-    std::vector<glm::vec3> points(data.count);
-    for (size_t i = 0; i < data.count; ++i) {
-        float xyz[3];
-        std::memcpy(xyz, data.bytes + i * data.stride, sizeof(xyz)); // may be unaligned
-        if (!std::isfinite(xyz[0]) || !std::isfinite(xyz[1]) || !std::isfinite(xyz[2])) {
-            fail("accessor " + std::to_string(accessor) + " (POSITION of " + where +
-                 ") has a NaN or infinite coordinate in element " + std::to_string(i));
-        }
-        points[i] = glm::vec3(xyz[0], xyz[1], xyz[2]);
-    }
-    return positionCache_.emplace(accessor, std::move(points)).first->second;
-}
-
-std::vector<uint32_t> Converter::indices(int accessor, size_t vertexCount,
-                                         const std::string& where) {
-    AccessorData data = accessorData(accessor, "indices of " + where, TINYGLTF_TYPE_SCALAR);
-    const size_t size = componentSize(data.componentType);
-    if (data.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
-        data.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
-        data.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) {
-        fail("accessor " + std::to_string(accessor) + " (indices of " + where +
-             ") must hold unsigned 8, 16 or 32-bit integers");
-    }
-    std::vector<uint32_t> out(data.count);
-    for (size_t i = 0; i < data.count; ++i) {
-        const unsigned char* p = data.bytes + i * data.stride;
-        uint32_t u32 = 0;
-        if (size == 1) {
-            u32 = p[0];
-        } else if (size == 2) {
-            uint16_t u16 = 0;
-            std::memcpy(&u16, p, 2); // little-endian file, little-endian host
-            u32 = u16;
-        } else {
-            std::memcpy(&u32, p, 4);
-        }
-        if (u32 >= vertexCount) {
-            fail("accessor " + std::to_string(accessor) + " (indices of " + where +
-                 "): element " + std::to_string(i) + " is " + std::to_string(u32) +
-                 ", but there are only " + std::to_string(vertexCount) + " vertices");
-        }
-        out[i] = u32;
-    }
-    return out;
-}
-
 void Converter::addPrimitive(const tinygltf::Primitive& primitive, const std::string& where,
                              const glm::dmat4& world) {
     if (primitive.mode != TINYGLTF_MODE_TRIANGLES) {
@@ -535,7 +285,7 @@ void Converter::addPrimitive(const tinygltf::Primitive& primitive, const std::st
     if (position == primitive.attributes.end()) {
         fail(where + " has no POSITION attribute");
     }
-    const std::vector<glm::vec3>& points = positions(position->second, where);
+    const std::vector<glm::vec3>& points = reader_.positions(position->second, where);
     uint32_t material = 0;
     if (primitive.material == -1) {
         if (!defaultMaterial_) {
@@ -548,7 +298,8 @@ void Converter::addPrimitive(const tinygltf::Primitive& primitive, const std::st
     }
     const bool indexed = primitive.indices != -1;
     const std::vector<uint32_t> order =
-        indexed ? indices(primitive.indices, points.size(), where) : std::vector<uint32_t>{};
+        indexed ? reader_.indices(primitive.indices, points.size(), where)
+                : std::vector<uint32_t>{};
     const size_t count = indexed ? order.size() : points.size();
     if (count % 3 != 0) {
         fail(where + ": " + std::to_string(count) + " vertices do not make whole triangles");
@@ -648,7 +399,7 @@ Scene loadGltf(const std::string& path) {
     }
     std::vector<unsigned char> bytes;
     std::string why;
-    if (!readLimited(path, bytes, why)) {
+    if (!gltf::readLimited(path, bytes, why)) {
         throw InputError(path + ": cannot read scene: " + why);
     }
     const size_t size = bytes.size();
@@ -663,31 +414,31 @@ Scene loadGltf(const std::string& path) {
         jsonStart = 20;
         jsonLength = std::min<size_t>(chunkLength, size - 20);
     }
-    if (nestedTooDeep(bytes.data() + jsonStart, jsonLength)) {
-        throw InputError(path + ": JSON nested more than 256 levels deep");
+    if (gltf::nestedTooDeep(bytes.data() + jsonStart, jsonLength)) {
+        throw InputError(path + ": JSON nested more than " + std::to_string(gltf::MAX_JSON_DEPTH) +
+                         " levels deep");
     }
     // tinygltf 2.7.0's GLB chunk check forgets the 8-byte chunk header, so it may read up to
     // 8 bytes past the end; zero padding makes that harmless.
     bytes.resize(size + 16, 0);
 
     std::error_code ec;
-    FsPolicy policy{fs::weakly_canonical(fs::absolute(path).parent_path(), ec), {}};
+    gltf::FsPolicy policy{fs::weakly_canonical(fs::absolute(path).parent_path(), ec), {}};
     if (ec) {
         throw InputError(path + ": cannot resolve the scene's folder: " + ec.message());
     }
-    tinygltf::TinyGLTF gltf;
-    gltf.SetFsCallbacks({&fileExists, &expandFilePath, &readWholeFile, &refuseWrite, &policy});
-    gltf.SetImageLoader(&skipImage, nullptr);
+    tinygltf::TinyGLTF parser;
+    gltf::restrictFileAccess(parser, policy);
     tinygltf::Model model;
     std::string err, warn;
     bool loaded = false;
     try {
         const std::string base = policy.folder.string();
-        loaded = binary ? gltf.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(),
-                                                    unsigned(size), base)
-                        : gltf.LoadASCIIFromString(&model, &err, &warn,
-                                                   reinterpret_cast<const char*>(bytes.data()),
-                                                   unsigned(size), base);
+        loaded = binary ? parser.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(),
+                                                      unsigned(size), base)
+                        : parser.LoadASCIIFromString(&model, &err, &warn,
+                                                     reinterpret_cast<const char*>(bytes.data()),
+                                                     unsigned(size), base);
     } catch (const std::exception& e) {
         err += e.what();
     }

@@ -2,9 +2,11 @@
 // The loader produces it; the BVH builder reorders its triangles; the light table fills in
 // each triangle's emitter index.
 #pragma once
+#include <cstdint>
 #include <string>
 #include <vector>
 
+#include "shaders/shared/light_types.h"
 #include "shaders/shared/scene_types.h"
 
 namespace wf {
@@ -12,6 +14,7 @@ namespace wf {
 using gpu_types::BvhNode;
 using gpu_types::Emitter;
 using gpu_types::Material;
+using gpu_types::PunctualLight;
 using gpu_types::Triangle;
 
 struct Camera {
@@ -22,11 +25,23 @@ struct Camera {
     float aspect = 0.0f;                  // width / height from the file; 0 if it gives none
 };
 
+// An equirectangular environment map (longitude along x, +Y up), linear RGB radiance.
+struct Environment {
+    uint32_t width = 0;
+    uint32_t height = 0;
+    std::vector<float> rgb; // width * height * 3, top row first
+    bool present() const { return width > 0 && height > 0; }
+};
+
 struct Scene {
     std::vector<Triangle> triangles; // world space, degenerate ones already dropped
     std::vector<Material> materials; // never empty: a default grey material is appended if needed
-    Camera camera;
+    Camera camera;                   // the one to render with
     bool hasCamera = false;
+    std::vector<Camera> cameras;     // every valid camera of the file, in node order
+    std::vector<std::string> cameraNames;
+    std::vector<PunctualLight> lights; // KHR_lights_punctual (and sphere lights)
+    Environment environment;         // --env, or uniform white when the scene has no light
 };
 
 } // namespace wf

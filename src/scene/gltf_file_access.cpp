@@ -1,0 +1,139 @@
+// tinygltf's default hooks read any path a file names, "../" and absolute ones included, and
+// hand every image to stb_image; these replacements confine it to the scene's folder.
+#include "scene/gltf_file_access.h"
+
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <fstream>
+#include <optional>
+
+namespace wf::gltf {
+namespace {
+
+namespace fs = std::filesystem;
+
+// tinygltf asks for "<base dir>/<uri>" and then "./<uri>"; both are taken relative to the
+// scene's folder, never to the working directory.
+std::optional<fs::path> resolveInFolder(FsPolicy& policy, const std::string& requested) {
+    std::string uri = requested;
+    std::string prefix = policy.folder.string();
+    if (prefix.empty() || prefix.back() != '/') {
+        prefix += '/';
+    }
+    if (uri.rfind(prefix, 0) == 0) {
+        uri.erase(0, prefix.size());
+    } else if (uri.rfind("./", 0) == 0) {
+        uri.erase(0, 2);
+    }
+    auto refuse = [&](const std::string& why) -> std::optional<fs::path> {
+        if (policy.refusal.empty()) {
+            policy.refusal = "refused to read '" + uri + "': " + why;
+        }
+        return std::nullopt;
+    };
+    const fs::path relative(uri);
+    if (uri.empty() || relative.is_absolute() || relative.has_root_path()) {
+        return refuse("only paths relative to the scene's folder are allowed");
+    }
+    for (const fs::path& part : relative) {
+        if (part == "..") {
+            return refuse("'..' is not allowed in paths");
+        }
+    }
+    std::error_code ec;
+    const fs::path resolved = fs::weakly_canonical(policy.folder / relative, ec);
+    if (ec) {
+        return refuse(ec.message());
+    }
+    // A symbolic link may still lead out of the folder: compare the canonical paths.
+    auto [folderEnd, unused] = std::mismatch(policy.folder.begin(), policy.folder.end(),
+                                             resolved.begin(), resolved.end());
+    if (folderEnd != policy.folder.end()) {
+        return refuse("it resolves outside the scene's folder");
+    }
+    return resolved;
+}
+
+bool fileExists(const std::string& path, void* userData) {
+    std::optional<fs::path> resolved = resolveInFolder(*static_cast<FsPolicy*>(userData), path);
+    std::error_code ec;
+    return resolved && fs::is_regular_file(*resolved, ec);
+}
+
+std::string expandFilePath(const std::string& path, void*) {
+    return path; // no "~" or environment expansion: URIs are plain relative paths
+}
+
+bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                   void* userData) {
+    std::optional<fs::path> resolved = resolveInFolder(*static_cast<FsPolicy*>(userData), path);
+    std::string why = "outside the scene's folder";
+    if (resolved && readLimited(*resolved, *out, why)) {
+        return true;
+    }
+    *err += why;
+    return false;
+}
+
+bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+    *err += "writing is disabled";
+    return false;
+}
+
+// Textures are not used yet: accepting every image undecoded keeps stb_image (and the
+// unchecked image bufferView offsets tinygltf hands it) away from untrusted bytes.
+bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int,
+               const unsigned char*, int, void*) {
+    return true;
+}
+
+} // namespace
+
+bool readLimited(const fs::path& path, std::vector<unsigned char>& out, std::string& error) {
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec)) {
+        error = "not found or not a regular file";
+        return false;
+    }
+    const uintmax_t size = fs::file_size(path, ec);
+    if (ec || size > MAX_FILE_BYTES) {
+        error = ec ? ec.message() : "larger than 1 GiB";
+        return false;
+    }
+    std::ifstream in(path, std::ios::binary);
+    out.resize(static_cast<size_t>(size));
+    if (!in || !in.read(reinterpret_cast<char*>(out.data()), std::streamsize(size))) {
+        error = "read failed";
+        return false;
+    }
+    return true;
+}
+
+void restrictFileAccess(tinygltf::TinyGLTF& gltf, FsPolicy& policy) {
+    gltf.SetFsCallbacks({&fileExists, &expandFilePath, &readWholeFile, &refuseWrite, &policy});
+    gltf.SetImageLoader(&skipImage, nullptr);
+}
+
+bool nestedTooDeep(const unsigned char* text, size_t length) {
+    int depth = 0;
+    bool inString = false;
+    for (size_t i = 0; i < length; ++i) {
+        const unsigned char c = text[i];
+        if (inString) {
+            i += c == '\\' ? 1 : 0; // skip the escaped character
+            inString = c != '"';
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > MAX_JSON_DEPTH) {
+                return true;
+            }
+        } else if (c == ']' || c == '}') {
+            --depth;
+        }
+    }
+    return false;
+}
+
+} // namespace wf::gltf
