@@ -18,6 +18,7 @@ const char* kTopHelp =
     "\n"
     "Commands:\n"
     "  render SCENE.gltf -o OUT.exr   offscreen render to OpenEXR, plus a PNG preview\n"
+    "  view SCENE.gltf                window that refines the image progressively\n"
     "\n"
     "Run 'wavefront COMMAND --help' for the options of a command.\n"
     "\n"
@@ -45,6 +46,14 @@ int main(int argc, char** argv) {
         }
         if (command == "render")
             return wf::runRenderCommand(args);
+        if (command == "view") {
+#ifdef WF_HAVE_VIEWER
+            return wf::runViewCommand(args);
+#else
+            throw wf::UsageError("this build has no viewer: configure with -DWF_BUILD_VIEWER=ON "
+                                 "(needs libglfw3-dev and libimgui-dev)");
+#endif
+        }
         throw wf::UsageError("unknown command '" + command + "' (see wavefront --help)");
     } catch (const wf::UsageError& error) {
         return fail("", error, 2);

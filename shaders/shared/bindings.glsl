@@ -1,8 +1,10 @@
-// Buffer declarations of the shared descriptor set. A pass includes this after defining
-// WF_WORKGROUP_SIZE; the host compiles with WF_HAS_EMITTERS only when the scene has emissive
-// triangles, so an emitter-free scene declares (and binds) no emitter table.
+// Buffer declarations of the shared descriptor set. The host compiles each scene's variant with
+// switches saying what exists (WF_HAS_EMITTERS: a light table for next-event estimation;
+// WF_HAS_LIGHTS: sphere or Dirac lights; WF_HAS_ENVIRONMENT: an environment map), so a scene
+// declares and binds only the buffers it reads.
 #include "scene_types.h"
 #include "render_types.h"
+#include "light_types.h"
 
 layout(std430, binding = WF_BINDING_TRIANGLES) readonly buffer TriangleBuffer {
     Triangle triangles[];
@@ -17,6 +19,21 @@ layout(std430, binding = WF_BINDING_MATERIALS) readonly buffer MaterialBuffer {
 layout(std430, binding = WF_BINDING_EMITTERS) readonly buffer EmitterBuffer {
     Emitter emitters[];
 };
+#endif
+#if WF_HAS_LIGHTS
+layout(std430, binding = WF_BINDING_LIGHTS) readonly buffer LightBuffer {
+    PunctualLight lights[]; // sphere lights first
+};
+#endif
+#if WF_HAS_ENVIRONMENT
+layout(std430, binding = WF_BINDING_ENVIRONMENT) readonly buffer EnvironmentBuffer {
+    vec4 environment[]; // rgb radiance per texel, equirectangular, top row first
+};
+#if WF_HAS_EMITTERS
+layout(std430, binding = WF_BINDING_ENVIRONMENT_ALIAS) readonly buffer EnvironmentAliasBuffer {
+    Emitter environmentAlias[];
+};
+#endif
 #endif
 layout(std430, binding = WF_BINDING_PARAMS) readonly buffer ParamsBuffer {
     RenderParams params;
@@ -61,3 +78,4 @@ layout(std430, binding = WF_BINDING_SHADOW_QUEUE) buffer ShadowQueueBuffer {
 #endif
 
 #define WF_MISS 0xffffffffu
+#define WF_SPHERE_HIT 0x80000000u // hits.w = WF_SPHERE_HIT | sphere light index

@@ -10,6 +10,10 @@
 //   WF_BVH_NODE(i)      an expression yielding BvhNode i (e.g. a storage-buffer element)
 //   WF_BVH_TRIANGLE(i)  an expression yielding Triangle i
 //   WF_BVH_STACK_SIZE   optional, default 64; the builder keeps depth <= WF_BVH_STACK_SIZE - 1
+// With WF_HAS_ALPHA_MASK (GLSL only), every candidate hit must also pass
+//   bool wfAlphaPasses(uint triangle, float b1, float b2, vec3 o, vec3 d)
+// so cut-outs stop no ray, closest-hit or shadow; the includer may define it (and
+// WF_ALPHA_PASSES_DEFINED), else alpha_mask.glsl's, reading the includer's scene buffers, is used.
 // In C++ the functions become members of BvhTraversal, whose two pointers the default
 // accessors read; use it through src/scene/bvh_cpu.h and leave the macros undefined (a second
 // definition in another translation unit would break the one-definition rule).
@@ -21,6 +25,10 @@
 
 #ifndef WF_BVH_STACK_SIZE
 #define WF_BVH_STACK_SIZE 64
+#endif
+
+#if !defined(__cplusplus) && WF_HAS_ALPHA_MASK && !defined(WF_ALPHA_PASSES_DEFINED)
+#include "alpha_mask.glsl"
 #endif
 
 #define WF_NO_TRIANGLE 0xffffffffu
@@ -82,6 +90,10 @@ WF_INLINE bool traceClosest(vec3 o, vec3 d, float tMax, WF_OUT(HitRecord) hit) {
                 float b1;
                 float b2;
                 if (intersectTriangle(o, d, tri.p0, tri.p1, tri.p2, hit.t, t, b1, b2)) {
+#if WF_HAS_ALPHA_MASK
+                    if (!wfAlphaPasses(i, b1, b2, o, d))
+                        continue; // a cut-out: the ray goes on
+#endif
                     hit.t = t;
                     hit.b1 = b1;
                     hit.b2 = b2;
@@ -146,6 +158,10 @@ WF_INLINE bool traceAny(vec3 o, vec3 d, float tMax) {
                 float b1;
                 float b2;
                 if (intersectTriangle(o, d, tri.p0, tri.p1, tri.p2, tMax, t, b1, b2)) {
+#if WF_HAS_ALPHA_MASK
+                    if (!wfAlphaPasses(i, b1, b2, o, d))
+                        continue;
+#endif
                     return true;
                 }
             }

@@ -24,7 +24,7 @@ struct PunctualLight {
                      // radiance intensity / (pi R^2) is derived for spheres
     float cosInner;  // spot: cos(innerConeAngle)
     float cosOuter;  // spot: cos(outerConeAngle)
-    float pad0;
+    uint emitter;    // this light's entry in the emitter table (for MIS when a ray hits it)
     float pad1;
     float pad2;
 };

@@ -1,21 +1,35 @@
-// Emissive-triangle sampling for next-event estimation: an emitter chosen by power through the
-// alias table, a point uniform in its area, the pdf converted to solid angle at the shading
-// point. emitterSolidAnglePdf gives the same density for a BSDF-sampled ray that hits the
-// emitter, so MIS weights on both sides agree.
+// Next-event estimation over the light table (emissive triangles, sphere lights, Dirac point,
+// spot and directional lights, the environment) and the matching densities for rays that hit
+// a light by BSDF sampling, so that MIS weights on both sides agree.
+// Variant switches: WF_TRIANGLE_SOLID_ANGLE (spherical-triangle sampling, else area),
+// WF_SPHERE_SOLID_ANGLE (cone sampling, else area).
+
+#if WF_HAS_ENVIRONMENT
+uint environmentTexel(vec3 direction) {
+    vec2 uv = directionToEquirect(direction);
+    uvec2 texel = min(uvec2(uv * vec2(params.environmentWidth, params.environmentHeight)),
+                      uvec2(params.environmentWidth - 1u, params.environmentHeight - 1u));
+    return texel.y * params.environmentWidth + texel.x;
+}
+
+vec3 environmentRadiance(vec3 direction) { return environment[environmentTexel(direction)].rgb; }
+#endif
+
+#if WF_HAS_LIGHTS
+vec3 sphereRadiance(PunctualLight light) {
+    return light.intensity / (WF_PI * light.radius * light.radius);
+}
+#endif
+
 #if WF_HAS_EMITTERS
 
 struct LightSample {
-    vec3 direction;   // unit, from the shading point to the light point
-    float pdf;        // solid-angle density, emitter choice included; 0 if unusable
-    vec3 emission;
-    vec3 offsetPoint; // light point pushed off the light toward the shading point
+    vec3 direction;  // unit, from the shading point towards the light
+    float pdf;       // solid-angle density with the light choice; for Dirac lights the choice only
+    vec3 radiance;   // incident radiance (Dirac lights: irradiance at normal incidence)
+    vec3 segmentEnd; // where the shadow ray stops: just off the light, or outside the scene
+    bool isDelta;
 };
-
-float emitterSolidAnglePdf(uint emitter, float area, float distance, float cosLight) {
-    if (area <= 0.0 || cosLight <= 0.0)
-        return 0.0;
-    return emitters[emitter].pmf * distance * distance / (area * cosLight);
-}
 
 uint chooseEmitter(float u) {
     float scaled = u * float(params.emitterCount);
@@ -23,37 +37,226 @@ uint chooseEmitter(float u) {
     return (scaled - float(slot)) < emitters[slot].aliasProb ? slot : emitters[slot].alias;
 }
 
-LightSample sampleEmitter(float uChoice, vec2 uPoint, vec3 p) {
-    LightSample result;
-    result.pdf = 0.0;
-    result.direction = vec3(0.0, 0.0, 1.0);
-    result.emission = vec3(0.0);
-    result.offsetPoint = p;
+LightSample noLight(vec3 p) {
+    LightSample s;
+    s.direction = vec3(0.0, 0.0, 1.0);
+    s.pdf = 0.0;
+    s.radiance = vec3(0.0);
+    s.segmentEnd = p;
+    s.isDelta = false;
+    return s;
+}
 
-    uint emitter = chooseEmitter(uChoice);
-    Triangle tri = triangles[emitters[emitter].triangle];
+// A point far enough along `direction` to leave the scene's bounding sphere from p.
+vec3 pointOutsideScene(vec3 p, vec3 direction) {
+    return p + direction * (2.0 * (params.sceneRadius + length(p - params.sceneCenter)));
+}
+
+#if WF_HAS_TRIANGLE_EMITTERS
+// Density of reaching triangle `tri` from `from` along a direction hitting it at distance t.
+float triangleLightPdf(uint emitter, Triangle tri, vec3 from, float t, float cosLight) {
+    float pmf = emitters[emitter].pmf;
+#if WF_TRIANGLE_SOLID_ANGLE
+    float omega = triangleSolidAngle(from, tri.p0, tri.p1, tri.p2);
+    if (useSphericalTriangleSampling(omega))
+        return pmf / omega;
+#endif
+    float area = 0.5 * length(cross(tri.p1 - tri.p0, tri.p2 - tri.p0));
+    return area > 0.0 && cosLight > 0.0 ? pmf * t * t / (area * cosLight) : 0.0;
+}
+
+// Barycentrics (b1, b2) of a point in the triangle's plane, clamped into the triangle.
+vec2 planeBarycentrics(Triangle tri, vec3 q) {
+    vec3 e1 = tri.p1 - tri.p0, e2 = tri.p2 - tri.p0, v = q - tri.p0;
+    float d00 = dot(e1, e1), d01 = dot(e1, e2), d11 = dot(e2, e2);
+    float d20 = dot(v, e1), d21 = dot(v, e2);
+    float denominator = d00 * d11 - d01 * d01;
+    vec2 b = denominator > 0.0 ? vec2(d11 * d20 - d01 * d21, d00 * d21 - d01 * d20) / denominator
+                               : vec2(0.0);
+    b = max(b, vec2(0.0));
+    return b / max(1.0, b.x + b.y);
+}
+
+LightSample sampleTriangleLight(uint emitter, uint triangleIndex, vec2 u, vec3 p) {
+    Triangle tri = triangles[triangleIndex];
     Material material = materials[tri.material];
-    vec2 b = sampleUniformTriangle(uPoint);
+    vec3 cross12 = cross(tri.p1 - tri.p0, tri.p2 - tri.p0);
+    vec3 nl = normalize(cross12);
+    vec2 b = sampleUniformTriangle(u);
+    bool solidAngle = false;
+    float omega = 0.0;
+#if WF_TRIANGLE_SOLID_ANGLE
+    omega = triangleSolidAngle(p, tri.p0, tri.p1, tri.p2);
+    if (useSphericalTriangleSampling(omega)) {
+        vec3 direction = sampleSphericalTriangle(normalize(tri.p0 - p), normalize(tri.p1 - p),
+                                                 normalize(tri.p2 - p), u);
+        float denominator = dot(direction, nl);
+        if (denominator == 0.0 || dot(direction, direction) == 0.0)
+            return noLight(p);
+        float t = dot(tri.p0 - p, nl) / denominator;
+        if (!(t > 0.0))
+            return noLight(p);
+        b = planeBarycentrics(tri, p + t * direction);
+        solidAngle = true;
+    }
+#endif
     vec3 q = triangleHitPoint(tri.p0, tri.p1, tri.p2, b.x, b.y);
     vec3 toLight = q - p;
     float distance = length(toLight);
     if (!(distance > 0.0))
-        return result;
+        return noLight(p);
     vec3 direction = toLight / distance;
-    vec3 cross12 = cross(tri.p1 - tri.p0, tri.p2 - tri.p0);
-    vec3 nl = normalize(cross12);
     float cosLight = dot(nl, -direction);
-    bool doubleSided = (material.flags & WF_MATERIAL_DOUBLE_SIDED) != 0u;
-    if (cosLight < 0.0 && doubleSided) {
+    if (cosLight < 0.0 && (material.flags & WF_MATERIAL_DOUBLE_SIDED) != 0u) {
         nl = -nl;
         cosLight = -cosLight;
     }
-    result.pdf = emitterSolidAnglePdf(emitter, 0.5 * length(cross12), distance, cosLight);
-    result.direction = direction;
-    result.emission = material.emission;
+    if (!(cosLight > 0.0))
+        return noLight(p); // the back of a one-sided emitter: no light this way
+    LightSample s;
+    s.direction = direction;
+    s.pdf = solidAngle ? emitters[emitter].pmf / omega
+                       : triangleLightPdf(emitter, tri, p, distance, cosLight);
+    s.radiance = material.emission;
     vec3 qError = triangleSpawnError(tri.p0, tri.p1, tri.p2, b.x, b.y);
-    result.offsetPoint = offsetRayOrigin(q, qError, nl, -direction);
-    return result;
+    s.segmentEnd = offsetRayOrigin(q, qError, nl, -direction);
+    s.isDelta = false;
+    return s;
+}
+#endif
+
+#if WF_HAS_SPHERE_LIGHTS
+bool sphereUsesCone(PunctualLight light, vec3 from) {
+#if WF_SPHERE_SOLID_ANGLE
+    return length(light.position - from) > light.radius;
+#else
+    return false;
+#endif
+}
+
+float sphereLightPdf(uint emitter, PunctualLight light, vec3 from, float t, float cosLight) {
+    float pmf = emitters[emitter].pmf;
+    if (sphereUsesCone(light, from))
+        return pmf / (2.0 * WF_PI *
+                      sphereConeOneMinusCos(light.radius, length(light.position - from)));
+    float area = 4.0 * WF_PI * light.radius * light.radius;
+    return cosLight > 0.0 ? pmf * t * t / (area * cosLight) : 0.0;
+}
+
+// Error bound of a point computed as centre + radius * unit normal.
+vec3 spherePointError(PunctualLight light) {
+    return (abs(light.position) + vec3(light.radius)) * WF_GAMMA(6.0);
+}
+
+LightSample sampleSphereLight(uint emitter, PunctualLight light, vec2 u, vec3 p) {
+    vec3 q;
+    if (sphereUsesCone(light, p)) {
+        vec3 toCenter = light.position - p;
+        float d = length(toCenter);
+        vec3 direction = sampleCone(toCenter / d, sphereConeOneMinusCos(light.radius, d), u);
+        q = p + direction * raySphereNear(p, direction, light.position, light.radius, true);
+    } else {
+        q = light.position + light.radius * sampleUniformSphere(u);
+    }
+    vec3 toLight = q - p;
+    float distance = length(toLight);
+    if (!(distance > 0.0))
+        return noLight(p);
+    LightSample s;
+    s.direction = toLight / distance;
+    vec3 nl = normalize(q - light.position);
+    float cosLight = dot(nl, -s.direction);
+    if (!(cosLight > 0.0))
+        return noLight(p); // the far side of the sphere faces away
+    s.pdf = sphereLightPdf(emitter, light, p, distance, cosLight);
+    s.radiance = sphereRadiance(light);
+    s.segmentEnd = offsetRayOrigin(q, spherePointError(light), nl, nl);
+    s.isDelta = false;
+    return s;
+}
+#endif
+
+#if WF_HAS_DELTA_LIGHTS
+LightSample sampleDeltaLight(uint emitter, PunctualLight light, vec3 p) {
+    LightSample s;
+    s.pdf = emitters[emitter].pmf;
+    s.isDelta = true;
+    if (light.type == WF_LIGHT_DIRECTIONAL) {
+        s.direction = -light.direction;
+        s.radiance = light.intensity; // lux: irradiance at normal incidence
+        s.segmentEnd = pointOutsideScene(p, s.direction);
+        return s;
+    }
+    vec3 toLight = light.position - p;
+    float distance2 = dot(toLight, toLight);
+    if (!(distance2 > 0.0))
+        return noLight(p);
+    s.direction = toLight * inversesqrt(distance2);
+    s.radiance = light.intensity / distance2; // candela / m^2 = irradiance
+    if (light.type == WF_LIGHT_SPOT) {
+        // glTF's recommended smooth falloff between the outer and inner cone.
+        float cosAngle = dot(-s.direction, light.direction);
+        float x = clamp((cosAngle - light.cosOuter) / max(light.cosInner - light.cosOuter, 1e-4),
+                        0.0, 1.0);
+        s.radiance *= x * x;
+    }
+    s.segmentEnd = light.position;
+    return s;
+}
+#endif
+
+#if WF_HAS_ENVIRONMENT
+float environmentLightPdf(vec3 direction) {
+    uint texel = environmentTexel(direction);
+    float pdfUV = environmentAlias[texel].pmf *
+                  float(params.environmentWidth * params.environmentHeight);
+    return emitters[params.environmentEmitter].pmf * equirectSolidAnglePdf(pdfUV, direction);
+}
+
+LightSample sampleEnvironment(float uTexel, vec2 u, vec3 p) {
+    uint count = params.environmentWidth * params.environmentHeight;
+    float scaled = uTexel * float(count);
+    uint slot = min(uint(scaled), count - 1u);
+    uint texel = (scaled - float(slot)) < environmentAlias[slot].aliasProb
+                     ? slot : environmentAlias[slot].alias;
+    uvec2 xy = uvec2(texel % params.environmentWidth, texel / params.environmentWidth);
+    vec2 uv = (vec2(xy) + u) / vec2(params.environmentWidth, params.environmentHeight);
+    LightSample s;
+    s.direction = equirectToDirection(uv);
+    s.pdf = environmentLightPdf(s.direction);
+    s.radiance = environment[texel].rgb;
+    s.segmentEnd = pointOutsideScene(p, s.direction);
+    s.isDelta = false;
+    return s.pdf > 0.0 ? s : noLight(p);
+}
+#endif
+
+LightSample sampleLight(float uChoice, vec2 uPoint, float uExtra, vec3 p) {
+    uint emitter = chooseEmitter(uChoice);
+    uint source = emitters[emitter].source;
+    uint index = source & WF_EMITTER_INDEX_MASK;
+    uint kind = source & WF_EMITTER_KIND_MASK;
+#if WF_HAS_TRIANGLE_EMITTERS
+    if (kind == WF_EMITTER_TRIANGLE)
+        return sampleTriangleLight(emitter, index, uPoint, p);
+#endif
+#if WF_HAS_ENVIRONMENT
+    if (kind == WF_EMITTER_ENVIRONMENT)
+        return sampleEnvironment(uExtra, uPoint, p);
+#endif
+#if WF_HAS_LIGHTS
+    if (kind == WF_EMITTER_LIGHT) {
+        PunctualLight light = lights[index];
+#if WF_HAS_SPHERE_LIGHTS
+        if (light.type == WF_LIGHT_SPHERE)
+            return sampleSphereLight(emitter, light, uPoint, p);
+#endif
+#if WF_HAS_DELTA_LIGHTS
+        return sampleDeltaLight(emitter, light, p);
+#endif
+    }
+#endif
+    return noLight(p);
 }
 
 #endif

@@ -38,6 +38,11 @@ namespace wf::gpu_types {
 #define WF_BINDING_SHADOW_RADIANCE 14
 #define WF_BINDING_RAY_QUEUES 15
 #define WF_BINDING_SHADOW_QUEUE 16
+// Lights beyond emissive triangles
+#define WF_BINDING_LIGHTS 17
+#define WF_BINDING_ENVIRONMENT 18       // vec4 radiance per texel
+#define WF_BINDING_ENVIRONMENT_ALIAS 19 // Emitter-shaped alias table over texels
+// 20-31: per-vertex attributes and textures (only for scenes that use them)
 
 struct RenderParams {
     vec3 cameraPosition;
@@ -54,8 +59,14 @@ struct RenderParams {
     uint rrDepth;       // Russian roulette from this bounce on
     uint emitterCount;
     uint pathCapacity;  // paths per wave that the buffers hold
-    uint pad0;
-    uint pad1;
+    uint sphereLightCount; // lights[0, sphereLightCount) are spheres
+    uint environmentEmitter; // the environment's emitter-table entry, or WF_NO_EMITTER
+    vec3 sceneCenter;   // bounding sphere of the scene: infinite lights' shadow rays end
+    float sceneRadius;  // outside it
+    uint environmentWidth;
+    uint environmentHeight;
+    float minThroughput; // --min-throughput (0: off)
+    float clampRadiance; // --clamp (0: off)
 };
 
 // VkDispatchIndirectCommand followed by the item count the dispatch covers.
@@ -88,7 +99,9 @@ struct PassConstants {
 
 #ifdef __cplusplus
 } // namespace wf::gpu_types
-static_assert(sizeof(wf::gpu_types::RenderParams) == 96);
+static_assert(sizeof(wf::gpu_types::RenderParams) == 128);
+static_assert(offsetof(wf::gpu_types::RenderParams, sceneCenter) == 96);
+static_assert(offsetof(wf::gpu_types::RenderParams, clampRadiance) == 124);
 static_assert(offsetof(wf::gpu_types::RenderParams, seed) == 44);
 static_assert(offsetof(wf::gpu_types::RenderParams, maxDepth) == 60);
 static_assert(offsetof(wf::gpu_types::RenderParams, pathCapacity) == 84);

@@ -9,6 +9,8 @@
 //     1-2             point on the light
 //     3-4             BSDF direction
 //     5               Russian roulette
+//     6               BSDF lobe choice
+//     7               light extra (environment texel choice)
 #ifndef WF_RNG_H
 #define WF_RNG_H
 
@@ -20,11 +22,13 @@ namespace wf::gpu_types {
 
 #define WF_DIM_PIXEL 0u
 #define WF_DIM_BOUNCE_BASE 2u
-#define WF_DIMS_PER_BOUNCE 6u
+#define WF_DIMS_PER_BOUNCE 8u
 #define WF_DIM_LIGHT_CHOICE 0u
 #define WF_DIM_LIGHT_POINT 1u
 #define WF_DIM_BSDF 3u
 #define WF_DIM_ROULETTE 5u
+#define WF_DIM_BSDF_LOBE 6u
+#define WF_DIM_LIGHT_EXTRA 7u
 
 // PCG-style 4D hash (Jarzynski & Olano, "Hash Functions for GPU Rendering", 2020): good
 // avalanche in all four inputs at a few integer multiplies.

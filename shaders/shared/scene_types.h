@@ -58,9 +58,16 @@ struct Material {
     uint pad;
 };
 
-// One emissive triangle in the light table, chosen by power through a Walker alias table.
+// The kind of light an emitter-table entry refers to, in the top two bits of `source`.
+#define WF_EMITTER_TRIANGLE 0x00000000u    // | triangle index
+#define WF_EMITTER_LIGHT 0x40000000u       // | index into the punctual/sphere light table
+#define WF_EMITTER_ENVIRONMENT 0x80000000u
+#define WF_EMITTER_KIND_MASK 0xc0000000u
+#define WF_EMITTER_INDEX_MASK 0x3fffffffu
+
+// One light in the light table, chosen by power through a Walker alias table.
 struct Emitter {
-    uint triangle;
+    uint source;     // WF_EMITTER_* | index
     float pmf;       // probability of choosing this emitter
     float aliasProb; // alias-table threshold for this slot
     uint alias;      // slot taken when the threshold test fails

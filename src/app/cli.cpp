@@ -1,6 +1,7 @@
 #include "app/cli.h"
 
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
 
@@ -29,6 +30,38 @@ uint32_t ParsedArgs::uintValue(const std::string& name, uint32_t fallback, uint3
         throw UsageError(name + " expects an integer from " + std::to_string(minValue) + " to " +
                          std::to_string(maxValue) + ", got '" + *text + "'");
     return static_cast<uint32_t>(parsed);
+}
+
+float ParsedArgs::floatValue(const std::string& name, float fallback, float minValue,
+                             float maxValue) const {
+    auto text = value(name);
+    if (!text)
+        return fallback;
+    char* end = nullptr;
+    errno = 0;
+    float parsed = std::strtof(text->c_str(), &end);
+    if (text->empty() || *end != '\0' || errno == ERANGE || !std::isfinite(parsed) ||
+        parsed < minValue || parsed > maxValue) {
+        std::ostringstream message;
+        message << name << " expects a number from " << minValue << " to " << maxValue
+                << ", got '" << *text << "'";
+        throw UsageError(message.str());
+    }
+    return parsed;
+}
+
+std::string ParsedArgs::choiceValue(const std::string& name, const std::string& fallback,
+                                    const std::vector<std::string>& choices) const {
+    auto text = value(name);
+    if (!text)
+        return fallback;
+    std::string list;
+    for (const auto& choice : choices) {
+        if (*text == choice)
+            return choice;
+        list += (list.empty() ? "" : ", ") + choice;
+    }
+    throw UsageError(name + " expects one of " + list + ", got '" + *text + "'");
 }
 
 ParsedArgs parseArgs(const CommandSpec& spec, const std::vector<std::string>& args) {

@@ -32,6 +32,12 @@ public:
     // Unsigned integer in [minValue, maxValue]; UsageError names the flag otherwise.
     uint32_t uintValue(const std::string& name, uint32_t fallback, uint32_t minValue,
                        uint32_t maxValue) const;
+    // Finite number in [minValue, maxValue].
+    float floatValue(const std::string& name, float fallback, float minValue,
+                     float maxValue) const;
+    // One of `choices`; UsageError lists them otherwise.
+    std::string choiceValue(const std::string& name, const std::string& fallback,
+                            const std::vector<std::string>& choices) const;
     void set(const std::string& name, std::string value) { values_[name] = std::move(value); }
 
 private:

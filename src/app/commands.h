@@ -7,5 +7,8 @@ namespace wf {
 
 int runRenderCommand(const std::vector<std::string>& args);
 std::string renderHelp();
+// Only in builds with the viewer (WF_BUILD_VIEWER, defines WF_HAVE_VIEWER).
+int runViewCommand(const std::vector<std::string>& args);
+std::string viewHelp();
 
 } // namespace wf

@@ -15,7 +15,9 @@
 #include "render/scene_buffers.h"
 #include "render/wavefront_renderer.h"
 #include "scene/default_camera.h"
+#include "scene/environment_map.h"
 #include "scene/gltf_loader.h"
+#include "scene/scene_summary.h"
 
 namespace fs = std::filesystem;
 
@@ -36,12 +38,25 @@ const CommandSpec& renderSpec() {
             {"--height", "", "H", "image height (default: width / the camera's aspect ratio)"},
             {"--max-depth", "", "D", "path segments from the camera: 1 shows emitters only, 2 "
                                      "adds direct light (default 16)"},
-            {"--rr-depth", "", "N", "Russian roulette after N bounces (default 3)"},
+            {"--rr-depth", "", "N", "Russian roulette from bounce N on (default 3)"},
+            {"--light-sampling", "", "MODE", "bsdf (emission found by BSDF rays), nee (light "
+                                             "sampling only) or mis (default)"},
+            {"--triangle-sampling", "", "MODE", "area or solid-angle (spherical triangles; "
+                                                "default)"},
+            {"--sphere-sampling", "", "MODE", "area or solid-angle (the cone; default)"},
+            {"--min-throughput", "", "T", "end paths whose throughput falls below T (biased; "
+                                          "default 0: off)"},
+            {"--clamp", "", "X", "clamp each contribution to X per channel (biased; default "
+                                 "0: off)"},
             {"--seed", "", "S", "random seed; same seed, same image bit for bit (default 0)"},
             {"--json", "", "STATS.json", "write statistics: spp, seconds, paths/s, rays/s"},
             {"--device", "", "N", "Vulkan device index (default: WAVEFRONT_DEVICE, else the "
                                   "first GPU)"},
             {"--quiet", "-q", "", "no progress line on stderr"},
+            {"--camera", "", "NAME|INDEX", "render from the file's camera of this name or index "
+                                           "(default: the first)"},
+            {"--env", "", "FILE.exr", "equirectangular environment map, linear RGB, +Y up "
+                                      "(default: none; uniform white if nothing emits)"},
             {"--verbose", "-v", "", "print the scene summary, shader variant and GPU memory"},
         },
         "Environment:\n"
@@ -85,21 +100,19 @@ private:
 };
 
 void printVerbose(const PreparedScene& scene, const WavefrontRenderer& renderer,
-                  const Context& context) {
+                  const Context& context, const SceneSummary& summary) {
     std::fprintf(stderr, "wavefront: device %s (%s), subgroup size %u\n",
                  context.deviceName().c_str(), context.driverInfo().c_str(),
                  context.subgroupSize());
+    std::fprintf(stderr, "wavefront: scene: %s\n", describe(summary).c_str());
     std::fprintf(stderr,
                  "wavefront: %zu triangles, %zu materials, %zu emitters; BVH %u nodes, depth %u, "
                  "SAH cost %.2f, built in %.3f s\n",
                  scene.triangles.size(), scene.materials.size(), scene.lights.emitters.size(),
                  scene.bvhStats.nodeCount, scene.bvhStats.maxDepth, scene.bvhStats.sahCost,
                  scene.bvhStats.buildSeconds);
-    std::string variant;
-    for (const auto& [name, value] : renderer.shaderDefines())
-        variant += " " + name + "=" + value;
-    std::fprintf(stderr, "wavefront: shader variant:%s; %u samples per wave\n", variant.c_str(),
-                 renderer.samplesPerWave());
+    std::fprintf(stderr, "wavefront: shader variant: %s; %u samples per wave\n",
+                 renderer.variant().describe().c_str(), renderer.samplesPerWave());
     uint64_t total = 0;
     for (const auto& [name, bytes] : renderer.memoryReport()) {
         std::fprintf(stderr, "wavefront:   %-18s %10.2f KiB\n", name.c_str(), bytes / 1024.0);
@@ -136,11 +149,26 @@ int runRenderCommand(const std::vector<std::string>& args) {
     settings.maxDepth = parsed.uintValue("--max-depth", 16, 1, 1024);
     settings.rrDepth = parsed.uintValue("--rr-depth", 3, 0, 1024);
     settings.seed = parsed.uintValue("--seed", 0, 0, 0xffffffffu);
+    settings.lightSampling =
+        parseLightSampling(parsed.choiceValue("--light-sampling", "mis", {"bsdf", "nee", "mis"}));
+    settings.triangleSolidAngle = parsed.choiceValue("--triangle-sampling", "solid-angle",
+                                                     {"area", "solid-angle"}) == "solid-angle";
+    settings.sphereSolidAngle = parsed.choiceValue("--sphere-sampling", "solid-angle",
+                                                   {"area", "solid-angle"}) == "solid-angle";
+    settings.minThroughput = parsed.floatValue("--min-throughput", 0.0f, 0.0f, 1e30f);
+    settings.clampRadiance = parsed.floatValue("--clamp", 0.0f, 0.0f, 1e30f);
     const bool quiet = parsed.has("--quiet");
     const bool verbose = parsed.has("--verbose");
 
     const std::string scenePath = parsed.positional.front();
     Scene scene = loadGltf(scenePath);
+    if (auto name = parsed.value("--camera")) {
+        scene.camera = selectCamera(scene, *name, scenePath);
+        scene.hasCamera = true;
+    }
+    if (auto env = parsed.value("--env"))
+        scene.environment = loadEnvironmentExr(*env);
+    const SceneSummary summary = summarize(scene);
     if (!scene.hasCamera)
         scene.camera = frameBounds(scene);
     const float aspect = scene.camera.aspect > 0.0f ? scene.camera.aspect : 1.0f;
@@ -161,7 +189,7 @@ int runRenderCommand(const std::vector<std::string>& args) {
     PreparedScene prepared = prepareScene(std::move(scene));
     WavefrontRenderer renderer(context, prepared, settings, compiler);
     if (verbose)
-        printVerbose(prepared, renderer, context);
+        printVerbose(prepared, renderer, context, summary);
 
     ProgressLine progress(!quiet);
     renderer.render([&](const WaveProgress& wave) { progress.update(wave); });

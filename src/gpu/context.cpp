@@ -53,7 +53,10 @@ Context::Context(const ContextOptions& options) {
             index = static_cast<int>(value);
         }
     }
-    createInstance(options.validation || envFlag("WAVEFRONT_VALIDATION"));
+    createInstance(options.validation || envFlag("WAVEFRONT_VALIDATION"),
+                   options.instanceExtensions);
+    if (options.createSurface)
+        surface_ = options.createSurface(instance_);
     pickPhysicalDevice(index, options.quiet);
     createDevice();
 }
@@ -69,17 +72,19 @@ Context::~Context() {
             vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
         destroy(instance_, messenger_, nullptr);
     }
+    if (surface_)
+        vkDestroySurfaceKHR(instance_, surface_, nullptr);
     if (instance_)
         vkDestroyInstance(instance_, nullptr);
 }
 
-void Context::createInstance(bool validation) {
+void Context::createInstance(bool validation, const std::vector<const char*>& extraExtensions) {
     VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
     app.pApplicationName = "wavefront";
     app.apiVersion = VK_API_VERSION_1_2;
 
     std::vector<const char*> layers;
-    std::vector<const char*> extensions;
+    std::vector<const char*> extensions = extraExtensions;
     if (validation) {
         if (!hasLayer(kValidationLayer))
             throw InternalError("validation requested but VK_LAYER_KHRONOS_validation is not "
@@ -192,13 +197,16 @@ void Context::createDevice() {
     vkGetPhysicalDeviceQueueFamilyProperties(physicalDevice_, &familyCount, families.data());
     bool found = false;
     for (uint32_t i = 0; i < familyCount && !found; ++i) {
-        if ((families[i].queueFlags & VK_QUEUE_COMPUTE_BIT) && families[i].timestampValidBits) {
+        if ((families[i].queueFlags & VK_QUEUE_COMPUTE_BIT) && families[i].timestampValidBits &&
+            (!surface_ || canPresent(i, families[i]))) {
             queueFamily_ = i;
             found = true;
         }
     }
     if (!found)
-        throw InternalError(deviceName_ + " has no compute queue with timestamps");
+        throw InternalError(deviceName_ + (surface_ ? " has no queue family that computes, draws "
+                                                      "and presents to the window, with timestamps"
+                                                    : " has no compute queue with timestamps"));
 
     float priority = 1.0f;
     VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
@@ -206,9 +214,14 @@ void Context::createDevice() {
     queueInfo.queueCount = 1;
     queueInfo.pQueuePriorities = &priority;
 
+    const char* swapchainExtension = VK_KHR_SWAPCHAIN_EXTENSION_NAME;
     VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
     info.queueCreateInfoCount = 1;
     info.pQueueCreateInfos = &queueInfo;
+    if (surface_) {
+        info.enabledExtensionCount = 1;
+        info.ppEnabledExtensionNames = &swapchainExtension;
+    }
     VK_CHECK(vkCreateDevice(physicalDevice_, &info, nullptr, &device_));
     vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
 
@@ -216,6 +229,12 @@ void Context::createDevice() {
     poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
     poolInfo.queueFamilyIndex = queueFamily_;
     VK_CHECK(vkCreateCommandPool(device_, &poolInfo, nullptr, &commandPool_));
+}
+
+bool Context::canPresent(uint32_t family, const VkQueueFamilyProperties& properties) const {
+    VkBool32 supported = VK_FALSE;
+    VK_CHECK(vkGetPhysicalDeviceSurfaceSupportKHR(physicalDevice_, family, surface_, &supported));
+    return supported && (properties.queueFlags & VK_QUEUE_GRAPHICS_BIT);
 }
 
 uint32_t Context::findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags wanted) const {

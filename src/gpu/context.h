@@ -7,6 +7,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <vulkan/vulkan.h>
 
@@ -16,6 +17,12 @@ struct ContextOptions {
     std::optional<int> deviceIndex; // --device N; otherwise WAVEFRONT_DEVICE, else the best one
     bool validation = false;        // also switched on by WAVEFRONT_VALIDATION=1
     bool quiet = false;
+    // Presentation (the viewer; empty for headless use): the window system's instance
+    // extensions, and a callback that creates the window's surface once the instance exists.
+    // With it the context owns the surface, enables VK_KHR_swapchain and picks a queue family
+    // that computes, draws (blits and the overlay need graphics) and presents to the surface.
+    std::vector<const char*> instanceExtensions;
+    std::function<VkSurfaceKHR(VkInstance)> createSurface;
 };
 
 class Context {
@@ -25,6 +32,8 @@ public:
     Context(const Context&) = delete;
     Context& operator=(const Context&) = delete;
 
+    VkInstance instance() const { return instance_; }
+    VkSurfaceKHR surface() const { return surface_; } // VK_NULL_HANDLE when headless
     VkDevice device() const { return device_; }
     VkPhysicalDevice physicalDevice() const { return physicalDevice_; }
     VkQueue queue() const { return queue_; }
@@ -42,15 +51,17 @@ public:
     void submitAndWait(const std::function<void(VkCommandBuffer)>& record) const;
 
 private:
-    void createInstance(bool validation);
+    void createInstance(bool validation, const std::vector<const char*>& extraExtensions);
     void pickPhysicalDevice(std::optional<int> index, bool quiet);
     void createDevice();
+    bool canPresent(uint32_t family, const VkQueueFamilyProperties& properties) const;
     static VKAPI_ATTR VkBool32 VKAPI_CALL onDebugMessage(
         VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT types,
         const VkDebugUtilsMessengerCallbackDataEXT* data, void* self);
 
     VkInstance instance_ = VK_NULL_HANDLE;
     VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+    VkSurfaceKHR surface_ = VK_NULL_HANDLE;
     VkPhysicalDevice physicalDevice_ = VK_NULL_HANDLE;
     VkDevice device_ = VK_NULL_HANDLE;
     VkQueue queue_ = VK_NULL_HANDLE;

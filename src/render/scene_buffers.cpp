@@ -10,8 +10,16 @@ PreparedScene prepareScene(Scene scene) {
     prepared.materials = std::move(scene.materials);
     prepared.camera = scene.camera;
     prepared.hasCamera = scene.hasCamera;
+    prepared.punctualLights = std::move(scene.lights);
+    prepared.environment = std::move(scene.environment);
+    prepared.surface = std::move(scene.surface);
+    tagTriangles(prepared.triangles); // the per-triangle arrays follow the BVH's order
     prepared.bvhStats = buildBvh(prepared.triangles, prepared.nodes);
-    prepared.lights = buildLightTable(prepared.triangles, prepared.materials);
+    followTriangleOrder(prepared.triangles, prepared.surface);
+    prepared.bounds = sceneBounds(prepared.triangles, prepared.punctualLights);
+    prepared.lights = buildLightTable(prepared.triangles, prepared.materials,
+                                      prepared.punctualLights, prepared.environment,
+                                      prepared.bounds);
     return prepared;
 }
 
@@ -26,12 +34,26 @@ Buffer uploadTable(const Context& context, const char* name, const std::vector<T
 
 } // namespace
 
-SceneBuffers::SceneBuffers(const Context& context, const PreparedScene& scene)
+SceneBuffers::SceneBuffers(const Context& context, const PreparedScene& scene,
+                           const ShaderVariant& variant)
     : triangles_(uploadTable(context, "triangles", scene.triangles)),
       nodes_(uploadTable(context, "bvh nodes", scene.nodes)),
       materials_(uploadTable(context, "materials", scene.materials)) {
-    if (!scene.lights.emitters.empty())
+    if (variant.nextEventEstimation)
         emitters_ = uploadTable(context, "emitters", scene.lights.emitters);
+    if (variant.lightsBuffer())
+        lights_ = uploadTable(context, "lights", scene.punctualLights);
+    surface_ = SurfaceBuffers(context, scene.surface, variant.surface);
+    if (variant.environment) {
+        const Environment& env = scene.environment;
+        std::vector<glm::vec4> texels(size_t(env.width) * env.height);
+        for (size_t i = 0; i < texels.size(); ++i)
+            texels[i] = glm::vec4(env.rgb[3 * i], env.rgb[3 * i + 1], env.rgb[3 * i + 2], 0.0f);
+        environment_ = uploadTable(context, "environment", texels);
+        if (variant.nextEventEstimation)
+            environmentAlias_ =
+                uploadTable(context, "environment alias", scene.lights.environmentTexels);
+    }
 }
 
 void SceneBuffers::appendBindings(
@@ -41,13 +63,22 @@ void SceneBuffers::appendBindings(
     bindings.emplace_back(WF_BINDING_MATERIALS, &materials_);
     if (emitters_)
         bindings.emplace_back(WF_BINDING_EMITTERS, &emitters_);
+    if (lights_)
+        bindings.emplace_back(WF_BINDING_LIGHTS, &lights_);
+    if (environment_)
+        bindings.emplace_back(WF_BINDING_ENVIRONMENT, &environment_);
+    if (environmentAlias_)
+        bindings.emplace_back(WF_BINDING_ENVIRONMENT_ALIAS, &environmentAlias_);
+    surface_.appendBindings(bindings);
 }
 
 void SceneBuffers::appendMemoryReport(
     std::vector<std::pair<std::string, uint64_t>>& report) const {
-    for (const Buffer* buffer : {&triangles_, &nodes_, &materials_, &emitters_})
+    for (const Buffer* buffer : {&triangles_, &nodes_, &materials_, &emitters_, &lights_,
+                                 &environment_, &environmentAlias_})
         if (*buffer)
             report.emplace_back(buffer->name(), buffer->size());
+    surface_.appendMemoryReport(report);
 }
 
 } // namespace wf

@@ -7,6 +7,8 @@
 #include "gpu/buffer.h"
 #include "scene/bvh_builder.h"
 #include "scene/light_table.h"
+#include "render/shader_variant.h"
+#include "render/surface_buffers.h"
 #include "scene/scene.h"
 
 namespace wf {
@@ -19,6 +21,10 @@ struct PreparedScene {
     std::vector<BvhNode> nodes;
     std::vector<Material> materials;
     LightTable lights;
+    std::vector<PunctualLight> punctualLights; // spheres first, as the light table orders them
+    Environment environment;
+    SurfaceData surface; // per-triangle arrays in BVH order, textures
+    SceneBounds bounds;
     Camera camera;
     bool hasCamera = false;
     BvhBuildStats bvhStats;
@@ -28,9 +34,12 @@ PreparedScene prepareScene(Scene scene);
 
 class SceneBuffers {
 public:
-    SceneBuffers(const Context& context, const PreparedScene& scene);
+    SceneBuffers(const Context& context, const PreparedScene& scene,
+                 const ShaderVariant& variant);
 
     bool hasEmitters() const { return static_cast<bool>(emitters_); }
+    bool hasLights() const { return static_cast<bool>(lights_); }
+    bool hasEnvironment() const { return static_cast<bool>(environment_); }
     // (binding, buffer) pairs for the descriptor table.
     void appendBindings(std::vector<std::pair<uint32_t, const Buffer*>>& bindings) const;
     void appendMemoryReport(std::vector<std::pair<std::string, uint64_t>>& report) const;
@@ -40,6 +49,10 @@ private:
     Buffer nodes_;
     Buffer materials_;
     Buffer emitters_; // empty handle when the scene has no emitters
+    Buffer lights_;   // punctual and sphere lights, if any
+    Buffer environment_;
+    Buffer environmentAlias_;
+    SurfaceBuffers surface_; // normals, tangents, UVs, textures: what the scene uses
 };
 
 } // namespace wf

@@ -31,7 +31,7 @@ gpu_types::vec3 cameraRight(const Camera& camera) {
 WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene& scene,
                                      const RenderSettings& settings,
                                      const ShaderCompiler& compiler)
-    : context_(context), settings_(settings) {
+    : context_(context), settings_(settings), scene_(scene) {
     if (settings.width == 0 || settings.height == 0 || settings.samplesPerPixel == 0 ||
         settings.maxDepth == 0)
         throw UsageError("width, height, spp and max depth must all be at least 1");
@@ -46,13 +46,13 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
         static_cast<uint32_t>(std::min<uint64_t>(settings.maxPathsPerWave, maxPaths) / pixels), 1,
         settings.samplesPerPixel);
     pathCapacity_ = pixelCount_ * samplesPerWave_;
-    hasEmitters_ = !scene.lights.emitters.empty();
-
-    defines_ = {{"WF_WORKGROUP_SIZE", std::to_string(kWorkgroupSize)},
-                {"WF_HAS_EMITTERS", hasEmitters_ ? "1" : "0"}};
-    sceneBuffers_ = std::make_unique<SceneBuffers>(context, scene);
+    variant_ = chooseVariant(scene, settings);
+    variant_.surface = surfaceFeatures(scene.surface, scene.materials,
+                                       context.properties().limits.maxStorageBufferRange);
+    defines_ = variant_.defines();
+    sceneBuffers_ = std::make_unique<SceneBuffers>(context, scene, variant_);
     pathBuffers_ = std::make_unique<PathBuffers>(context, pathCapacity_, pixelCount_,
-                                                 hasEmitters_);
+                                                 variant_.nextEventEstimation);
     std::vector<std::pair<uint32_t, const Buffer*>> bindings;
     sceneBuffers_->appendBindings(bindings);
     pathBuffers_->appendBindings(bindings);
@@ -66,12 +66,11 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
     intersect_ = std::make_unique<IntersectPass>(resources);
     shade_ = std::make_unique<ShadePass>(resources);
     queue_ = std::make_unique<QueuePass>(resources);
-    if (hasEmitters_)
+    if (variant_.nextEventEstimation)
         shadow_ = std::make_unique<ShadowPass>(resources);
     accumulate_ = std::make_unique<AccumulatePass>(resources);
 
     camera_ = scene.camera;
-    emitterCount_ = static_cast<uint32_t>(scene.lights.emitters.size());
     uploadParams();
     reset();
 }
@@ -93,8 +92,16 @@ void WavefrontRenderer::uploadParams() {
     params.height = settings_.height;
     params.pixelCount = pixelCount_;
     params.rrDepth = settings_.rrDepth;
-    params.emitterCount = emitterCount_;
+    params.emitterCount = static_cast<uint32_t>(scene_.lights.emitters.size());
     params.pathCapacity = pathCapacity_;
+    params.sphereLightCount = scene_.lights.sphereLights;
+    params.environmentEmitter = scene_.lights.environmentEmitter;
+    params.sceneCenter = scene_.bounds.center;
+    params.sceneRadius = scene_.bounds.radius;
+    params.environmentWidth = scene_.environment.width;
+    params.environmentHeight = scene_.environment.height;
+    params.minThroughput = settings_.minThroughput;
+    params.clampRadiance = settings_.clampRadiance;
     pathBuffers_->params.upload(&params, sizeof params);
 }
 

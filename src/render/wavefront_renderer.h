@@ -13,6 +13,7 @@
 #include <vulkan/vulkan.h>
 
 #include "gpu/shader_compiler.h"
+#include "render/shader_variant.h"
 #include "scene/scene.h"
 
 namespace wf {
@@ -39,6 +40,11 @@ struct RenderSettings {
     uint32_t rrDepth = 3;
     uint32_t seed = 0;
     uint32_t maxPathsPerWave = 1u << 20; // bounds buffer sizes and the length of one submit
+    LightSampling lightSampling = LightSampling::Mis;
+    bool triangleSolidAngle = true; // --triangle-sampling solid-angle (else area)
+    bool sphereSolidAngle = true;   // --sphere-sampling solid-angle (else area)
+    float minThroughput = 0.0f;     // --min-throughput: biased termination, 0 = off
+    float clampRadiance = 0.0f;     // --clamp: biased firefly clamp, 0 = off
 };
 
 struct RenderStats {
@@ -83,6 +89,7 @@ public:
     std::vector<float> readImage() const;
     const RenderStats& stats() const { return stats_; }
     const ShaderDefines& shaderDefines() const { return defines_; }
+    const ShaderVariant& variant() const { return variant_; }
     uint32_t samplesPerWave() const { return samplesPerWave_; }
     std::vector<std::pair<std::string, uint64_t>> memoryReport() const;
 
@@ -96,8 +103,8 @@ private:
     uint32_t pixelCount_;
     uint32_t samplesPerWave_;
     uint32_t pathCapacity_;
-    bool hasEmitters_;
-    uint32_t emitterCount_ = 0;
+    ShaderVariant variant_;
+    const PreparedScene& scene_;
     uint32_t samplesDone_ = 0;
     Camera camera_;
     ShaderDefines defines_;

@@ -67,10 +67,16 @@ std::string expandFilePath(const std::string& path, void*) {
 
 bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path,
                    void* userData) {
-    std::optional<fs::path> resolved = resolveInFolder(*static_cast<FsPolicy*>(userData), path);
+    FsPolicy& policy = *static_cast<FsPolicy*>(userData);
+    std::optional<fs::path> resolved = resolveInFolder(policy, path);
     std::string why = "outside the scene's folder";
     if (resolved && readLimited(*resolved, *out, why)) {
-        return true;
+        policy.bytesRead += out->size();
+        if (policy.bytesRead <= MAX_TOTAL_BYTES) {
+            return true;
+        }
+        out->clear();
+        why = "the scene's files together exceed 2 GiB";
     }
     *err += why;
     return false;
@@ -81,10 +87,16 @@ bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigne
     return false;
 }
 
-// Textures are not used yet: accepting every image undecoded keeps stb_image (and the
-// unchecked image bufferView offsets tinygltf hands it) away from untrusted bytes.
-bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int,
-               const unsigned char*, int, void*) {
+// Keeps the bytes of URI images for gltf_images, which checks and decodes them. For an image
+// in a bufferView, tinygltf passes a pointer it never range-checked: it is not touched here,
+// and gltf_images reads the bufferView itself after checking it.
+bool keepImage(tinygltf::Image* image, const int index, std::string*, std::string*, int, int,
+               const unsigned char* bytes, int size, void* userData) {
+    if (image->bufferView != -1 || size <= 0) {
+        return true;
+    }
+    auto& images = static_cast<FsPolicy*>(userData)->images;
+    images[index].assign(bytes, bytes + size);
     return true;
 }
 
@@ -112,7 +124,7 @@ bool readLimited(const fs::path& path, std::vector<unsigned char>& out, std::str
 
 void restrictFileAccess(tinygltf::TinyGLTF& gltf, FsPolicy& policy) {
     gltf.SetFsCallbacks({&fileExists, &expandFilePath, &readWholeFile, &refuseWrite, &policy});
-    gltf.SetImageLoader(&skipImage, nullptr);
+    gltf.SetImageLoader(&keepImage, &policy);
 }
 
 bool nestedTooDeep(const unsigned char* text, size_t length) {

@@ -1,7 +1,8 @@
-// glTF model to Scene: walks the default scene's node tree, converts materials and the first
-// perspective camera, and flattens triangle primitives into world space. tinygltf parses the
-// JSON through the hooks in gltf_file_access; nothing in the parsed model is trusted, and the
-// accessor bounds checks live in gltf_accessors (tinygltf 2.7.0 checks few of them).
+// glTF model to Scene: walks the default scene's node tree (gltf_primitives flattens meshes,
+// gltf_lights_cameras reads cameras and lights), converts materials (gltf_materials) and
+// decodes the images they use (gltf_images). tinygltf parses the JSON through the hooks in
+// gltf_file_access; nothing in the parsed model is trusted, and the accessor bounds checks live
+// in gltf_accessors (tinygltf 2.7.0 checks few of them).
 #include "scene/gltf_loader.h"
 
 #include <tiny_gltf.h>
@@ -18,15 +19,15 @@
 #include "errors.h"
 #include "scene/gltf_accessors.h"
 #include "scene/gltf_file_access.h"
+#include "scene/gltf_images.h"
+#include "scene/gltf_lights_cameras.h"
+#include "scene/gltf_materials.h"
+#include "scene/gltf_primitives.h"
 
 namespace wf {
 namespace {
 
 namespace fs = std::filesystem;
-
-// Far above what the GPU buffers hold; it only stops a small file that instances a big mesh
-// from thousands of nodes from exhausting memory here.
-constexpr size_t MAX_TRIANGLES = size_t(1) << 26;
 
 // tinygltf's messages become one line; they may quote a whole data: URI, so long ones are
 // cut to keep the error readable.
@@ -79,17 +80,10 @@ glm::dmat4 rotationMatrix(double x, double y, double z, double w) {
     return m;
 }
 
-// The GPU normalizes cross(p1 - p0, p2 - p0) in float; a triangle whose float cross product
-// has no normal-range length would give it a NaN normal, so such triangles count as zero area.
-bool isDegenerate(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
-    const glm::vec3 n = glm::cross(b - a, c - a);
-    return !(glm::dot(n, n) >= std::numeric_limits<float>::min());
-}
-
 class Converter {
 public:
-    Converter(const tinygltf::Model& model, const std::string& file)
-        : model_(model), file_(file), reader_(model, file) {}
+    Converter(const tinygltf::Model& model, const std::string& file, gltf::FsPolicy& policy)
+        : model_(model), file_(file), policy_(policy) {}
     Scene run();
 
 private:
@@ -97,53 +91,32 @@ private:
     void checkIndex(int index, size_t size, const std::string& what, const std::string& by) const {
         gltf::checkIndex(file_, index, size, what, by);
     }
-    void convertMaterials();
+    void checkExtensions() const;
     void checkNodeTree();
     std::vector<int> rootNodes() const;
     glm::dmat4 localTransform(int nodeIndex) const;
-    void addCamera(int nodeIndex, const glm::dmat4& world);
-    void addPrimitive(const tinygltf::Primitive& primitive, const std::string& where,
-                      const glm::dmat4& world);
+    void walkNodes(gltf::PrimitiveBuilder& builder);
+    void addDefaultEnvironment();
+
     const tinygltf::Model& model_;
     const std::string& file_;
+    gltf::FsPolicy& policy_;
     Scene scene_;
     std::vector<int> parent_;
-    gltf::AccessorReader reader_;
-    std::optional<uint32_t> defaultMaterial_;
-    size_t skippedPrimitives_ = 0;
-    size_t degenerateTriangles_ = 0;
 };
 
-void Converter::convertMaterials() {
-    for (size_t i = 0; i < model_.materials.size(); ++i) {
-        const tinygltf::Material& m = model_.materials[i];
-        const std::string name = "material " + std::to_string(i);
-        const std::vector<double>& base = m.pbrMetallicRoughness.baseColorFactor;
-        const std::vector<double>& emissive = m.emissiveFactor;
-        if (base.size() != 4 || emissive.size() != 3) {
-            fail(name + ": baseColorFactor needs 4 numbers and emissiveFactor 3");
+// Unknown extensions: one warning each, refused when required (the file says it cannot be
+// drawn correctly without them).
+void Converter::checkExtensions() const {
+    for (const std::string& ext : model_.extensionsRequired) {
+        if (!gltf::isSupportedExtension(ext)) {
+            fail("requires glTF extension " + ext + ", which is not supported");
         }
-        double strength = 1.0;
-        auto ext = m.extensions.find("KHR_materials_emissive_strength");
-        if (ext != m.extensions.end() && ext->second.Has("emissiveStrength")) {
-            const tinygltf::Value& value = ext->second.Get("emissiveStrength");
-            strength = value.IsNumber() ? value.GetNumberAsDouble() : -1.0;
+    }
+    for (const std::string& ext : model_.extensionsUsed) {
+        if (!gltf::isSupportedExtension(ext)) {
+            gltf::warn(file_, "ignoring glTF extension " + ext + " (not supported)");
         }
-        Material out{};
-        for (int c = 0; c < 4; ++c) {
-            if (!(base[c] >= 0.0 && base[c] <= 1.0)) { // albedo > 1 would create energy
-                fail(name + ": baseColorFactor must lie in [0, 1]");
-            }
-            out.baseColor[c] = float(base[c]);
-        }
-        for (int c = 0; c < 3; ++c) {
-            out.emission[c] = float(emissive[c] * strength);
-            if (!(emissive[c] >= 0.0 && strength >= 0.0 && std::isfinite(out.emission[c]))) {
-                fail(name + ": emissiveFactor and emissiveStrength must be finite and >= 0");
-            }
-        }
-        out.flags = m.doubleSided ? WF_MATERIAL_DOUBLE_SIDED : 0u;
-        scene_.materials.push_back(out);
     }
 }
 
@@ -246,101 +219,9 @@ glm::dmat4 Converter::localTransform(int nodeIndex) const {
     return m;
 }
 
-void Converter::addCamera(int nodeIndex, const glm::dmat4& world) {
-    const tinygltf::Node& node = model_.nodes[nodeIndex];
-    const std::string name = "node " + std::to_string(nodeIndex);
-    checkIndex(node.camera, model_.cameras.size(), "camera", name);
-    const tinygltf::Camera& camera = model_.cameras[node.camera];
-    if (scene_.hasCamera || camera.type != "perspective") {
-        return;
-    }
-    const double yfov = camera.perspective.yfov;
-    const double aspect = camera.perspective.aspectRatio;
-    if (!(yfov > 0.0 && yfov < M_PI) || !(aspect >= 0.0 && std::isfinite(aspect))) {
-        fail("camera " + std::to_string(node.camera) + ": yfov must lie in (0, pi) and " +
-             "aspectRatio be positive");
-    }
-    // glTF cameras look down -Z with +Y up; Gram-Schmidt removes any shear from scaling.
-    const glm::dvec3 forward = glm::normalize(-glm::dvec3(world[2]));
-    const glm::dvec3 upRaw = glm::dvec3(world[1]);
-    const glm::dvec3 up = glm::normalize(upRaw - glm::dot(upRaw, forward) * forward);
-    if (!std::isfinite(forward.x + forward.y + forward.z + up.x + up.y + up.z)) {
-        fail(name + ": the camera's transform is degenerate");
-    }
-    scene_.camera.position = glm::vec3(world[3]);
-    scene_.camera.forward = glm::vec3(forward);
-    scene_.camera.up = glm::vec3(up);
-    scene_.camera.yfov = float(yfov);
-    scene_.camera.aspect = float(aspect);
-    scene_.hasCamera = true;
-}
-
-void Converter::addPrimitive(const tinygltf::Primitive& primitive, const std::string& where,
-                             const glm::dmat4& world) {
-    if (primitive.mode != TINYGLTF_MODE_TRIANGLES) {
-        ++skippedPrimitives_;
-        return;
-    }
-    auto position = primitive.attributes.find("POSITION");
-    if (position == primitive.attributes.end()) {
-        fail(where + " has no POSITION attribute");
-    }
-    const std::vector<glm::vec3>& points = reader_.positions(position->second, where);
-    uint32_t material = 0;
-    if (primitive.material == -1) {
-        if (!defaultMaterial_) {
-            defaultMaterial_ = uint32_t(model_.materials.size());
-        }
-        material = *defaultMaterial_;
-    } else {
-        checkIndex(primitive.material, model_.materials.size(), "material", where);
-        material = uint32_t(primitive.material);
-    }
-    const bool indexed = primitive.indices != -1;
-    const std::vector<uint32_t> order =
-        indexed ? reader_.indices(primitive.indices, points.size(), where)
-                : std::vector<uint32_t>{};
-    const size_t count = indexed ? order.size() : points.size();
-    if (count % 3 != 0) {
-        fail(where + ": " + std::to_string(count) + " vertices do not make whole triangles");
-    }
-    // A mirroring transform turns counter-clockwise into clockwise; swapping two vertices
-    // keeps the front face where the file meant it.
-    const bool mirrored = glm::determinant(glm::dmat3(world)) < 0.0;
-    auto vertex = [&](size_t i) {
-        const glm::dvec4 p = world * glm::dvec4(points[indexed ? order[i] : i], 1.0);
-        const glm::vec3 v(p);
-        if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) {
-            fail(where + ": a vertex is not finite after the node transforms");
-        }
-        return v;
-    };
-    for (size_t i = 0; i < count; i += 3) {
-        glm::vec3 a = vertex(i), b = vertex(i + 1), c = vertex(i + 2);
-        if (mirrored) {
-            std::swap(b, c);
-        }
-        if (isDegenerate(a, b, c)) {
-            ++degenerateTriangles_;
-            continue;
-        }
-        if (scene_.triangles.size() >= MAX_TRIANGLES) {
-            fail("more than " + std::to_string(MAX_TRIANGLES) + " triangles");
-        }
-        scene_.triangles.push_back(Triangle{a, material, b, WF_NO_EMITTER, c, 0u});
-    }
-}
-
-Scene Converter::run() {
-    for (const std::string& ext : model_.extensionsRequired) {
-        if (ext != "KHR_materials_emissive_strength") {
-            fail("requires glTF extension " + ext + ", which is not supported");
-        }
-    }
-    convertMaterials();
-    checkNodeTree();
-    // Depth-first, children in file order, without recursion so deep trees cannot overflow
-    // the stack; checkNodeTree guarantees each node is reached at most once from the roots.
+// Depth-first, children in file order, without recursion so deep trees cannot overflow the
+// stack; checkNodeTree guarantees each node is reached at most once from the roots.
+void Converter::walkNodes(gltf::PrimitiveBuilder& builder) {
     std::vector<std::pair<int, glm::dmat4>> stack;
     const std::vector<int> roots = rootNodes();
     std::vector<bool> visited(model_.nodes.size(), false);
@@ -358,32 +239,63 @@ Scene Converter::run() {
         const tinygltf::Node& node = model_.nodes[index];
         const std::string name = "node " + std::to_string(index);
         if (node.camera != -1) {
-            addCamera(index, world);
+            gltf::addNodeCamera(model_, file_, index, world, scene_);
         }
+        gltf::addNodeLight(model_, file_, index, world, scene_);
         if (node.mesh != -1) {
             checkIndex(node.mesh, model_.meshes.size(), "mesh", name);
             const auto& primitives = model_.meshes[node.mesh].primitives;
             for (size_t p = 0; p < primitives.size(); ++p) {
-                addPrimitive(primitives[p], "mesh " + std::to_string(node.mesh) + " primitive " +
-                             std::to_string(p), world);
+                builder.add(primitives[p], "mesh " + std::to_string(node.mesh) + " primitive " +
+                            std::to_string(p), world);
             }
         }
         for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) {
             stack.emplace_back(*child, world);
         }
     }
-    if (defaultMaterial_ || scene_.materials.empty()) {
-        const Material grey{glm::vec4(0.8f, 0.8f, 0.8f, 1.0f), glm::vec3(0.0f), 0u};
-        scene_.materials.push_back(grey);
+}
+
+// "A scene without any light gets a uniform white environment": no emissive triangle and no
+// punctual light means the file relies on the viewer's lighting, so give it the furnace sky.
+void Converter::addDefaultEnvironment() {
+    for (const Triangle& t : scene_.triangles) {
+        const glm::vec3 e = scene_.materials[t.material].emission;
+        if (e.x > 0.0f || e.y > 0.0f || e.z > 0.0f) {
+            return;
+        }
     }
-    if (skippedPrimitives_ > 0) {
-        std::cerr << "warning: " << file_ << ": skipped " << skippedPrimitives_
-                  << " primitives that are not triangle lists (mode 4)\n";
+    if (scene_.lights.empty()) {
+        scene_.environment.width = scene_.environment.height = 1;
+        scene_.environment.rgb = {1.0f, 1.0f, 1.0f};
     }
-    if (degenerateTriangles_ > 0) {
-        std::cerr << "note: " << file_ << ": dropped " << degenerateTriangles_
-                  << " degenerate triangles\n";
+}
+
+Scene Converter::run() {
+    checkExtensions();
+    gltf::MaterialTables tables = gltf::convertMaterials(model_, file_);
+    checkNodeTree();
+    const uint32_t defaultIndex = uint32_t(tables.materials.size());
+    gltf::PrimitiveBuilder builder(model_, file_, tables, defaultIndex);
+    walkNodes(builder);
+    builder.finish(scene_);
+    gltf::loadImages(model_, file_, policy_.images, tables, scene_.surface);
+    scene_.materials = std::move(tables.materials);
+    if (builder.usedDefaultMaterial() || scene_.materials.empty()) {
+        scene_.materials.push_back(gltf::defaultMaterial());
     }
+    // Images no triangle samples are not kept: a scene whose textured primitives are all
+    // skipped has no texture code (the UV arrays are already empty then).
+    if (scene_.surface.uv0.empty() && scene_.surface.uv1.empty()) {
+        scene_.surface.textureRefs.clear();
+        scene_.surface.refImage.clear();
+        scene_.surface.images.clear();
+        for (Material& m : scene_.materials) {
+            m.baseColorTexture = m.metallicRoughnessTexture = m.normalTexture =
+                m.emissiveTexture = m.transmissionTexture = WF_NO_TEXTURE;
+        }
+    }
+    addDefaultEnvironment();
     return std::move(scene_);
 }
 
@@ -454,7 +366,7 @@ Scene loadGltf(const std::string& path) {
     if (!messages.empty()) {
         std::cerr << "warning: " << path << ": " << messages << "\n";
     }
-    return Converter(model, path).run();
+    return Converter(model, path, policy).run();
 }
 
 } // namespace wf

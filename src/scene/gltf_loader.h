@@ -1,5 +1,6 @@
 // glTF 2.0 (.gltf or .glb) to the renderer's flat scene: world-space triangles of the default
-// scene's node tree, Lambert materials and the first perspective camera.
+// scene's node tree with the vertex attributes and textures their materials use, metallic-
+// roughness materials, every perspective camera and KHR_lights_punctual light.
 #pragma once
 #include <string>
 
@@ -7,12 +8,14 @@
 
 namespace wf {
 
-// Loads triangle-list primitives (other modes are skipped with one warning on stderr) with
-// float VEC3 POSITION and u8/u16/u32 or no indices. Front faces are counter-clockwise in world
-// space: a node whose world matrix mirrors space has its triangles' winding swapped back.
-// Degenerate triangles (zero area in float after the transform) are dropped.
+// Loads triangle lists, strips and fans (points and lines are skipped with one warning on
+// stderr), indexed or not, dense or sparse accessors, float or (KHR_mesh_quantization)
+// integer attributes. Front faces are counter-clockwise in world space: a node whose world
+// matrix mirrors space has its triangles' winding swapped back. Degenerate triangles (zero
+// area in float after the transform) are dropped. A scene with no emissive triangle and no
+// light gets a 1x1 white environment.
 // Only regular files inside the scene file's folder are read (no "..", no absolute URIs, at
-// most 1 GiB each); images are not decoded.
+// most 1 GiB each); PNG and JPEG images are decoded with their sizes checked first.
 // Throws InputError("<path>: <problem>", one line) for unreadable, malformed or unsupported
 // input: every index, offset, stride and count is checked before use.
 Scene loadGltf(const std::string& path);

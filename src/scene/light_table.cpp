@@ -1,6 +1,8 @@
 #include "scene/light_table.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace wf {
 
@@ -44,30 +46,113 @@ std::vector<Emitter> buildAliasTable(const std::vector<double>& weights) {
     return table;
 }
 
-LightTable buildLightTable(std::vector<Triangle>& triangles,
-                           const std::vector<Material>& materials) {
+namespace {
+
+double mean(glm::vec3 v) { return (double(v.x) + v.y + v.z) / 3.0; }
+
+double lightPower(const PunctualLight& light, const SceneBounds& bounds) {
+    switch (light.type) {
+    case WF_LIGHT_SPOT:
+        return 2.0 * M_PI * (1.0 - 0.5 * (light.cosInner + light.cosOuter)) * mean(light.intensity);
+    case WF_LIGHT_DIRECTIONAL:
+        return M_PI * double(bounds.radius) * bounds.radius * mean(light.intensity);
+    default: // point and sphere lights of the same intensity carry the same power
+        return 4.0 * M_PI * mean(light.intensity);
+    }
+}
+
+} // namespace
+
+SceneBounds sceneBounds(const std::vector<Triangle>& triangles,
+                        const std::vector<PunctualLight>& lights) {
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    auto grow = [&](glm::vec3 p, float r) {
+        lo = glm::min(lo, p - glm::vec3(r));
+        hi = glm::max(hi, p + glm::vec3(r));
+    };
+    for (const Triangle& tri : triangles)
+        for (const glm::vec3& p : {tri.p0, tri.p1, tri.p2})
+            grow(p, 0.0f);
+    for (const PunctualLight& light : lights)
+        if (light.type != WF_LIGHT_DIRECTIONAL)
+            grow(light.position, light.type == WF_LIGHT_SPHERE ? light.radius : 0.0f);
+    SceneBounds bounds;
+    if (lo.x > hi.x)
+        return bounds;
+    bounds.center = 0.5f * (lo + hi);
+    bounds.radius = std::max(0.5f * glm::length(hi - lo), 1e-6f);
+    return bounds;
+}
+
+LightTable buildLightTable(std::vector<Triangle>& triangles, const std::vector<Material>& materials,
+                           std::vector<PunctualLight>& lights, const Environment& environment,
+                           const SceneBounds& bounds) {
     std::vector<double> powers;
-    std::vector<uint32_t> emissive;
+    std::vector<uint32_t> sources;
+    LightTable table;
     for (uint32_t i = 0; i < triangles.size(); ++i) {
         Triangle& tri = triangles[i];
         tri.emitter = WF_NO_EMITTER;
         const Material& material = materials[tri.material];
-        glm::dvec3 e(material.emission);
-        double meanRadiance = (e.x + e.y + e.z) / 3.0;
         double area = 0.5 * glm::length(glm::cross(glm::dvec3(tri.p1) - glm::dvec3(tri.p0),
                                                    glm::dvec3(tri.p2) - glm::dvec3(tri.p0)));
         double sides = (material.flags & WF_MATERIAL_DOUBLE_SIDED) ? 2.0 : 1.0;
-        double power = meanRadiance * area * M_PI * sides;
+        double power = mean(material.emission) * area * M_PI * sides;
         if (!(power > 0.0) || !std::isfinite(power))
             continue; // zero-area or non-emitting: never sampled, still hit by BSDF rays
-        emissive.push_back(i);
+        tri.emitter = static_cast<uint32_t>(sources.size());
+        sources.push_back(WF_EMITTER_TRIANGLE | i);
         powers.push_back(power);
+        ++table.triangleEmitters;
     }
-    LightTable table;
+
+    std::stable_partition(lights.begin(), lights.end(), [](const PunctualLight& light) {
+        return light.type == WF_LIGHT_SPHERE;
+    });
+    for (uint32_t i = 0; i < lights.size(); ++i) {
+        PunctualLight& light = lights[i];
+        light.emitter = WF_NO_EMITTER;
+        if (light.type == WF_LIGHT_SPHERE)
+            ++table.sphereLights;
+        double power = lightPower(light, bounds);
+        if (!(power > 0.0) || !std::isfinite(power))
+            continue;
+        light.emitter = static_cast<uint32_t>(sources.size());
+        sources.push_back(WF_EMITTER_LIGHT | i);
+        powers.push_back(power);
+        if (light.type != WF_LIGHT_SPHERE)
+            ++table.deltaLights;
+    }
+
+    if (environment.present()) {
+        std::vector<double> texelWeights(size_t(environment.width) * environment.height);
+        double radianceSum = 0.0, solidAngleSum = 0.0;
+        for (uint32_t y = 0; y < environment.height; ++y) {
+            double sinTheta = std::sin(M_PI * (y + 0.5) / environment.height);
+            for (uint32_t x = 0; x < environment.width; ++x) {
+                size_t i = size_t(y) * environment.width + x;
+                const float* rgb = &environment.rgb[3 * i];
+                double luminance = (double(rgb[0]) + rgb[1] + rgb[2]) / 3.0;
+                texelWeights[i] = luminance * sinTheta;
+                radianceSum += luminance * sinTheta;
+                solidAngleSum += sinTheta;
+            }
+        }
+        table.environmentTexels = buildAliasTable(texelWeights);
+        // Power the environment sends into the scene's bounding sphere: mean radiance over
+        // the sphere of directions, times 4 pi sr, times the disc it crosses.
+        double power = radianceSum / solidAngleSum * 4.0 * M_PI * M_PI * double(bounds.radius) *
+                       bounds.radius;
+        if (power > 0.0 && std::isfinite(power) && !table.environmentTexels.empty()) {
+            table.environmentEmitter = static_cast<uint32_t>(sources.size());
+            sources.push_back(WF_EMITTER_ENVIRONMENT);
+            powers.push_back(power);
+        }
+    }
+
     table.emitters = buildAliasTable(powers);
     for (size_t k = 0; k < table.emitters.size(); ++k) {
-        table.emitters[k].triangle = emissive[k];
-        triangles[emissive[k]].emitter = static_cast<uint32_t>(k);
+        table.emitters[k].source = sources[k];
         table.totalPower += powers[k];
     }
     return table;

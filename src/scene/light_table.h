@@ -1,6 +1,7 @@
-// The emitter table for next-event estimation: every emissive triangle of positive area and
-// finite emission, chosen with probability proportional to its power through a Walker alias
-// table (O(1) per sample). Run after the BVH builder has reordered the triangles.
+// The light table for next-event estimation: every light of the scene (emissive triangles of
+// positive area, KHR_lights_punctual and sphere lights, the environment) in one Walker alias
+// table, chosen with probability proportional to an estimate of its power (O(1) per sample).
+// Run after the BVH builder has reordered the triangles.
 #pragma once
 #include <vector>
 
@@ -10,15 +11,32 @@ namespace wf {
 
 struct LightTable {
     std::vector<Emitter> emitters;
-    double totalPower = 0.0; // sum of (mean emitted radiance x area x pi x sides)
+    // Alias table over the environment's texels, weighted by luminance x sin(theta), so that
+    // directions are drawn in proportion to the light they bring.
+    std::vector<Emitter> environmentTexels;
+    uint32_t environmentEmitter = WF_NO_EMITTER;
+    uint32_t triangleEmitters = 0;
+    uint32_t sphereLights = 0; // lights[0, sphereLights) are spheres, the rest Dirac lights
+    uint32_t deltaLights = 0;
+    double totalPower = 0.0;
 };
 
-// Fills in each triangle's `emitter` field (WF_NO_EMITTER for non-emitters).
-LightTable buildLightTable(std::vector<Triangle>& triangles,
-                           const std::vector<Material>& materials);
+struct SceneBounds {
+    glm::vec3 center{0.0f};
+    float radius = 0.0f; // bounding-sphere radius of the triangles and the finite lights
+};
+
+SceneBounds sceneBounds(const std::vector<Triangle>& triangles,
+                        const std::vector<PunctualLight>& lights);
+
+// Fills in each triangle's `emitter` field (WF_NO_EMITTER for non-emitters), sorts `lights` so
+// that sphere lights come first, and sets each light's `emitter`.
+LightTable buildLightTable(std::vector<Triangle>& triangles, const std::vector<Material>& materials,
+                           std::vector<PunctualLight>& lights, const Environment& environment,
+                           const SceneBounds& bounds);
 
 // Walker/Vose alias table over non-negative weights with a positive sum: pmf, threshold and
-// alias per slot (Emitter.triangle is left for the caller).
+// alias per slot (Emitter.source is left for the caller).
 std::vector<Emitter> buildAliasTable(const std::vector<double>& weights);
 
 } // namespace wf

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/surface_data.h"
 #include "shaders/shared/light_types.h"
 #include "shaders/shared/scene_types.h"
 
@@ -42,6 +43,7 @@ struct Scene {
     std::vector<std::string> cameraNames;
     std::vector<PunctualLight> lights; // KHR_lights_punctual (and sphere lights)
     Environment environment;         // --env, or uniform white when the scene has no light
+    SurfaceData surface;             // vertex attributes and textures, only what is used
 };
 
 } // namespace wf

@@ -18,6 +18,16 @@ std::string formatVec(const glm::vec3& v) {
     return text;
 }
 
+// "2 point, 1 spot" from (count, name) pairs, skipping zeros; `none` if all are zero.
+std::string listCounts(std::initializer_list<std::pair<size_t, const char*>> items,
+                       const char* none) {
+    std::string text;
+    for (const auto& [count, name] : items)
+        if (count > 0)
+            text += (text.empty() ? "" : ", ") + std::to_string(count) + " " + name;
+    return text.empty() ? none : text;
+}
+
 } // namespace
 
 SceneSummary summarize(const Scene& scene) {
@@ -37,6 +47,27 @@ SceneSummary summarize(const Scene& scene) {
         summary.boundsHi = i == 0 ? hi : glm::max(summary.boundsHi, hi);
     }
     summary.hasEmitters = summary.emissiveTriangleCount > 0;
+    for (const PunctualLight& light : scene.lights) {
+        summary.pointLights += light.type == WF_LIGHT_POINT;
+        summary.spotLights += light.type == WF_LIGHT_SPOT;
+        summary.directionalLights += light.type == WF_LIGHT_DIRECTIONAL;
+        summary.sphereLights += light.type == WF_LIGHT_SPHERE;
+    }
+    summary.cameraCount = scene.cameras.size();
+    summary.environmentWidth = scene.environment.width;
+    summary.environmentHeight = scene.environment.height;
+    const SurfaceData& s = scene.surface;
+    const bool textured = !s.uv0.empty() || !s.uv1.empty();
+    summary.imageCount = textured ? s.images.size() : 0;
+    summary.texelBytes = textured ? s.texelBytes() : 0;
+    summary.smoothNormals = !s.normals.empty();
+    summary.texcoord1 = !s.uv1.empty();
+    summary.normalMaps = !s.tangents.empty();
+    for (const Material& m : scene.materials) {
+        summary.alphaMaskMaterials += (m.flags & WF_MATERIAL_ALPHA_MASK) != 0;
+        summary.alphaBlendMaterials += (m.flags & WF_MATERIAL_ALPHA_BLEND) != 0;
+        summary.transmissiveMaterials += m.transmission > 0.0f;
+    }
     return summary;
 }
 
@@ -47,12 +78,43 @@ std::string describe(const SceneSummary& summary) {
     if (summary.triangleCount > 0) {
         text += "; bounds " + formatVec(summary.boundsLo) + " to " + formatVec(summary.boundsHi);
     }
+    text += "; lights: " + listCounts({{summary.pointLights, "point"},
+                                       {summary.spotLights, "spot"},
+                                       {summary.directionalLights, "directional"},
+                                       {summary.sphereLights, "sphere"}},
+                                      "none");
+    text += "; environment: ";
+    if (summary.environmentWidth == 0) {
+        text += "none";
+    } else if (summary.environmentWidth == 1 && summary.environmentHeight == 1) {
+        text += "uniform";
+    } else {
+        text += std::to_string(summary.environmentWidth) + "x" +
+                std::to_string(summary.environmentHeight) + " map";
+    }
+    text += "; cameras: " + std::to_string(summary.cameraCount);
+    char texels[64];
+    std::snprintf(texels, sizeof texels, " (%.1f MiB of texels)",
+                  double(summary.texelBytes) / (1024.0 * 1024.0));
+    text += "; textures: " + (summary.imageCount ? std::to_string(summary.imageCount) +
+                                                       " images" + texels
+                                                 : std::string("none"));
+    text += "; vertex data: " +
+            listCounts({{summary.smoothNormals ? 1u : 0u, "smooth normals"},
+                        {summary.imageCount ? 1u : 0u, summary.texcoord1 ? "2 UV sets" : "UVs"},
+                        {summary.normalMaps ? 1u : 0u, "tangents"}},
+                       "positions only");
+    text += "; materials with " + listCounts({{summary.alphaMaskMaterials, "alpha mask"},
+                                              {summary.alphaBlendMaterials, "alpha blend"},
+                                              {summary.transmissiveMaterials, "transmission"}},
+                                             "no alpha or transmission");
     text += ".";
+    const size_t lights = summary.pointLights + summary.spotLights + summary.directionalLights +
+                          summary.sphereLights;
     if (summary.triangleCount == 0) {
-        text += " The scene has no triangles: the image will be black.";
-    } else if (!summary.hasEmitters) {
-        text += " No material emits light (emissiveFactor is zero everywhere): the image will"
-                " be black.";
+        text += " The scene has no triangles.";
+    } else if (!summary.hasEmitters && lights == 0 && summary.environmentWidth == 0) {
+        text += " Nothing emits light: the image will be black.";
     }
     return text;
 }

@@ -1,7 +1,10 @@
-// A few numbers about a loaded scene, for the log and for catching an unlit or empty scene
-// before spending GPU time on it.
+// What a loaded scene contains and which features it uses, for --verbose and for catching an
+// unlit or empty scene before spending GPU time on it. The shader variant is chosen from the
+// same data (src/render/shader_variant.cpp, surface_buffers.cpp), so what this prints is what
+// the GPU gets.
 #pragma once
 #include <cstddef>
+#include <cstdint>
 #include <string>
 
 #include "scene/scene.h"
@@ -15,12 +18,24 @@ struct SceneSummary {
     bool hasEmitters = false;
     glm::vec3 boundsLo{0.0f}; // world-space bounds of all vertices; both 0 if no triangles
     glm::vec3 boundsHi{0.0f};
+    // Lights beyond emissive triangles, by WF_LIGHT_* type.
+    size_t pointLights = 0, spotLights = 0, directionalLights = 0, sphereLights = 0;
+    size_t cameraCount = 0;
+    uint32_t environmentWidth = 0, environmentHeight = 0; // 1x1: the uniform default
+    // Surface features: each switches on shader code and GPU buffers.
+    size_t imageCount = 0;
+    uint64_t texelBytes = 0;
+    bool smoothNormals = false;
+    bool texcoord1 = false;
+    bool normalMaps = false;
+    size_t alphaMaskMaterials = 0, alphaBlendMaterials = 0, transmissiveMaterials = 0;
 };
 
 SceneSummary summarize(const Scene& scene);
 
 // One paragraph for people, e.g. "36 triangles, 4 materials, 2 emissive triangles; bounds
-// (0, 0, 0) to (5.55, 5.55, 5.55)." It adds a warning when nothing emits light.
+// (0, 0, 0) to (5.55, 5.55, 5.55); lights: none; textures: none; ...". It adds a warning
+// when nothing emits light.
 std::string describe(const SceneSummary& summary);
 
 } // namespace wf

@@ -1,6 +1,8 @@
 #include "gpu_test_util.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <memory>
 
 #include "render/scene_buffers.h"
@@ -23,6 +25,10 @@ Scene furnaceBox(float albedo, float emission) {
     material.baseColor = glm::vec4(albedo, albedo, albedo, 1.0f);
     material.emission = glm::vec3(emission);
     material.flags = WF_MATERIAL_DOUBLE_SIDED;
+    material.roughness = 1.0f;
+    material.ior = 1.5f;
+    material.specular = 0.0f; // KHR_materials_specular 0: exact Lambert
+    material.specularColor = glm::vec3(1.0f);
     scene.materials.push_back(material);
     const std::array<glm::vec3, 8> corners = {
         glm::vec3(-1, -1, -1), glm::vec3(1, -1, -1), glm::vec3(1, 1, -1), glm::vec3(-1, 1, -1),
@@ -49,6 +55,19 @@ RenderResult renderScene(const Scene& scene, const RenderSettings& settings) {
     WavefrontRenderer renderer(gpuContext(), prepared, settings, compiler);
     renderer.render();
     return {renderer.readImage(), renderer.stats()};
+}
+
+MeanAndError imageMean(const std::vector<float>& rgb) {
+    const size_t n = rgb.size() / 3;
+    double sum = 0.0, sumSq = 0.0;
+    for (size_t i = 0; i < n; ++i) {
+        double v = (rgb[3 * i] + rgb[3 * i + 1] + rgb[3 * i + 2]) / 3.0;
+        sum += v;
+        sumSq += v * v;
+    }
+    double mean = sum / n;
+    double variance = std::max(0.0, sumSq / n - mean * mean) * n / (n - 1);
+    return {mean, std::sqrt(variance / n)};
 }
 
 } // namespace wf::test

@@ -23,4 +23,13 @@ struct RenderResult {
 
 RenderResult renderScene(const Scene& scene, const RenderSettings& settings);
 
+struct MeanAndError {
+    double mean;
+    double standardError;
+};
+
+// Mean of the image (channels averaged) and its standard error from the spread of the
+// pixels, which are independent estimates (disjoint sample streams).
+MeanAndError imageMean(const std::vector<float>& rgb);
+
 } // namespace wf::test

@@ -10,26 +10,6 @@
 namespace wf::test {
 namespace {
 
-struct MeanAndError {
-    double mean;
-    double standardError;
-};
-
-// Pixels are independent estimates (disjoint sample streams), so their spread gives the
-// standard error of the image mean.
-MeanAndError imageMean(const std::vector<float>& rgb) {
-    const size_t n = rgb.size() / 3;
-    double sum = 0.0, sumSq = 0.0;
-    for (size_t i = 0; i < n; ++i) {
-        double v = (rgb[3 * i] + rgb[3 * i + 1] + rgb[3 * i + 2]) / 3.0;
-        sum += v;
-        sumSq += v * v;
-    }
-    double mean = sum / n;
-    double variance = std::max(0.0, sumSq / n - mean * mean) * n / (n - 1);
-    return {mean, std::sqrt(variance / n)};
-}
-
 class Furnace : public ::testing::TestWithParam<float> {};
 
 TEST_P(Furnace, RadianceIsEmissionOverOneMinusAlbedo) {

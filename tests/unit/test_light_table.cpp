@@ -53,7 +53,8 @@ TEST(LightTable, OnlyEmissiveTrianglesOfPositiveAreaByPower) {
         tri({0, 0, 0}, {2, 0, 0}, {0, 1, 0}, 2), // area 1
         tri({0, 0, 0}, {1, 1, 1}, {2, 2, 2}, 1), // collinear: zero area
     };
-    LightTable table = buildLightTable(triangles, materials);
+    std::vector<PunctualLight> lights;
+    LightTable table = buildLightTable(triangles, materials, lights, {}, sceneBounds(triangles, lights));
     ASSERT_EQ(table.emitters.size(), 2u);
     EXPECT_EQ(triangles[0].emitter, WF_NO_EMITTER);
     EXPECT_EQ(triangles[3].emitter, WF_NO_EMITTER);
@@ -62,7 +63,7 @@ TEST(LightTable, OnlyEmissiveTrianglesOfPositiveAreaByPower) {
     // Powers: 2 * 0.5 * pi * 1 = pi and 1 * 1 * pi * 2 = 2 pi.
     EXPECT_NEAR(table.emitters[triangles[1].emitter].pmf, 1.0 / 3.0, 1e-6);
     EXPECT_NEAR(table.emitters[triangles[2].emitter].pmf, 2.0 / 3.0, 1e-6);
-    EXPECT_EQ(table.emitters[triangles[1].emitter].triangle, 1u);
+    EXPECT_EQ(table.emitters[triangles[1].emitter].source, WF_EMITTER_TRIANGLE | 1u);
     EXPECT_NEAR(table.totalPower, 3.0 * M_PI, 1e-9);
 }
 

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "shaders/shared/render_types.h"
+#include "shaders/shared/light_types.h"
 #include "shaders/shared/scene_types.h"
 
 namespace wf {
@@ -21,9 +22,11 @@ std::map<std::string, int> reflectedOffsets() {
     const char* source = R"(#version 460
 #include "scene_types.h"
 #include "render_types.h"
+#include "light_types.h"
 layout(local_size_x = 1) in;
 layout(std430, binding = 0) buffer B0 { Triangle tri; BvhNode node; Material mat; Emitter em; };
 layout(std430, binding = 1) buffer B1 { RenderParams params; QueueCounters counters; };
+layout(std430, binding = 2) buffer B2 { PunctualLight light; };
 void main() {
     tri.pad = tri.material + tri.emitter + uint(tri.p0.x + tri.p1.x + tri.p2.x);
     node.count = node.rightOrFirst + uint(node.lo.x + node.hi.x);
@@ -31,14 +34,18 @@ void main() {
         mat.transmission + mat.specularColor.x + mat.specular + mat.alphaCutoff +
         mat.normalScale) + mat.baseColorTexture + mat.metallicRoughnessTexture +
         mat.normalTexture + mat.emissiveTexture + mat.transmissionTexture + mat.pad;
-    em.alias = em.triangle + uint(em.pmf + em.aliasProb);
-    params.pad0 = uint(params.cameraPosition.x + params.tanHalfFovY + params.cameraForward.x +
-        params.aspect + params.cameraUp.x + params.cameraRight.x) + params.seed +
-        params.maxDepth + params.width + params.height + params.pixelCount + params.rrDepth +
-        params.emitterCount + params.pathCapacity + params.pad1;
+    em.alias = em.source + uint(em.pmf + em.aliasProb);
+    params.environmentHeight = uint(params.cameraPosition.x + params.tanHalfFovY +
+        params.cameraForward.x + params.aspect + params.cameraUp.x + params.cameraRight.x +
+        params.sceneCenter.x + params.sceneRadius + params.minThroughput +
+        params.clampRadiance) + params.seed + params.maxDepth + params.width + params.height +
+        params.pixelCount + params.rrDepth + params.emitterCount + params.pathCapacity +
+        params.sphereLightCount + params.environmentEmitter + params.environmentWidth;
     counters.pad2 = counters.rayCount + counters.shadowCount + counters.rayArgs.count +
         counters.rayArgs.groupsX + counters.shadowArgs.groupsX + counters.shadowArgs.count +
         counters.extensionRays + counters.shadowRays + counters.nonFiniteSamples;
+    light.emitter = light.type + uint(light.position.x + light.direction.x + light.radius +
+        light.intensity.x + light.cosInner + light.cosOuter + light.pad1 + light.pad2);
 }
 )";
     glslang::InitializeProcess();
@@ -115,7 +122,13 @@ TEST(SharedLayout, GlslOffsetsMatchCpp) {
     expectOffset("params.cameraRight", 0, offsetof(RenderParams, cameraRight));
     expectOffset("params.maxDepth", 0, offsetof(RenderParams, maxDepth));
     expectOffset("params.pathCapacity", 0, offsetof(RenderParams, pathCapacity));
-    expectOffset("params.pad1", 0, offsetof(RenderParams, pad1));
+    expectOffset("params.sceneCenter", 0, offsetof(RenderParams, sceneCenter));
+    expectOffset("params.sceneRadius", 0, offsetof(RenderParams, sceneRadius));
+    expectOffset("params.clampRadiance", 0, offsetof(RenderParams, clampRadiance));
+    expectOffset("light.direction", 0, offsetof(PunctualLight, direction));
+    expectOffset("light.intensity", 0, offsetof(PunctualLight, intensity));
+    expectOffset("light.emitter", 0, offsetof(PunctualLight, emitter));
+    expectOffset("light.pad2", 0, offsetof(PunctualLight, pad2));
     const size_t countersBase = sizeof(RenderParams);
     expectOffset("counters.rayArgs.count", countersBase,
                  offsetof(QueueCounters, rayArgs) + offsetof(DispatchArgs, count));

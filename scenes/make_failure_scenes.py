@@ -1,0 +1,186 @@
+#!/usr/bin/env python3
+"""Writes the scenes where one light-transport method fails on purpose (issue: materials and
+light transport). Each stays a small, self-contained glTF; run `python3 make_failure_scenes.py`.
+
+- tiny_light.gltf: a 2 cm, very bright square light over a white floor. BSDF sampling almost
+  never hits it; next-event estimation finds it every time.
+- veach_mis.gltf: Veach's MIS scene: four metal plates from nearly mirror to rough, lit by four
+  sphere lights from tiny to large, of equal power. Light sampling fails on the sharp plates
+  with large lights, BSDF sampling on the rough plates with small lights; MIS does well on all.
+- sphere_near_floor.gltf: a sphere light 2 cm above a floor. Sampling the sphere's area wastes
+  the samples on its far side and weights the near ones badly; sampling its cone of directions
+  does not.
+- glass_caustic.gltf: a glass ball on a floor under a small sphere light. The caustic is found
+  only by paths that bounce through the glass: shadow rays cannot pass a Dirac interface.
+"""
+
+import math
+import os
+import struct
+
+from make_cornell_box import GltfWriter, quad
+
+
+def material(g, name, color, metallic=0.0, roughness=1.0, lambert=False, emission=None,
+             transmission=0.0, ior=None):
+    index = g.material(name, color, emission or (0.0, 0.0, 0.0))
+    mat = g.doc["materials"][index]
+    mat["pbrMetallicRoughness"]["metallicFactor"] = metallic
+    mat["pbrMetallicRoughness"]["roughnessFactor"] = roughness
+    if not lambert:
+        del mat["extensions"]["KHR_materials_specular"]
+    if transmission > 0:
+        mat["extensions"]["KHR_materials_transmission"] = {"transmissionFactor": transmission}
+        mat["extensions"]["KHR_materials_ior"] = {"ior": ior or 1.5}
+        for ext in ("KHR_materials_transmission", "KHR_materials_ior"):
+            if ext not in g.doc["extensionsUsed"]:
+                g.doc["extensionsUsed"].append(ext)
+    if not mat["extensions"]:
+        del mat["extensions"]
+    return index
+
+
+def floor(size, y=0.0):
+    s = size / 2
+    return [quad((-s, y, -s), (-s, y, s), (s, y, s), (s, y, -s), (0, 1, 0))]
+
+
+def sphere_light(g, name, center, radius, intensity, color=(1.0, 1.0, 1.0)):
+    ext = g.doc.setdefault("extensions", {}).setdefault("KHR_lights_punctual", {"lights": []})
+    if "KHR_lights_punctual" not in g.doc["extensionsUsed"]:
+        g.doc["extensionsUsed"].append("KHR_lights_punctual")
+    ext["lights"].append({"name": name, "type": "point", "color": list(color),
+                          "intensity": intensity, "extras": {"radius": radius}})
+    g.node(name=name, translation=list(center),
+           extensions={"KHR_lights_punctual": {"light": len(ext["lights"]) - 1}})
+
+
+def look_at_rotation(eye, target):
+    """Quaternion (x, y, z, w) turning the glTF camera (looking down -Z, +Y up) towards target."""
+    f = [t - e for t, e in zip(target, eye)]
+    n = math.sqrt(sum(c * c for c in f))
+    f = [c / n for c in f]
+    # Right = f x up, true up = right x f; the camera's -Z is f.
+    r = [f[1] * 0 - f[2] * 1, f[2] * 0 - f[0] * 0, f[0] * 1 - f[1] * 0]
+    rn = math.sqrt(sum(c * c for c in r))
+    r = [c / rn for c in r]
+    u = [r[1] * f[2] - r[2] * f[1], r[2] * f[0] - r[0] * f[2], r[0] * f[1] - r[1] * f[0]]
+    z = [-c for c in f]
+    m = [[r[0], u[0], z[0]], [r[1], u[1], z[1]], [r[2], u[2], z[2]]]  # columns r, u, z
+    trace = m[0][0] + m[1][1] + m[2][2]
+    if trace > 0:
+        s = 0.5 / math.sqrt(trace + 1.0)
+        q = [(m[2][1] - m[1][2]) * s, (m[0][2] - m[2][0]) * s, (m[1][0] - m[0][1]) * s, 0.25 / s]
+    else:
+        i = max(range(3), key=lambda k: m[k][k])
+        j, k = (i + 1) % 3, (i + 2) % 3
+        s = 2.0 * math.sqrt(1.0 + m[i][i] - m[j][j] - m[k][k])
+        q = [0.0, 0.0, 0.0, (m[k][j] - m[j][k]) / s]
+        q[i] = 0.25 * s
+        q[j] = (m[j][i] + m[i][j]) / s
+        q[k] = (m[k][i] + m[i][k]) / s
+    return [round(c, 12) for c in q]
+
+
+def camera(g, eye, target, yfov, aspect=1.0):
+    g.doc["cameras"].append({"type": "perspective", "name": "camera", "perspective": {
+        "yfov": yfov, "aspectRatio": aspect, "znear": 0.01, "zfar": 100.0}})
+    g.node(name="camera", camera=len(g.doc["cameras"]) - 1, translation=list(eye),
+           rotation=look_at_rotation(eye, target))
+
+
+def uv_sphere(center, radius, rings=24, segments=48):
+    """Triangles of a UV sphere, counter-clockwise seen from outside, none degenerate."""
+    cx, cy, cz = center
+    def point(i, j):
+        theta = math.pi * i / rings
+        phi = 2 * math.pi * j / segments
+        return (cx + radius * math.sin(theta) * math.cos(phi), cy + radius * math.cos(theta),
+                cz + radius * math.sin(theta) * math.sin(phi))
+    tris = []
+    for i in range(rings):
+        for j in range(segments):
+            a, b = point(i, j), point(i + 1, j)
+            c, d = point(i + 1, j + 1), point(i, j + 1)
+            # Outward winding: counter-clockwise seen from outside.
+            if i > 0:
+                tris.append((a, d, b))
+            if i < rings - 1:
+                tris.append((b, d, c))
+    return tris
+
+
+def triangle_primitive(g, tris, material_index):
+    """GltfWriter.primitive takes quads: pass each triangle as a quad whose fourth point
+    repeats the third, then index only the triangles."""
+    prim = g.primitive([[t[0], t[1], t[2], t[2]] for t in tris], material_index)
+    # Replace the index accessor with a plain triangle list over the same points.
+    indices = [4 * i + k for i in range(len(tris)) for k in (0, 1, 2)]
+    view = g._view(struct.pack("<%dI" % len(indices), *indices), 34963)
+    prim["indices"] = g._accessor(bufferView=view, componentType=5125, count=len(indices),
+                                  type="SCALAR")
+    return prim
+
+
+def tiny_light():
+    g = GltfWriter()
+    white = material(g, "white", (0.8, 0.8, 0.8), lambert=True)
+    light = material(g, "tiny light", (0.0, 0.0, 0.0), lambert=True,
+                     emission=(30000.0, 30000.0, 30000.0))
+    g.node(name="floor", mesh=g.mesh("floor", [g.primitive(floor(8.0), white)]))
+    s, y = 0.01, 2.0
+    g.node(name="light", mesh=g.mesh("light", [g.primitive(
+        [quad((-s, y, -s), (s, y, -s), (s, y, s), (-s, y, s), (0, -1, 0))], light)]))
+    camera(g, (0.0, 3.0, 5.0), (0.0, 0.0, 0.0), 0.8)
+    return g
+
+
+def veach_mis():
+    g = GltfWriter()
+    backdrop = material(g, "backdrop", (0.1, 0.1, 0.1), lambert=True)
+    g.node(name="floor", mesh=g.mesh("floor", [g.primitive(floor(40.0, -3.0), backdrop)]))
+    # Plates: tilted strips, each reflecting the lights towards the camera.
+    for k, roughness in enumerate((0.05, 0.12, 0.25, 0.45)):
+        plate = material(g, "plate %d" % k, (0.9, 0.9, 0.9), metallic=1.0, roughness=roughness)
+        z = 0.8 - 1.2 * k
+        y = -1.0 + 0.45 * k
+        tilt = 0.35 + 0.12 * k
+        dz, dy = 0.5 * math.cos(tilt), 0.5 * math.sin(tilt)
+        q = quad((-4, y - dy, z + dz), (4, y - dy, z + dz), (4, y + dy, z - dz),
+                 (-4, y + dy, z - dz), (0, math.cos(tilt), math.sin(tilt)))
+        g.node(name="plate %d" % k, mesh=g.mesh("plate %d" % k, [g.primitive([q], plate)]))
+    for k, radius in enumerate((0.03, 0.1, 0.3, 0.9)):
+        sphere_light(g, "light %d" % k, (-3.75 + 2.5 * k, 2.5, -4.0), radius, 40.0)
+    camera(g, (0.0, 2.0, 9.0), (0.0, -0.8, -0.5), 0.7, aspect=1.5)
+    return g
+
+
+def sphere_near_floor():
+    g = GltfWriter()
+    white = material(g, "white", (0.8, 0.8, 0.8), lambert=True)
+    g.node(name="floor", mesh=g.mesh("floor", [g.primitive(floor(6.0), white)]))
+    sphere_light(g, "sphere", (0.0, 0.52, 0.0), 0.5, 10.0)
+    camera(g, (0.0, 1.6, 3.2), (0.0, 0.1, 0.0), 0.8)
+    return g
+
+
+def glass_caustic():
+    g = GltfWriter()
+    white = material(g, "white", (0.8, 0.8, 0.8), lambert=True)
+    glass = material(g, "glass", (1.0, 1.0, 1.0), roughness=0.0, transmission=1.0, ior=1.5)
+    g.node(name="floor", mesh=g.mesh("floor", [g.primitive(floor(6.0), white)]))
+    g.node(name="ball", mesh=g.mesh("ball", [triangle_primitive(
+        g, uv_sphere((0.0, 0.6, 0.0), 0.5), glass)]))
+    sphere_light(g, "light", (0.6, 3.0, -0.4), 0.05, 30.0)
+    camera(g, (0.0, 2.2, 3.0), (0.0, 0.3, 0.0), 0.75)
+    return g
+
+
+if __name__ == "__main__":
+    here = os.path.dirname(os.path.abspath(__file__))
+    for name, build in (("tiny_light", tiny_light), ("veach_mis", veach_mis),
+                        ("sphere_near_floor", sphere_near_floor),
+                        ("glass_caustic", glass_caustic)):
+        doc = build()
+        doc.doc["asset"]["generator"] = "scenes/make_failure_scenes.py"
+        doc.write(os.path.join(here, name + ".gltf"))

@@ -1,0 +1,117 @@
+// Per-triangle vertex attributes and textures as the GPU reads them (std430). Every buffer here
+// exists only for scenes that use it (see src/render/scene_buffers.cpp): a scene without
+// textures has no texel, texture-reference or UV buffer, one without smooth normals no normal
+// buffer. Included by C++ and GLSL; the C++ side asserts the layout.
+#ifndef WF_TEXTURE_TYPES_H
+#define WF_TEXTURE_TYPES_H
+
+#include "glsl_cpp.h"
+
+// Per-scene switches (src/render/shader_variant.cpp); off unless the host turns them on.
+#ifndef WF_HAS_TEXTURES
+#define WF_HAS_TEXTURES 0
+#endif
+#ifndef WF_TEXEL_PAGES
+#define WF_TEXEL_PAGES 0
+#endif
+#ifndef WF_HAS_TEXCOORD1
+#define WF_HAS_TEXCOORD1 0
+#endif
+#ifndef WF_HAS_NORMALS
+#define WF_HAS_NORMALS 0
+#endif
+#ifndef WF_HAS_NORMAL_MAPS
+#define WF_HAS_NORMAL_MAPS 0
+#endif
+#ifndef WF_HAS_ALPHA_MASK
+#define WF_HAS_ALPHA_MASK 0
+#endif
+
+#ifdef __cplusplus
+namespace wf::gpu_types {
+using namespace glm;
+#endif
+
+// Bindings 20-31 of the shared descriptor set (render_types.h keeps 0-19).
+#define WF_BINDING_TEXTURE_REFS 20
+#define WF_BINDING_NORMALS 21
+#define WF_BINDING_TANGENTS 22
+#define WF_BINDING_TEXCOORDS0 23
+#define WF_BINDING_TEXCOORDS1 24
+#define WF_BINDING_TEXELS0 25 // texel pages 0..3: images split across storage buffers so that
+#define WF_MAX_TEXEL_PAGES 4  // none passes the device's per-buffer limit (lavapipe: 128 MiB)
+
+// TextureRef.flags: bits 0-1 wrap S, bits 2-3 wrap T, then switches.
+#define WF_WRAP_REPEAT 0u
+#define WF_WRAP_CLAMP 1u
+#define WF_WRAP_MIRROR 2u
+#define WF_TEXTURE_SRGB 16u      // colour data: sRGB-decode each texel before filtering
+#define WF_TEXTURE_NEAREST 32u   // magFilter NEAREST; otherwise bilinear
+#define WF_TEXTURE_TEXCOORD1 64u // sample with TEXCOORD_1 instead of TEXCOORD_0
+
+// One material's use of one image: which texel page and where in it, how to wrap and filter,
+// and the KHR_texture_transform as a 2x3 matrix: uv' = (dot(uRow, (u, v, 1)),
+// dot(vRow, (u, v, 1))). Texels are RGBA8, one uint each, rows top first.
+struct TextureRef {
+    vec3 uRow;
+    uint page;
+    vec3 vRow;
+    uint offset; // first texel in the page
+    uint width;
+    uint height;
+    uint flags;  // WF_WRAP_* | WF_TEXTURE_*
+    uint pad;
+};
+
+// Shading normals at a triangle's three corners (world space), each octahedral-encoded in two
+// 16-bit snorms (packSnorm2x16): 16 bytes per triangle instead of 48.
+struct TriangleNormals {
+    uint n0;
+    uint n1;
+    uint n2;
+    uint pad;
+};
+
+// Tangents at the corners, octahedral like the normals; bit k of `signs` set means corner k's
+// bitangent is -cross(normal, tangent) (glTF TANGENT.w = -1, mirrored UVs).
+struct TriangleTangents {
+    uint t0;
+    uint t1;
+    uint t2;
+    uint signs;
+};
+
+// One UV set at a triangle's corners (TEXCOORD_0 or TEXCOORD_1), as the file gives them.
+struct TriangleUvs {
+    vec2 uv0;
+    vec2 uv1;
+    vec2 uv2;
+};
+
+// Octahedral mapping of unit vectors onto [-1, 1]^2 (Cigolle et al. 2014): decode half, shared
+// so the CPU tests check it against the C++ encoder in the loader.
+WF_INLINE vec3 octDecode(vec2 e) {
+    vec3 v = vec3(e.x, e.y, 1.0f - abs(e.x) - abs(e.y));
+    if (v.z < 0.0f) {
+        float x = (1.0f - abs(v.y)) * (v.x >= 0.0f ? 1.0f : -1.0f);
+        float y = (1.0f - abs(v.x)) * (v.y >= 0.0f ? 1.0f : -1.0f);
+        v.x = x;
+        v.y = y;
+    }
+    return normalize(v);
+}
+
+#ifdef __cplusplus
+} // namespace wf::gpu_types
+static_assert(sizeof(wf::gpu_types::TextureRef) == 48);
+static_assert(offsetof(wf::gpu_types::TextureRef, page) == 12);
+static_assert(offsetof(wf::gpu_types::TextureRef, vRow) == 16);
+static_assert(offsetof(wf::gpu_types::TextureRef, offset) == 28);
+static_assert(offsetof(wf::gpu_types::TextureRef, flags) == 40);
+static_assert(sizeof(wf::gpu_types::TriangleNormals) == 16);
+static_assert(sizeof(wf::gpu_types::TriangleTangents) == 16);
+static_assert(sizeof(wf::gpu_types::TriangleUvs) == 24);
+static_assert(offsetof(wf::gpu_types::TriangleUvs, uv2) == 16);
+#endif
+
+#endif

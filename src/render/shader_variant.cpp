@@ -1,0 +1,70 @@
+#include "render/shader_variant.h"
+
+#include "errors.h"
+#include "render/scene_buffers.h"
+#include "render/wavefront_renderer.h"
+#include "render/workgroup.h"
+
+namespace wf {
+
+ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& settings) {
+    const LightTable& lights = scene.lights;
+    ShaderVariant variant;
+    variant.lightSampling = settings.lightSampling;
+    variant.nextEventEstimation =
+        settings.lightSampling != LightSampling::Bsdf && !lights.emitters.empty();
+    variant.triangleEmitters = variant.nextEventEstimation && lights.triangleEmitters > 0;
+    variant.sphereLights = lights.sphereLights > 0;
+    variant.deltaLights = variant.nextEventEstimation && lights.deltaLights > 0;
+    variant.environment = lights.environmentEmitter != WF_NO_EMITTER;
+    variant.triangleSolidAngle = settings.triangleSolidAngle;
+    variant.sphereSolidAngle = settings.sphereSolidAngle;
+    return variant;
+}
+
+ShaderDefines ShaderVariant::defines() const {
+    auto flag = [](bool on) { return std::string(on ? "1" : "0"); };
+    return {{"WF_WORKGROUP_SIZE", std::to_string(kWorkgroupSize)},
+            {"WF_LIGHT_SAMPLING", std::to_string(static_cast<int>(lightSampling))},
+            {"WF_HAS_EMITTERS", flag(nextEventEstimation)},
+            {"WF_HAS_TRIANGLE_EMITTERS", flag(triangleEmitters)},
+            {"WF_HAS_SPHERE_LIGHTS", flag(sphereLights)},
+            {"WF_HAS_DELTA_LIGHTS", flag(deltaLights)},
+            {"WF_HAS_LIGHTS", flag(lightsBuffer())},
+            {"WF_HAS_ENVIRONMENT", flag(environment)},
+            {"WF_TRIANGLE_SOLID_ANGLE", flag(triangleSolidAngle)},
+            {"WF_SPHERE_SOLID_ANGLE", flag(sphereSolidAngle)},
+            {"WF_HAS_TEXTURES", flag(surface.textures)},
+            {"WF_TEXEL_PAGES", std::to_string(surface.texelPages)},
+            {"WF_HAS_TEXCOORD1", flag(surface.texcoord1)},
+            {"WF_HAS_NORMALS", flag(surface.normals)},
+            {"WF_HAS_NORMAL_MAPS", flag(surface.normalMaps)},
+            {"WF_HAS_ALPHA_MASK", flag(surface.alphaMask)}};
+}
+
+std::string ShaderVariant::describe() const {
+    std::string text;
+    for (const auto& [name, value] : defines())
+        text += (text.empty() ? "" : " ") + name + "=" + value;
+    return text;
+}
+
+LightSampling parseLightSampling(const std::string& name) {
+    if (name == "bsdf")
+        return LightSampling::Bsdf;
+    if (name == "nee")
+        return LightSampling::Nee;
+    if (name == "mis")
+        return LightSampling::Mis;
+    throw UsageError("--light-sampling expects bsdf, nee or mis, got '" + name + "'");
+}
+
+const char* lightSamplingName(LightSampling mode) {
+    switch (mode) {
+    case LightSampling::Bsdf: return "bsdf";
+    case LightSampling::Nee: return "nee";
+    default: return "mis";
+    }
+}
+
+} // namespace wf

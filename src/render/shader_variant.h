@@ -1,0 +1,37 @@
+// Which code paths and buffers a render needs, decided once from the scene and the settings
+// ("model no more than a scene needs"), and the #defines that select them in the shaders.
+#pragma once
+#include <string>
+
+#include "gpu/shader_compiler.h"
+#include "render/surface_buffers.h"
+
+namespace wf {
+
+struct PreparedScene;
+struct RenderSettings;
+
+enum class LightSampling { Bsdf = 0, Nee = 1, Mis = 2 };
+
+struct ShaderVariant {
+    LightSampling lightSampling = LightSampling::Mis;
+    bool nextEventEstimation = false; // a light table to sample, and shadow rays
+    bool triangleEmitters = false;
+    bool sphereLights = false;        // intersected by every ray, whatever the estimator
+    bool deltaLights = false;         // point, spot, directional: reachable by NEE only
+    bool environment = false;
+    bool triangleSolidAngle = true;
+    bool sphereSolidAngle = true;
+    SurfaceFeatures surface;          // textures, normals, alpha: set by the renderer
+
+    bool lightsBuffer() const { return sphereLights || deltaLights; }
+    ShaderDefines defines() const;
+    std::string describe() const;
+};
+
+ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& settings);
+
+LightSampling parseLightSampling(const std::string& name); // UsageError if unknown
+const char* lightSamplingName(LightSampling mode);
+
+} // namespace wf

@@ -1,0 +1,191 @@
+#include "render/surface_buffers.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "errors.h"
+#include "gpu/context.h"
+
+namespace wf {
+namespace {
+
+template <typename T>
+Buffer uploadArray(const Context& context, const char* name, const std::vector<T>& values) {
+    Buffer buffer(context, name, values.size() * sizeof(T));
+    buffer.upload(values);
+    return buffer;
+}
+
+// 2x2 box filter per channel (edges of odd sizes repeat the last texel).
+TextureImage halve(const TextureImage& in) {
+    TextureImage out;
+    out.width = std::max(1u, in.width / 2);
+    out.height = std::max(1u, in.height / 2);
+    out.rgba.resize(size_t(out.width) * out.height);
+    for (uint32_t y = 0; y < out.height; ++y) {
+        for (uint32_t x = 0; x < out.width; ++x) {
+            uint32_t sum[4] = {0, 0, 0, 0};
+            for (uint32_t k = 0; k < 4; ++k) {
+                const uint32_t sx = std::min(2 * x + (k & 1), in.width - 1);
+                const uint32_t sy = std::min(2 * y + (k >> 1), in.height - 1);
+                const uint32_t texel = in.rgba[size_t(sy) * in.width + sx];
+                for (int c = 0; c < 4; ++c) {
+                    sum[c] += texel >> (8 * c) & 0xffu;
+                }
+            }
+            uint32_t texel = 0;
+            for (int c = 0; c < 4; ++c) {
+                texel |= ((sum[c] + 2) / 4) << (8 * c);
+            }
+            out.rgba[size_t(y) * out.width + x] = texel;
+        }
+    }
+    return out;
+}
+
+} // namespace
+
+TexelPlan planTexels(const SurfaceData& surface, uint64_t pageBytes) {
+    // uint offsets index a page in the shader, so pages stay below 2^32 texels either way.
+    const uint64_t pageTexels = std::min<uint64_t>(pageBytes, uint64_t(1) << 30) / 4;
+    TexelPlan plan;
+    uint64_t total = 0;
+    for (const TextureImage& image : surface.images) {
+        TexelPlacement place;
+        place.width = image.width;
+        place.height = image.height;
+        while (uint64_t(place.width) * place.height > pageTexels) {
+            place.width = std::max(1u, place.width / 2);
+            place.height = std::max(1u, place.height / 2);
+            ++place.halvings;
+        }
+        const uint64_t texels = uint64_t(place.width) * place.height;
+        if (plan.pageTexels.empty() || plan.pageTexels.back() + texels > pageTexels) {
+            plan.pageTexels.push_back(0);
+        }
+        place.page = uint32_t(plan.pageTexels.size() - 1);
+        place.offset = uint32_t(plan.pageTexels.back());
+        plan.pageTexels.back() += texels;
+        total += texels;
+        plan.images.push_back(place);
+    }
+    if (plan.pageTexels.size() > WF_MAX_TEXEL_PAGES) {
+        const uint64_t limit = WF_MAX_TEXEL_PAGES * pageTexels * 4;
+        throw InputError("the scene's textures need " + std::to_string((total * 4) >> 20) +
+                         " MiB, over the " + std::to_string(limit >> 20) + " MiB that " +
+                         std::to_string(WF_MAX_TEXEL_PAGES) + " storage buffers of " +
+                         std::to_string((pageTexels * 4) >> 20) + " MiB (the device's limit) " +
+                         "hold, by " + std::to_string((total * 4 - limit) >> 20) +
+                         " MiB; use smaller images");
+    }
+    return plan;
+}
+
+void tagTriangles(std::vector<Triangle>& triangles) {
+    for (size_t i = 0; i < triangles.size(); ++i)
+        triangles[i].pad = uint32_t(i);
+}
+
+void followTriangleOrder(std::vector<Triangle>& triangles, SurfaceData& surface) {
+    auto permute = [&](auto& array) {
+        if (array.empty())
+            return;
+        auto old = std::move(array);
+        array.resize(old.size());
+        for (size_t i = 0; i < triangles.size(); ++i)
+            array[i] = old[triangles[i].pad];
+    };
+    permute(surface.normals);
+    permute(surface.tangents);
+    permute(surface.uv0);
+    permute(surface.uv1);
+    for (Triangle& t : triangles)
+        t.pad = 0;
+}
+
+SurfaceFeatures surfaceFeatures(const SurfaceData& surface, const std::vector<Material>& materials,
+                                uint64_t pageBytes) {
+    SurfaceFeatures f;
+    f.textures = !surface.textureRefs.empty() && !(surface.uv0.empty() && surface.uv1.empty());
+    f.normals = !surface.normals.empty();
+    f.texcoord1 = f.textures && !surface.uv1.empty();
+    f.normalMaps = !surface.tangents.empty() && f.textures && f.normals;
+    for (const Material& m : materials)
+        f.alphaMask |= (m.flags & (WF_MATERIAL_ALPHA_MASK | WF_MATERIAL_ALPHA_BLEND)) != 0;
+    if (f.textures)
+        f.texelPages = uint32_t(planTexels(surface, pageBytes).pageTexels.size());
+    return f;
+}
+
+SurfaceBuffers::SurfaceBuffers(const Context& context, const SurfaceData& surface,
+                               const SurfaceFeatures& features) {
+    if (features.normals)
+        normals_ = uploadArray(context, "vertex normals", surface.normals);
+    if (features.normalMaps)
+        tangents_ = uploadArray(context, "vertex tangents", surface.tangents);
+    if (!features.textures)
+        return;
+    uv0_ = uploadArray(context, "texcoords 0",
+                       surface.uv0.empty() ? std::vector<TriangleUvs>(1) : surface.uv0);
+    if (features.texcoord1)
+        uv1_ = uploadArray(context, "texcoords 1", surface.uv1);
+
+    const TexelPlan plan = planTexels(surface, context.properties().limits.maxStorageBufferRange);
+    std::vector<TextureRef> refs = surface.textureRefs;
+    for (size_t r = 0; r < refs.size(); ++r) {
+        const uint32_t image = surface.refImage[r];
+        const TexelPlacement place = image < plan.images.size() ? plan.images[image]
+                                                                : TexelPlacement{};
+        refs[r].page = place.page;
+        refs[r].offset = place.offset;
+        refs[r].width = place.width;
+        refs[r].height = place.height;
+    }
+    textureRefs_ = uploadArray(context, "texture refs", refs);
+    for (size_t page = 0; page < plan.pageTexels.size(); ++page) {
+        std::vector<uint32_t> texels(plan.pageTexels[page]);
+        for (size_t i = 0; i < plan.images.size(); ++i) {
+            const TexelPlacement& place = plan.images[i];
+            if (place.page != page)
+                continue;
+            TextureImage scaled;
+            const TextureImage* image = &surface.images[i];
+            for (uint32_t h = 0; h < place.halvings; ++h) {
+                scaled = halve(*image);
+                image = &scaled;
+            }
+            if (place.halvings > 0)
+                std::fprintf(stderr, "warning: %s halved %u times to fit a %llu MiB buffer\n",
+                             surface.images[i].name.c_str(), place.halvings,
+                             static_cast<unsigned long long>(
+                                 context.properties().limits.maxStorageBufferRange >> 20));
+            std::copy(image->rgba.begin(), image->rgba.end(), texels.begin() + place.offset);
+        }
+        const std::string name = "texels " + std::to_string(page);
+        texelPages_.push_back(uploadArray(context, name.c_str(), texels));
+    }
+}
+
+void SurfaceBuffers::appendBindings(
+    std::vector<std::pair<uint32_t, const Buffer*>>& bindings) const {
+    const std::pair<uint32_t, const Buffer*> all[] = {
+        {WF_BINDING_NORMALS, &normals_},         {WF_BINDING_TANGENTS, &tangents_},
+        {WF_BINDING_TEXCOORDS0, &uv0_},          {WF_BINDING_TEXCOORDS1, &uv1_},
+        {WF_BINDING_TEXTURE_REFS, &textureRefs_}};
+    for (const auto& binding : all)
+        if (*binding.second)
+            bindings.push_back(binding);
+    for (size_t page = 0; page < texelPages_.size(); ++page)
+        bindings.emplace_back(WF_BINDING_TEXELS0 + uint32_t(page), &texelPages_[page]);
+}
+
+void SurfaceBuffers::appendMemoryReport(
+    std::vector<std::pair<std::string, uint64_t>>& report) const {
+    for (const Buffer* buffer : {&normals_, &tangents_, &uv0_, &uv1_, &textureRefs_})
+        if (*buffer)
+            report.emplace_back(buffer->name(), buffer->size());
+    for (const Buffer& page : texelPages_)
+        report.emplace_back(page.name(), page.size());
+}
+
+} // namespace wf

@@ -1,0 +1,131 @@
+#include "scene/gltf_lights_cameras.h"
+
+#include <tiny_gltf.h>
+
+#include <cmath>
+
+#include "scene/gltf_accessors.h"
+
+namespace wf::gltf {
+namespace {
+
+bool finite(const glm::dvec3& v) { return std::isfinite(v.x + v.y + v.z); }
+
+} // namespace
+
+void addNodeCamera(const tinygltf::Model& model, const std::string& file, int nodeIndex,
+                   const glm::dmat4& world, Scene& scene) {
+    const tinygltf::Node& node = model.nodes[nodeIndex];
+    const std::string nodeName = "node " + std::to_string(nodeIndex);
+    checkIndex(file, node.camera, model.cameras.size(), "camera", nodeName);
+    const tinygltf::Camera& camera = model.cameras[node.camera];
+    const std::string name = "camera " + std::to_string(node.camera);
+    if (camera.type != "perspective") {
+        warn(file, name + " is " + camera.type + "; only perspective cameras are supported");
+        return;
+    }
+    const double yfov = camera.perspective.yfov;
+    const double aspect = camera.perspective.aspectRatio;
+    if (!(yfov > 0.0 && yfov < M_PI) || !(aspect >= 0.0 && std::isfinite(aspect))) {
+        warn(file, name + " is skipped: yfov must lie in (0, pi) and aspectRatio be positive");
+        return;
+    }
+    // glTF cameras look down -Z with +Y up; Gram-Schmidt removes any shear from scaling.
+    const glm::dvec3 forward = glm::normalize(-glm::dvec3(world[2]));
+    const glm::dvec3 upRaw = glm::dvec3(world[1]);
+    const glm::dvec3 up = glm::normalize(upRaw - glm::dot(upRaw, forward) * forward);
+    if (!finite(forward) || !finite(up)) {
+        warn(file, name + " on " + nodeName + " is skipped: its transform is degenerate");
+        return;
+    }
+    Camera out;
+    out.position = glm::vec3(world[3]);
+    out.forward = glm::vec3(forward);
+    out.up = glm::vec3(up);
+    out.yfov = float(yfov);
+    out.aspect = float(aspect);
+    scene.cameras.push_back(out);
+    scene.cameraNames.push_back(!camera.name.empty() ? camera.name
+                                : !node.name.empty() ? node.name
+                                                     : name);
+    if (!scene.hasCamera) {
+        scene.camera = out;
+        scene.hasCamera = true;
+    }
+}
+
+void addNodeLight(const tinygltf::Model& model, const std::string& file, int nodeIndex,
+                  const glm::dmat4& world, Scene& scene) {
+    const tinygltf::Node& node = model.nodes[nodeIndex];
+    auto ext = node.extensions.find("KHR_lights_punctual");
+    if (ext == node.extensions.end()) {
+        return;
+    }
+    const std::string nodeName = "node " + std::to_string(nodeIndex);
+    const tinygltf::Value& ref = ext->second;
+    const tinygltf::Value& index = ref.IsObject() && ref.Has("light") ? ref.Get("light")
+                                                                       : tinygltf::Value();
+    const double lightIndex = index.IsNumber() ? index.GetNumberAsDouble() : -1.0;
+    if (!(lightIndex >= 0.0 && lightIndex < double(model.lights.size())) ||
+        lightIndex != std::floor(lightIndex)) {
+        fail(file, nodeName + " refers to a KHR_lights_punctual light that does not exist (the "
+                   "file has " + std::to_string(model.lights.size()) + ")");
+    }
+    const tinygltf::Light& light = model.lights[size_t(lightIndex)];
+    const std::string name = "light " + std::to_string(size_t(lightIndex));
+    auto skip = [&](const std::string& why) { warn(file, name + " is skipped: " + why); };
+
+    PunctualLight out{};
+    std::vector<double> color = light.color.empty() ? std::vector<double>{1, 1, 1} : light.color;
+    if (color.size() != 3) {
+        return skip("color needs 3 numbers");
+    }
+    for (int c = 0; c < 3; ++c) {
+        const double value = color[c] * light.intensity;
+        if (!(color[c] >= 0.0 && light.intensity >= 0.0 && std::isfinite(value) &&
+              value < 1e30)) {
+            return skip("color and intensity must be finite and >= 0");
+        }
+        out.intensity[c] = float(value);
+    }
+    if (out.intensity.x + out.intensity.y + out.intensity.z == 0.0f) {
+        return skip("it emits nothing (zero intensity or colour)");
+    }
+    const glm::dvec3 position(world[3]);
+    const glm::dvec3 direction = glm::normalize(-glm::dvec3(world[2]));
+    if (!finite(position) || !finite(direction)) {
+        return skip("the transform of " + nodeName + " is degenerate");
+    }
+    out.position = glm::vec3(position);
+    out.direction = glm::vec3(direction);
+    out.emitter = WF_NO_EMITTER;
+    if (light.type == "point") {
+        out.type = WF_LIGHT_POINT;
+        if (light.extras.IsObject() && light.extras.Has("radius")) {
+            const tinygltf::Value& r = light.extras.Get("radius");
+            const double radius = r.IsNumber() ? r.GetNumberAsDouble() : -1.0;
+            if (!(radius >= 0.0 && radius < 1e30)) {
+                return skip("extras.radius must be a finite number >= 0");
+            }
+            if (radius > 0.0) {
+                out.type = WF_LIGHT_SPHERE;
+                out.radius = float(radius);
+            }
+        }
+    } else if (light.type == "spot") {
+        const double inner = light.spot.innerConeAngle, outer = light.spot.outerConeAngle;
+        if (!(inner >= 0.0 && inner < outer && outer <= M_PI / 2)) {
+            return skip("spot cone angles need 0 <= inner < outer <= pi/2");
+        }
+        out.type = WF_LIGHT_SPOT;
+        out.cosInner = float(std::cos(inner));
+        out.cosOuter = float(std::cos(outer));
+    } else if (light.type == "directional") {
+        out.type = WF_LIGHT_DIRECTIONAL;
+    } else {
+        return skip("type '" + light.type + "' is not point, spot or directional");
+    }
+    scene.lights.push_back(out);
+}
+
+} // namespace wf::gltf

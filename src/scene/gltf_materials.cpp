@@ -1,0 +1,258 @@
+// Materials and their texture references. Values outside glTF's ranges are refused (an albedo
+// above 1 would create energy); extensions the renderer cannot honour are named once.
+#include "scene/gltf_materials.h"
+
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "scene/gltf_accessors.h"
+
+namespace wf::gltf {
+namespace {
+
+const std::set<std::string> SUPPORTED_EXTENSIONS = {
+    "KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_materials_transmission",
+    "KHR_materials_specular", "KHR_texture_transform", "KHR_lights_punctual",
+    "KHR_mesh_quantization"};
+
+double number(const tinygltf::Value& object, const char* key, double fallback) {
+    if (!object.IsObject() || !object.Has(key)) {
+        return fallback;
+    }
+    const tinygltf::Value& value = object.Get(key);
+    return value.IsNumber() ? value.GetNumberAsDouble() : std::nan("");
+}
+
+// A JSON array of `n` numbers, or `fallback` when the key is absent.
+std::vector<double> numbers(const tinygltf::Value& object, const char* key, size_t n,
+                            std::vector<double> fallback) {
+    if (!object.IsObject() || !object.Has(key)) {
+        return fallback;
+    }
+    const tinygltf::Value& value = object.Get(key);
+    std::vector<double> out(n, std::nan(""));
+    if (value.IsArray() && value.ArrayLen() == n) {
+        for (size_t i = 0; i < n; ++i) {
+            const tinygltf::Value& item = value.Get(int(i));
+            out[i] = item.IsNumber() ? item.GetNumberAsDouble() : std::nan("");
+        }
+    }
+    return out;
+}
+
+const tinygltf::Value& extension(const tinygltf::ExtensionMap& map, const char* name) {
+    static const tinygltf::Value none;
+    auto found = map.find(name);
+    return found == map.end() ? none : found->second;
+}
+
+uint32_t wrapMode(int gl) {
+    switch (gl) {
+    case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return WF_WRAP_CLAMP;
+    case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return WF_WRAP_MIRROR;
+    default: return WF_WRAP_REPEAT;
+    }
+}
+
+class MaterialConverter {
+public:
+    MaterialConverter(const tinygltf::Model& model, const std::string& file)
+        : model_(model), file_(file) {
+        tables_.imageUsed.assign(model.images.size(), false);
+    }
+    MaterialTables run();
+
+private:
+    uint32_t textureRef(int texture, int texCoord, const tinygltf::ExtensionMap& extensions,
+                        bool srgb, const std::string& slot, MaterialNeeds& needs);
+    void checkRange(const std::string& name, const char* what, double value, double lo,
+                    double hi) const {
+        if (!(value >= lo && value <= hi)) { // NaN fails too
+            fail(file_, name + ": " + what + " must lie in [" + std::to_string(lo) + ", " +
+                            std::to_string(hi) + "]");
+        }
+    }
+    Material convert(const tinygltf::Material& m, const std::string& name, MaterialNeeds& needs);
+
+    const tinygltf::Model& model_;
+    const std::string& file_;
+    MaterialTables tables_;
+};
+
+uint32_t MaterialConverter::textureRef(int texture, int texCoord,
+                                       const tinygltf::ExtensionMap& extensions, bool srgb,
+                                       const std::string& slot, MaterialNeeds& needs) {
+    if (texture == -1) {
+        return WF_NO_TEXTURE;
+    }
+    checkIndex(file_, texture, model_.textures.size(), "texture", slot);
+    const tinygltf::Texture& t = model_.textures[texture];
+    const std::string textureName = "texture " + std::to_string(texture);
+    if (t.source == -1) { // e.g. only an EXT_texture_webp source, which tinygltf drops
+        warn(file_, textureName + " has no PNG or JPEG source; " + slot + " is ignored");
+        return WF_NO_TEXTURE;
+    }
+    checkIndex(file_, t.source, model_.images.size(), "image", textureName);
+    TextureRef ref{};
+    ref.uRow = glm::vec3(1, 0, 0);
+    ref.vRow = glm::vec3(0, 1, 0);
+    uint32_t wrapS = WF_WRAP_REPEAT, wrapT = WF_WRAP_REPEAT;
+    if (t.sampler != -1) {
+        checkIndex(file_, t.sampler, model_.samplers.size(), "sampler", textureName);
+        const tinygltf::Sampler& sampler = model_.samplers[t.sampler];
+        wrapS = wrapMode(sampler.wrapS);
+        wrapT = wrapMode(sampler.wrapT);
+        ref.flags |= sampler.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST ? WF_TEXTURE_NEAREST : 0u;
+    }
+    ref.flags |= wrapS | wrapT << 2 | (srgb ? WF_TEXTURE_SRGB : 0u);
+    // KHR_texture_transform: uv' = T * R * S * uv, and it may override the UV set.
+    const tinygltf::Value& transform = extension(extensions, "KHR_texture_transform");
+    if (transform.IsObject()) {
+        const std::vector<double> offset = numbers(transform, "offset", 2, {0.0, 0.0});
+        const std::vector<double> scale = numbers(transform, "scale", 2, {1.0, 1.0});
+        const double rotation = number(transform, "rotation", 0.0);
+        const double set = number(transform, "texCoord", texCoord);
+        texCoord = std::isfinite(set) ? int(std::clamp(set, -1.0, 1e6)) : -1;
+        const double c = std::cos(rotation), s = std::sin(rotation);
+        ref.uRow = glm::vec3(float(c * scale[0]), float(s * scale[1]), float(offset[0]));
+        ref.vRow = glm::vec3(float(-s * scale[0]), float(c * scale[1]), float(offset[1]));
+        const glm::vec3 sum = ref.uRow + ref.vRow;
+        if (!std::isfinite(sum.x + sum.y + sum.z)) {
+            fail(file_, slot + ": KHR_texture_transform needs finite numbers");
+        }
+    }
+    if (texCoord < 0 || texCoord > 1) {
+        warn(file_, slot + " uses TEXCOORD_" + std::to_string(texCoord) +
+                        "; only TEXCOORD_0 and TEXCOORD_1 are supported, using TEXCOORD_0");
+        texCoord = 0;
+    }
+    ref.flags |= texCoord == 1 ? WF_TEXTURE_TEXCOORD1 : 0u;
+    (texCoord == 1 ? needs.uv1 : needs.uv0) = true;
+    tables_.imageUsed[t.source] = true;
+    tables_.refs.push_back(ref);
+    tables_.refImage.push_back(uint32_t(t.source));
+    return uint32_t(tables_.refs.size() - 1);
+}
+
+Material MaterialConverter::convert(const tinygltf::Material& m, const std::string& name,
+                                    MaterialNeeds& needs) {
+    const auto& pbr = m.pbrMetallicRoughness;
+    Material out = defaultMaterial();
+    if (pbr.baseColorFactor.size() != 4 || m.emissiveFactor.size() != 3) {
+        fail(file_, name + ": baseColorFactor needs 4 numbers and emissiveFactor 3");
+    }
+    for (int c = 0; c < 4; ++c) {
+        checkRange(name, "baseColorFactor", pbr.baseColorFactor[c], 0.0, 1.0);
+        out.baseColor[c] = float(pbr.baseColorFactor[c]);
+    }
+    checkRange(name, "metallicFactor", pbr.metallicFactor, 0.0, 1.0);
+    checkRange(name, "roughnessFactor", pbr.roughnessFactor, 0.0, 1.0);
+    out.metallic = float(pbr.metallicFactor);
+    out.roughness = float(pbr.roughnessFactor);
+    out.specular = 1.0f; // the glTF BRDF's dielectric layer, unless KHR_materials_specular
+    const double strength =
+        number(extension(m.extensions, "KHR_materials_emissive_strength"), "emissiveStrength", 1);
+    for (int c = 0; c < 3; ++c) {
+        out.emission[c] = float(m.emissiveFactor[c] * strength);
+        if (!(m.emissiveFactor[c] >= 0.0 && strength >= 0.0 && std::isfinite(out.emission[c]))) {
+            fail(file_, name + ": emissiveFactor and emissiveStrength must be finite and >= 0");
+        }
+    }
+    out.flags = m.doubleSided ? WF_MATERIAL_DOUBLE_SIDED : 0u;
+    if (m.alphaMode == "MASK" || m.alphaMode == "BLEND") {
+        checkRange(name, "alphaCutoff", m.alphaCutoff, 0.0, 1e30);
+        out.alphaCutoff = float(m.alphaCutoff);
+        out.flags |= m.alphaMode == "MASK" ? WF_MATERIAL_ALPHA_MASK : WF_MATERIAL_ALPHA_BLEND;
+    } else if (m.alphaMode != "OPAQUE") {
+        fail(file_, name + ": alphaMode must be OPAQUE, MASK or BLEND");
+    }
+    const tinygltf::Value& ior = extension(m.extensions, "KHR_materials_ior");
+    out.ior = float(number(ior, "ior", 1.5));
+    if (!(out.ior >= 1.0f && out.ior <= 10.0f)) {
+        warn(file_, name + ": KHR_materials_ior ior must lie in [1, 10]; using 1.5");
+        out.ior = 1.5f;
+    }
+    const tinygltf::Value& transmission = extension(m.extensions, "KHR_materials_transmission");
+    out.transmission = float(number(transmission, "transmissionFactor", 0.0));
+    checkRange(name, "transmissionFactor", out.transmission, 0.0, 1.0);
+    const tinygltf::Value& specular = extension(m.extensions, "KHR_materials_specular");
+    if (specular.IsObject()) {
+        out.specular = float(number(specular, "specularFactor", 1.0));
+        checkRange(name, "specularFactor", out.specular, 0.0, 1.0);
+        const std::vector<double> color = numbers(specular, "specularColorFactor", 3, {1, 1, 1});
+        for (int c = 0; c < 3; ++c) {
+            checkRange(name, "specularColorFactor", color[c], 0.0, 1e30);
+            out.specularColor[c] = float(color[c]);
+        }
+    }
+    checkRange(name, "normalTexture.scale", m.normalTexture.scale, -1e30, 1e30);
+    out.normalScale = float(m.normalTexture.scale);
+
+    const auto& base = pbr.baseColorTexture;
+    const auto& mr = pbr.metallicRoughnessTexture;
+    const auto& normal = m.normalTexture;
+    const auto& emissive = m.emissiveTexture;
+    out.baseColorTexture = textureRef(base.index, base.texCoord, base.extensions, true,
+                                      name + " baseColorTexture", needs);
+    out.metallicRoughnessTexture = textureRef(mr.index, mr.texCoord, mr.extensions, false,
+                                              name + " metallicRoughnessTexture", needs);
+    out.normalTexture = textureRef(normal.index, normal.texCoord, normal.extensions, false,
+                                   name + " normalTexture", needs);
+    out.emissiveTexture = textureRef(emissive.index, emissive.texCoord, emissive.extensions,
+                                     true, name + " emissiveTexture", needs);
+    if (transmission.IsObject() && transmission.Has("transmissionTexture")) {
+        const tinygltf::Value& info = transmission.Get("transmissionTexture");
+        const double index = number(info, "index", -1.0);
+        if (!(index >= 0.0 && index < 2147483647.0)) {
+            fail(file_, name + ": transmissionTexture needs a texture index");
+        }
+        const double set = number(info, "texCoord", 0.0);
+        const int texCoord = std::isfinite(set) ? int(std::clamp(set, -1.0, 1e6)) : -1;
+        out.transmissionTexture =
+            textureRef(int(index), texCoord, {}, false, name + " transmissionTexture", needs);
+    }
+    if (out.normalTexture != WF_NO_TEXTURE) {
+        const TextureRef& ref = tables_.refs[out.normalTexture];
+        needs.normalMapTexCoord = (ref.flags & WF_TEXTURE_TEXCOORD1) ? 1 : 0;
+    }
+    return out;
+}
+
+MaterialTables MaterialConverter::run() {
+    tables_.materials.reserve(model_.materials.size());
+    for (size_t i = 0; i < model_.materials.size(); ++i) {
+        MaterialNeeds needs;
+        tables_.materials.push_back(
+            convert(model_.materials[i], "material " + std::to_string(i), needs));
+        tables_.needs.push_back(needs);
+    }
+    return std::move(tables_);
+}
+
+} // namespace
+
+bool isSupportedExtension(const std::string& name) { return SUPPORTED_EXTENSIONS.count(name); }
+
+Material defaultMaterial() {
+    Material m{};
+    m.baseColor = glm::vec4(0.8f, 0.8f, 0.8f, 1.0f);
+    m.metallic = 0.0f;
+    m.roughness = 1.0f;
+    m.ior = 1.5f;
+    m.specular = 0.0f; // exact Lambert, as README promises for primitives without a material
+    m.specularColor = glm::vec3(1.0f);
+    m.alphaCutoff = 0.5f;
+    m.normalScale = 1.0f;
+    m.baseColorTexture = m.metallicRoughnessTexture = m.normalTexture = m.emissiveTexture =
+        m.transmissionTexture = WF_NO_TEXTURE;
+    return m;
+}
+
+MaterialTables convertMaterials(const tinygltf::Model& model, const std::string& file) {
+    return MaterialConverter(model, file).run();
+}
+
+} // namespace wf::gltf

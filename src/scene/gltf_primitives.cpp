@@ -1,0 +1,245 @@
+// Primitive assembly. Attributes are looked up per corner through the same vertex index as the
+// position, so indexed, non-indexed, strip and fan primitives share one loop.
+#include "scene/gltf_primitives.h"
+
+#include <tiny_gltf.h>
+
+#include <cmath>
+#include <iostream>
+#include <limits>
+
+#include <glm/gtc/packing.hpp>
+#include <glm/gtc/matrix_inverse.hpp>
+
+namespace wf::gltf {
+namespace {
+
+// The GPU normalizes cross(p1 - p0, p2 - p0) in float; a triangle whose float cross product
+// has no normal-range length would give it a NaN normal, so such triangles count as zero area.
+bool isDegenerate(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+    const glm::vec3 n = glm::cross(b - a, c - a);
+    return !(glm::dot(n, n) >= std::numeric_limits<float>::min());
+}
+
+bool finite(const glm::vec3& v) { return std::isfinite(v.x + v.y + v.z); }
+
+// Any unit vector orthogonal to n (Duff et al. 2017).
+glm::vec3 orthogonal(const glm::vec3& n) {
+    const float s = std::copysign(1.0f, n.z);
+    const float a = -1.0f / (s + n.z);
+    return glm::vec3(1.0f + s * n.x * n.x * a, s * n.x * n.y * a, -s * n.x);
+}
+
+} // namespace
+
+uint32_t octEncode(glm::vec3 n) {
+    n /= std::abs(n.x) + std::abs(n.y) + std::abs(n.z);
+    glm::vec2 e(n.x, n.y);
+    if (n.z < 0.0f) {
+        e = glm::vec2((1.0f - std::abs(n.y)) * (n.x >= 0.0f ? 1.0f : -1.0f),
+                      (1.0f - std::abs(n.x)) * (n.y >= 0.0f ? 1.0f : -1.0f));
+    }
+    return glm::packSnorm2x16(e);
+}
+
+PrimitiveBuilder::PrimitiveBuilder(const tinygltf::Model& model, const std::string& file,
+                                   const MaterialTables& materials, uint32_t defaultMaterial)
+    : model_(model), file_(file), materials_(materials), defaultMaterial_(defaultMaterial),
+      reader_(model, file) {}
+
+std::vector<uint32_t> PrimitiveBuilder::corners(int mode, size_t vertexCount, int indices,
+                                                const std::string& where) {
+    const std::vector<uint32_t> order =
+        indices != -1 ? reader_.indices(indices, vertexCount, where) : std::vector<uint32_t>{};
+    const size_t n = indices != -1 ? order.size() : vertexCount;
+    auto v = [&](size_t i) { return indices != -1 ? order[i] : uint32_t(i); };
+    if (mode == TINYGLTF_MODE_TRIANGLES && n % 3 != 0) {
+        fail(file_, where + ": " + std::to_string(n) + " vertices do not make whole triangles");
+    }
+    const size_t triangles = mode == TINYGLTF_MODE_TRIANGLES ? n / 3 : (n >= 3 ? n - 2 : 0);
+    if (triangles > MAX_TRIANGLES - triangles_.size()) {
+        fail(file_, "more than " + std::to_string(MAX_TRIANGLES) + " triangles");
+    }
+    std::vector<uint32_t> out;
+    out.reserve(triangles * 3);
+    for (size_t i = 0; i < triangles; ++i) {
+        if (mode == TINYGLTF_MODE_TRIANGLES) {
+            out.insert(out.end(), {v(3 * i), v(3 * i + 1), v(3 * i + 2)});
+        } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) { // every other one flipped back
+            out.insert(out.end(), {v(i), v(i + 1 + i % 2), v(i + 2 - i % 2)});
+        } else { // fan
+            out.insert(out.end(), {v(i + 1), v(i + 2), v(0)});
+        }
+    }
+    return out;
+}
+
+void PrimitiveBuilder::add(const tinygltf::Primitive& primitive, const std::string& where,
+                           const glm::dmat4& world) {
+    const int mode = primitive.mode;
+    if (mode >= TINYGLTF_MODE_POINTS && mode <= TINYGLTF_MODE_LINE_STRIP) {
+        ++skippedPrimitives_;
+        return;
+    }
+    if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+        mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+        fail(file_, where + ": mode " + std::to_string(mode) + " is not a glTF primitive mode");
+    }
+    auto attribute = [&](const char* key) {
+        auto found = primitive.attributes.find(key);
+        return found == primitive.attributes.end() ? -1 : found->second;
+    };
+    if (attribute("POSITION") == -1) {
+        fail(file_, where + " has no POSITION attribute");
+    }
+    const FloatArray& points = reader_.floats(attribute("POSITION"), "POSITION of " + where, 3);
+    uint32_t material = defaultMaterial_;
+    MaterialNeeds needs;
+    if (primitive.material == -1) {
+        usedDefault_ = true;
+    } else {
+        checkIndex(file_, primitive.material, materials_.materials.size(), "material", where);
+        material = uint32_t(primitive.material);
+        needs = materials_.needs[material];
+    }
+    // Optional attributes must have one element per vertex.
+    auto optional = [&](const char* key, int components, bool wanted) -> const FloatArray* {
+        if (!wanted || attribute(key) == -1) {
+            return nullptr;
+        }
+        const FloatArray& array =
+            reader_.floats(attribute(key), std::string(key) + " of " + where, components);
+        if (array.count != points.count) {
+            fail(file_, where + ": " + key + " has " + std::to_string(array.count) +
+                            " elements but POSITION has " + std::to_string(points.count));
+        }
+        return &array;
+    };
+    const FloatArray* normals = optional("NORMAL", 3, true);
+    const FloatArray* uvs[2] = {optional("TEXCOORD_0", 2, needs.uv0 || needs.uv1),
+                                optional("TEXCOORD_1", 2, needs.uv1)};
+    const bool normalMap = needs.normalMapTexCoord >= 0;
+    const FloatArray* tangents = optional("TANGENT", 4, normalMap);
+    if ((needs.uv0 && !uvs[0]) || (needs.uv1 && !uvs[1])) {
+        ++missingUvs_;
+    }
+    needUv0_ |= needs.uv0;
+    needUv1_ |= needs.uv1;
+    needTangents_ |= normalMap;
+
+    const std::vector<uint32_t> order = corners(mode, points.count, primitive.indices, where);
+    // A mirroring transform turns counter-clockwise into clockwise; swapping two corners keeps
+    // the front face where the file meant it. Normals transform by the inverse transpose.
+    const glm::dmat3 linear(world);
+    const bool mirrored = glm::determinant(linear) < 0.0;
+    const glm::dmat3 normalMatrix = glm::inverseTranspose(linear);
+    for (size_t t = 0; t < order.size(); t += 3) {
+        uint32_t idx[3] = {order[t], order[t + 1], order[t + 2]};
+        if (mirrored) {
+            std::swap(idx[1], idx[2]);
+        }
+        glm::vec3 p[3];
+        for (int k = 0; k < 3; ++k) {
+            const float* q = points[idx[k]];
+            p[k] = glm::vec3(world * glm::dvec4(q[0], q[1], q[2], 1.0));
+            if (!finite(p[k])) {
+                fail(file_, where + ": a vertex is not finite after the node transforms");
+            }
+        }
+        if (isDegenerate(p[0], p[1], p[2])) {
+            ++degenerateTriangles_;
+            continue;
+        }
+        triangles_.push_back(Triangle{p[0], material, p[1], WF_NO_EMITTER, p[2], 0u});
+        const glm::vec3 ng = glm::normalize(glm::cross(p[1] - p[0], p[2] - p[0]));
+        glm::vec3 n[3] = {ng, ng, ng};
+        for (int k = 0; k < 3 && normals; ++k) {
+            const float* q = (*normals)[idx[k]];
+            const glm::vec3 shading(glm::normalize(normalMatrix * glm::dvec3(q[0], q[1], q[2])));
+            n[k] = finite(shading) ? shading : ng; // a zero NORMAL falls back to flat
+            smoothNormals_ |= glm::dot(n[k], ng) < 0.9999f;
+        }
+        surface_.normals.push_back({octEncode(n[0]), octEncode(n[1]), octEncode(n[2]), 0u});
+        TriangleUvs uv[2] = {};
+        for (int set = 0; set < 2; ++set) {
+            glm::vec2* corner[3] = {&uv[set].uv0, &uv[set].uv1, &uv[set].uv2};
+            for (int k = 0; k < 3 && uvs[set]; ++k) {
+                *corner[k] = glm::vec2((*uvs[set])[idx[k]][0], (*uvs[set])[idx[k]][1]);
+            }
+        }
+        if (needUv0_) {
+            surface_.uv0.resize(triangles_.size() - 1);
+            surface_.uv0.push_back(uv[0]);
+        }
+        if (needUv1_) {
+            surface_.uv1.resize(triangles_.size() - 1);
+            surface_.uv1.push_back(uv[1]);
+        }
+        if (!needTangents_) {
+            continue;
+        }
+        TriangleTangents frame{};
+        if (normalMap && tangents) {
+            uint32_t packed[3];
+            for (int k = 0; k < 3; ++k) {
+                const float* q = (*tangents)[idx[k]];
+                glm::vec3 axis(glm::normalize(linear * glm::dvec3(q[0], q[1], q[2])));
+                packed[k] = octEncode(finite(axis) ? axis : orthogonal(n[k]));
+                frame.signs |= ((q[3] < 0.0f) != mirrored) ? 1u << k : 0u;
+            }
+            frame = {packed[0], packed[1], packed[2], frame.signs};
+        } else if (normalMap) {
+            // Per triangle from the normal map's UVs: T = dP/du; glTF's v runs down the image,
+            // so the bitangent of an unmirrored mapping is -dP/dv = cross(n, T).
+            const TriangleUvs& m = uv[needs.normalMapTexCoord];
+            const glm::vec3 e1 = p[1] - p[0], e2 = p[2] - p[0];
+            const glm::vec2 d1 = m.uv1 - m.uv0, d2 = m.uv2 - m.uv0;
+            const float det = d1.x * d2.y - d2.x * d1.y;
+            glm::vec3 axis = (e1 * d2.y - e2 * d1.y) / det;
+            const glm::vec3 dpdv = (e2 * d1.x - e1 * d2.x) / det;
+            const bool usable = finite(axis) && finite(dpdv) && glm::length(axis) > 0.0f;
+            axis = usable ? glm::normalize(axis) : orthogonal(ng);
+            const bool flip = usable && glm::dot(glm::cross(ng, axis), -dpdv) < 0.0f;
+            const uint32_t packed = octEncode(axis);
+            frame = {packed, packed, packed, flip ? 7u : 0u};
+        }
+        surface_.tangents.resize(triangles_.size() - 1);
+        surface_.tangents.push_back(frame);
+    }
+}
+
+void PrimitiveBuilder::finish(Scene& scene) {
+    if (skippedPrimitives_ > 0) {
+        warn(file_, "skipped " + std::to_string(skippedPrimitives_) +
+                        " point or line primitives (only triangles are rendered)");
+    }
+    if (missingUvs_ > 0) {
+        warn(file_, std::to_string(missingUvs_) + " textured primitives lack the TEXCOORD "
+                    "attribute their textures use; they sample one texel");
+    }
+    if (degenerateTriangles_ > 0) {
+        std::cerr << "note: " << file_ << ": dropped " << degenerateTriangles_
+                  << " degenerate triangles\n";
+    }
+    const size_t n = triangles_.size();
+    // Arrays that some triangle needed are padded to one entry per triangle; the others go.
+    auto keep = [n](auto& array, bool needed) {
+        if (needed) {
+            array.resize(n);
+        } else {
+            array.clear();
+            array.shrink_to_fit();
+        }
+    };
+    keep(surface_.tangents, needTangents_);
+    keep(surface_.normals, smoothNormals_ || needTangents_);
+    keep(surface_.uv0, needUv0_);
+    keep(surface_.uv1, needUv1_);
+    scene.triangles = std::move(triangles_);
+    scene.surface.normals = std::move(surface_.normals);
+    scene.surface.tangents = std::move(surface_.tangents);
+    scene.surface.uv0 = std::move(surface_.uv0);
+    scene.surface.uv1 = std::move(surface_.uv1);
+}
+
+} // namespace wf::gltf

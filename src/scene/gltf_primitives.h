@@ -1,0 +1,62 @@
+// One glTF primitive to world-space triangles plus, per triangle, what shading may need:
+// shading normals (NORMAL, else flat), UVs (TEXCOORD_0/1) and tangents (TANGENT, else made per
+// triangle from the normal map's UVs). Triangle lists, strips and fans; indexed or not. The
+// loader decides at the end which of the collected attributes the scene keeps.
+#pragma once
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+
+#include "scene/gltf_accessors.h"
+#include "scene/gltf_materials.h"
+#include "scene/scene.h"
+
+namespace tinygltf {
+class Model;
+struct Primitive;
+} // namespace tinygltf
+
+namespace wf::gltf {
+
+// Far above what the GPU buffers hold; it only stops a small file that instances a big mesh
+// from thousands of nodes from exhausting memory here.
+constexpr std::size_t MAX_TRIANGLES = std::size_t(1) << 24;
+
+// Octahedral encoding of a unit vector in two 16-bit snorms (decoded by octDecode).
+uint32_t octEncode(glm::vec3 n);
+
+class PrimitiveBuilder {
+public:
+    // `materials` and `defaultMaterial` (the index primitives without material get) must
+    // outlive the builder; so must model and file.
+    PrimitiveBuilder(const tinygltf::Model& model, const std::string& file,
+                     const MaterialTables& materials, uint32_t defaultMaterial);
+
+    void add(const tinygltf::Primitive& primitive, const std::string& where,
+             const glm::dmat4& world);
+    // Moves the triangles into `scene` and keeps only the attributes the scene needs.
+    void finish(Scene& scene);
+    bool usedDefaultMaterial() const { return usedDefault_; }
+
+private:
+    std::vector<uint32_t> corners(int mode, size_t vertexCount, int indices,
+                                  const std::string& where);
+
+    const tinygltf::Model& model_;
+    const std::string& file_;
+    const MaterialTables& materials_;
+    uint32_t defaultMaterial_;
+    AccessorReader reader_;
+    std::vector<Triangle> triangles_;
+    SurfaceData surface_; // every attribute array filled for every triangle
+    bool usedDefault_ = false;
+    bool smoothNormals_ = false; // some NORMAL differs from the flat normal
+    bool needUv0_ = false, needUv1_ = false, needTangents_ = false;
+    size_t skippedPrimitives_ = 0;
+    size_t degenerateTriangles_ = 0;
+    size_t missingUvs_ = 0;
+};
+
+} // namespace wf::gltf

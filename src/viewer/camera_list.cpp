@@ -1,0 +1,57 @@
+#include "viewer/camera_list.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "scene/default_camera.h"
+
+namespace wf {
+namespace {
+
+bool sameCamera(const Camera& a, const Camera& b) {
+    return a.position == b.position && a.forward == b.forward && a.up == b.up &&
+           a.yfov == b.yfov;
+}
+
+} // namespace
+
+CameraList viewerCameras(const Scene& scene) {
+    CameraList list;
+    bool renderCameraListed = false;
+    for (size_t i = 0; i < scene.cameras.size(); ++i) {
+        std::string name = i < scene.cameraNames.size() && !scene.cameraNames[i].empty()
+                               ? scene.cameraNames[i]
+                               : "camera " + std::to_string(i);
+        if (scene.hasCamera && !renderCameraListed && sameCamera(scene.cameras[i], scene.camera)) {
+            list.renderDefault = static_cast<uint32_t>(list.cameras.size());
+            renderCameraListed = true;
+        }
+        list.cameras.push_back({std::move(name), scene.cameras[i]});
+    }
+    if (scene.hasCamera && !renderCameraListed) {
+        list.renderDefault = 0;
+        list.cameras.insert(list.cameras.begin(), {"file camera", scene.camera});
+    }
+    list.cameras.push_back({"framing camera", frameBounds(scene)});
+    if (!scene.hasCamera) // `render` frames the scene itself when the file has no camera
+        list.renderDefault = static_cast<uint32_t>(list.cameras.size() - 1);
+    return list;
+}
+
+ViewBounds viewBounds(const Scene& scene) {
+    ViewBounds bounds;
+    if (scene.triangles.empty())
+        return bounds;
+    glm::vec3 lo(std::numeric_limits<float>::max());
+    glm::vec3 hi(-std::numeric_limits<float>::max());
+    for (const Triangle& tri : scene.triangles)
+        for (const glm::vec3& p : {tri.p0, tri.p1, tri.p2}) {
+            lo = glm::min(lo, p);
+            hi = glm::max(hi, p);
+        }
+    bounds.center = 0.5f * (lo + hi);
+    bounds.radius = std::max(0.5f * glm::length(hi - lo), 1e-6f);
+    return bounds;
+}
+
+} // namespace wf

@@ -1,0 +1,207 @@
+#include "viewer/overlay.h"
+
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_vulkan.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "gpu/context.h"
+#include "gpu/vk_check.h"
+#include "render/wavefront_renderer.h"
+
+namespace wf {
+
+const char* const kViewerControlsHelp =
+    "  left drag            orbit around the target\n"
+    "  middle / shift+left  pan\n"
+    "  wheel                dolly towards / away from the target\n"
+    "  right drag           look around (fly)\n"
+    "  W A S D, Q E         fly forward, left, back, right, down, up (shift: faster)\n"
+    "  C, 1-9               next camera, camera N (the file's, then the framing camera)\n"
+    "  R                    reset the view to the current camera and restart\n"
+    "  Space                pause / resume refinement\n"
+    "  F12 or P             screenshot: SCENE-NNN.exr (radiance) + .png (as shown)\n"
+    "  H                    show / hide this overlay\n"
+    "  Esc                  quit\n";
+
+namespace {
+
+void checkImGuiVk(VkResult result) {
+    if (result < 0) // ImGui also reports VK_SUCCESS; only errors are negative
+        throwVkError("Dear ImGui Vulkan backend", result, __FILE__, __LINE__);
+}
+
+double perSecond(double count, double seconds) { return seconds > 0.0 ? count / seconds : 0.0; }
+
+void statsSection(const OverlayFacts& facts) {
+    ImGui::Text("%s", facts.scene.c_str());
+    ImGui::TextDisabled("%s", facts.device.c_str());
+    ImGui::Text("%u x %u%s", facts.width, facts.height,
+                facts.previewDivisor > 1 ? "  (moving: preview)" : "");
+    if (facts.previewDivisor > 1)
+        ImGui::Text("preview 1/%u resolution", facts.previewDivisor);
+    ImGui::Text("spp %u%s   +%u this frame", facts.spp, facts.paused ? " (paused)" : "",
+                facts.samplesThisFrame);
+    ImGui::Text("frame %.1f ms", facts.frameMs);
+    if (!facts.stats)
+        return;
+    const RenderStats& s = *facts.stats;
+    const double rays = double(s.cameraRays + s.extensionRays + s.shadowRays);
+    ImGui::Text("%.3g spp/s   %.3g paths/s", perSecond(s.samplesPerPixel, s.seconds),
+                perSecond(double(s.paths), s.seconds));
+    ImGui::Text("%.3g rays/s (camera %.3g, extension %.3g, shadow %.3g)",
+                perSecond(rays, s.seconds), perSecond(double(s.cameraRays), s.seconds),
+                perSecond(double(s.extensionRays), s.seconds),
+                perSecond(double(s.shadowRays), s.seconds));
+    if (s.samplesPerPixel > 0 &&
+        ImGui::BeginTable("passes", 2, ImGuiTableFlags_SizingFixedFit)) {
+        // Summed over the waves since the last restart, shown per sample per pixel.
+        for (const auto& [pass, ms] : s.passMilliseconds) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::Text("%s", pass.c_str());
+            ImGui::TableNextColumn();
+            ImGui::Text("%8.2f ms/spp", ms / s.samplesPerPixel);
+        }
+        ImGui::EndTable();
+    }
+}
+
+// One control per ViewSettings field that changes the image, labelled as its flag. New
+// RenderSettings fields (a sampler, a light-sampling strategy) get their row here and their
+// flag in view_command.cpp, and set renderChanged like max-depth does.
+void renderSection(ViewSettings& settings, OverlayActions& actions) {
+    int maxDepth = int(settings.maxDepth), rrDepth = int(settings.rrDepth);
+    int seed = int(settings.seed), spp = int(settings.sppLimit);
+    ImGui::SliderInt("--max-depth", &maxDepth, 1, 64);
+    if (ImGui::IsItemDeactivatedAfterEdit()) { // rebuilding per slider step would stall
+        settings.maxDepth = uint32_t(maxDepth);
+        actions.renderChanged = true;
+    }
+    ImGui::SliderInt("--rr-depth", &rrDepth, 0, 64);
+    if (ImGui::IsItemDeactivatedAfterEdit()) {
+        settings.rrDepth = uint32_t(rrDepth);
+        actions.renderChanged = true;
+    }
+    if (ImGui::InputInt("--seed", &seed) && seed >= 0) {
+        settings.seed = uint32_t(seed);
+        actions.renderChanged = true;
+    }
+    if (ImGui::InputInt("--spp (0: no limit)", &spp, 16) && spp >= 0)
+        settings.sppLimit = uint32_t(spp);
+}
+
+void displaySection(ViewSettings& settings, OverlayActions& actions) {
+    actions.displayChanged |= ImGui::SliderFloat("--exposure (EV)", &settings.exposure, -10.0f,
+                                                 10.0f, "%.1f");
+    int tonemap = int(settings.tonemap);
+    if (ImGui::Combo("--tonemap", &tonemap, "linear (clamp)\0aces (Narkowicz fit)\0")) {
+        settings.tonemap = Tonemap(tonemap);
+        actions.displayChanged = true;
+    }
+    float targetMs = float(settings.targetMs);
+    if (ImGui::SliderFloat("--target-ms", &targetMs, 5.0f, 1000.0f, "%.0f",
+                           ImGuiSliderFlags_Logarithmic)) {
+        settings.targetMs = targetMs;
+        actions.targetChanged = true;
+    }
+}
+
+} // namespace
+
+Overlay::Overlay(const Context& context, GLFWwindow* window, VkRenderPass renderPass,
+                 float scale)
+    : device_(context.device()) {
+    // The backend needs one combined image sampler: the font atlas.
+    VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1};
+    VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    poolInfo.flags = VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT;
+    poolInfo.maxSets = 1;
+    poolInfo.poolSizeCount = 1;
+    poolInfo.pPoolSizes = &size;
+    VK_CHECK(vkCreateDescriptorPool(device_, &poolInfo, nullptr, &pool_));
+
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr; // no imgui.ini left in the user's working folder
+    io.FontGlobalScale = scale;
+    ImGui::StyleColorsDark();
+    ImGui::GetStyle().ScaleAllSizes(scale);
+    ImGui_ImplGlfw_InitForVulkan(window, true);
+
+    ImGui_ImplVulkan_InitInfo info{};
+    info.Instance = context.instance();
+    info.PhysicalDevice = context.physicalDevice();
+    info.Device = device_;
+    info.QueueFamily = context.queueFamily();
+    info.Queue = context.queue();
+    info.DescriptorPool = pool_;
+    // Frames are presented one at a time (the presenter waits), so two vertex-buffer sets
+    // (the backend's minimum) never overlap.
+    info.MinImageCount = 2;
+    info.ImageCount = 2;
+    info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
+    info.CheckVkResultFn = checkImGuiVk;
+    ImGui_ImplVulkan_Init(&info, renderPass);
+    context.submitAndWait([](VkCommandBuffer cmd) { ImGui_ImplVulkan_CreateFontsTexture(cmd); });
+    ImGui_ImplVulkan_DestroyFontUploadObjects();
+}
+
+Overlay::~Overlay() {
+    vkDeviceWaitIdle(device_);
+    ImGui_ImplVulkan_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    vkDestroyDescriptorPool(device_, pool_, nullptr);
+}
+
+void Overlay::newFrame() {
+    ImGui_ImplVulkan_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+}
+
+bool Overlay::wantsMouse() const { return ImGui::GetIO().WantCaptureMouse; }
+bool Overlay::wantsKeyboard() const { return ImGui::GetIO().WantCaptureKeyboard; }
+
+OverlayActions Overlay::build(const OverlayFacts& facts, ViewSettings& settings, bool visible) {
+    OverlayActions actions;
+    if (visible) {
+        ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowBgAlpha(0.75f);
+        ImGui::Begin("Wavefront", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+        statsSection(facts);
+        if (ImGui::CollapsingHeader("Render", ImGuiTreeNodeFlags_DefaultOpen))
+            renderSection(settings, actions);
+        if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen))
+            displaySection(settings, actions);
+        if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) {
+            int camera = int(facts.camera);
+            std::string items;
+            for (const std::string& name : facts.cameraNames)
+                items += name + '\0';
+            if (ImGui::Combo("--camera", &camera, items.c_str()))
+                actions.selectCamera = camera;
+            actions.resetView = ImGui::Button("Reset view (R)");
+            ImGui::SameLine();
+            actions.restart = ImGui::Button("Restart");
+        }
+        actions.togglePause = ImGui::Button(facts.paused ? "Resume (Space)" : "Pause (Space)");
+        ImGui::SameLine();
+        actions.screenshot = ImGui::Button("Screenshot (F12)");
+        if (ImGui::CollapsingHeader("Keys"))
+            ImGui::TextUnformatted(kViewerControlsHelp);
+        ImGui::End();
+    }
+    ImGui::Render();
+    return actions;
+}
+
+void Overlay::record(VkCommandBuffer cmd) const {
+    ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd);
+}
+
+} // namespace wf

@@ -1,0 +1,90 @@
+#include "viewer/render_targets.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include "gpu/buffer.h"
+#include "render/scene_buffers.h"
+
+namespace wf {
+
+RenderTargets::RenderTargets(const Context& context, const ShaderCompiler& compiler,
+                             const PreparedScene& scene)
+    : context_(context), compiler_(compiler), scene_(scene) {}
+
+void RenderTargets::rebuild(VkExtent2D size, const RenderSettings& settings,
+                            const Buffer& displayBuffer) {
+    // Keep the measured cost across a rebuild of the same size: the next frame's budget and
+    // the preview choice stay sensible instead of starting again from one sample.
+    const bool sameSize = size.width == size_.width && size.height == size_.height;
+    const SampleBudget budget = full_.budget;
+    preview_ = {};
+    full_ = {};
+    size_ = size;
+    settings_ = settings;
+    settings_.width = size.width;
+    settings_.height = size.height;
+    // Only the path-buffer size depends on the renderer's wave limit; the frame's work is
+    // bounded by the samples requested, so the default limit stays.
+    settings_.samplesPerPixel = 1u << 30;
+    displayBuffer_ = &displayBuffer;
+    full_ = makeTarget(1);
+    if (sameSize)
+        full_.budget = budget;
+}
+
+void RenderTargets::setTargetSeconds(double seconds) {
+    targetSeconds_ = seconds;
+    full_.budget.setTarget(seconds);
+    preview_.budget.setTarget(seconds);
+}
+
+RenderTarget RenderTargets::makeTarget(uint32_t divisor) {
+    RenderSettings settings = settings_;
+    settings.width = std::max(1u, size_.width / divisor);
+    settings.height = std::max(1u, size_.height / divisor);
+    RenderTarget target;
+    target.divisor = divisor;
+    target.budget = SampleBudget(targetSeconds_);
+    target.renderer = std::make_unique<WavefrontRenderer>(context_, scene_, settings, compiler_);
+    target.display = std::make_unique<DisplayPass>(
+        context_, compiler_, target.renderer->film(), DisplaySize{settings.width, settings.height},
+        *displayBuffer_, DisplaySize{size_.width, size_.height});
+    return target;
+}
+
+RenderTarget& RenderTargets::preview(uint32_t divisor) {
+    if (!preview_.renderer || preview_.divisor != divisor)
+        preview_ = makeTarget(divisor);
+    return preview_;
+}
+
+uint32_t RenderTargets::movingDivisor() const {
+    const double pixels = double(size_.width) * size_.height;
+    return previewDivisor(size_.width, size_.height, full_.budget.secondsPerSample() / pixels,
+                          targetSeconds_);
+}
+
+void RenderTargets::follow(RenderTarget& target, const Camera& camera, uint64_t version) {
+    if (target.cameraVersion == version)
+        return;
+    target.renderer->setCamera(camera);
+    target.cameraVersion = version;
+}
+
+uint32_t RenderTargets::render(RenderTarget& target, uint32_t sppLimit) {
+    uint32_t samples = target.budget.nextSamples();
+    const uint32_t done = target.renderer->samplesDone();
+    if (sppLimit > 0)
+        samples = std::min(samples, sppLimit > done ? sppLimit - done : 0u);
+    if (samples == 0)
+        return 0;
+    const auto start = std::chrono::steady_clock::now();
+    target.renderer->renderSamples(samples);
+    target.budget.record(
+        samples,
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    return samples;
+}
+
+} // namespace wf

@@ -1,0 +1,417 @@
+#include "viewer/viewer.h"
+
+#include <GLFW/glfw3.h>
+
+#include <signal.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "errors.h"
+#include "gpu/context.h"
+#include "render/scene_buffers.h"
+#include "scene/default_camera.h"
+#include "scene/gltf_loader.h"
+#include "viewer/camera_controller.h"
+#include "viewer/camera_list.h"
+#include "viewer/frame_presenter.h"
+#include "viewer/overlay.h"
+#include "viewer/render_targets.h"
+#include "viewer/screenshot.h"
+#include "viewer/viewer_input.h"
+#include "viewer/window.h"
+
+namespace wf {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// SIGINT and SIGTERM end the frame loop like Esc, so the device is idled and every object
+// destroyed in order; a second signal (SA_RESETHAND) kills at once.
+volatile sig_atomic_t quitSignalled = 0;
+void onQuitSignal(int) { quitSignalled = 1; }
+
+// The moving-camera preview stays this long after the last change, so that a drag that
+// pauses for a frame does not start a full-resolution sample (most of a second on lavapipe).
+constexpr double kPreviewHoldSeconds = 0.25;
+
+double secondsSince(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+PreparedScene loadScene(const std::string& path, CameraList& cameras, ViewBounds& bounds) {
+    Scene scene = loadGltf(path);
+    if (!scene.hasCamera)
+        scene.camera = frameBounds(scene); // as `wavefront render` does
+    cameras = viewerCameras(scene);
+    bounds = viewBounds(scene);
+    return prepareScene(std::move(scene));
+}
+
+// --width/--height as `wavefront render` reads them: a missing one follows the camera's aspect.
+WindowSize windowSize(const ViewerOptions& options, const Camera& camera) {
+    const double aspect = camera.aspect > 0.0f ? camera.aspect : 1.0;
+    int width = options.windowWidth, height = options.windowHeight;
+    if (width <= 0 && height <= 0)
+        width = 512;
+    if (height <= 0)
+        height = std::max(1, int(std::lround(width / aspect)));
+    else if (width <= 0)
+        width = std::max(1, int(std::lround(height * aspect)));
+    return {width, height};
+}
+
+uint32_t startCamera(const ViewerOptions& options, const CameraList& cameras) {
+    if (!options.camera)
+        return cameras.renderDefault;
+    if (*options.camera >= cameras.cameras.size())
+        throw UsageError("--camera " + std::to_string(*options.camera) + ": the scene offers " +
+                         std::to_string(cameras.cameras.size()) + " camera(s), 0 to " +
+                         std::to_string(cameras.cameras.size() - 1) +
+                         " (the file's, then the framing camera)");
+    return *options.camera;
+}
+
+std::string windowTitle(const std::string& scenePath) {
+    return "Wavefront - " + std::filesystem::path(scenePath).filename().string();
+}
+
+ContextOptions presentingContext(const ViewerOptions& options, const Window& window) {
+    ContextOptions context;
+    context.deviceIndex = options.device;
+    context.quiet = options.quiet;
+    context.instanceExtensions = window.instanceExtensions();
+    context.createSurface = [&window](VkInstance instance) {
+        return window.createSurface(instance);
+    };
+    return context;
+}
+
+class Viewer {
+public:
+    explicit Viewer(const ViewerOptions& options)
+        : options_(options), settings_(options.settings),
+          scene_(loadScene(options.scenePath, cameras_, bounds_)),
+          cameraIndex_(startCamera(options, cameras_)),
+          window_(windowTitle(options.scenePath),
+                  windowSize(options, cameras_.cameras[cameraIndex_].camera)),
+          context_(presentingContext(options, window_)),
+          controller_(cameras_.cameras[cameraIndex_].camera, bounds_.center, bounds_.radius),
+          presenter_(context_, waitForFramebuffer()),
+          overlay_(context_, window_.handle(), presenter_.overlayRenderPass(),
+                   window_.contentScale()),
+          targets_(context_, compiler_, scene_), input_(window_, overlay_),
+          overlayVisible_(options.overlay) {
+        framebuffer_ = window_.framebufferSize();
+        targets_.setTargetSeconds(settings_.targetMs / 1000.0);
+        rebuildTargets();
+    }
+
+    int run();
+
+private:
+    VkExtent2D waitForFramebuffer();
+    bool fitWindow(bool force);
+    void rebuildTargets();
+    void applyKeys(const WindowEvents& events);
+    void applyOverlay(const OverlayActions& actions);
+    void selectCamera(uint32_t index);
+    void cameraMoved() {
+        ++cameraVersion_;
+        lastMove_ = Clock::now();
+    }
+    RenderTarget& chooseTarget(bool forScreenshot);
+    OverlayFacts facts() const;
+    bool present(RenderTarget& target, bool keepPixels);
+    void saveScreenshot(const std::string& exrPath);
+    void captureScreenshot(const std::string& exrPath);
+    bool refining() const {
+        const uint32_t spp = targets_.fullSpp();
+        return !paused_ && (settings_.sppLimit == 0 || spp < settings_.sppLimit);
+    }
+
+    ViewerOptions options_;
+    ViewSettings settings_;
+    CameraList cameras_;
+    ViewBounds bounds_;
+    PreparedScene scene_;
+    uint32_t cameraIndex_;
+    Window window_; // outlives the context, which owns the window's surface
+    Context context_;
+    ShaderCompiler compiler_;
+    CameraController controller_;
+    FramePresenter presenter_;
+    Overlay overlay_;
+    RenderTargets targets_;
+    ViewerInput input_;
+    VkExtent2D framebuffer_{};
+    bool overlayVisible_;
+    bool paused_ = false;
+    bool screenshotRequested_ = false;
+    uint64_t cameraVersion_ = 0;
+    Clock::time_point lastMove_ = Clock::now() - std::chrono::hours(1);
+    // What the overlay shows about the frame before.
+    RenderStats shownStats_;
+    uint32_t shownSpp_ = 0;
+    uint32_t shownSamples_ = 0;
+    uint32_t shownDivisor_ = 1;
+    double frameMs_ = 0.0;
+    // For the closing summary.
+    uint64_t fullSamples_ = 0;
+};
+
+VkExtent2D Viewer::waitForFramebuffer() {
+    // A window can start minimised (zero-sized); there is nothing to present to until it is not.
+    for (VkExtent2D size = window_.framebufferSize();; size = window_.framebufferSize()) {
+        if (size.width > 0 && size.height > 0)
+            return size;
+        if (quitSignalled || window_.shouldClose())
+            throw InternalError("the viewer window was closed before it was shown");
+        window_.waitEvents(0.1);
+    }
+}
+
+bool Viewer::fitWindow(bool force) {
+    const VkExtent2D size = window_.framebufferSize();
+    if (size.width == 0 || size.height == 0)
+        return false; // minimised
+    if (!force && size.width == framebuffer_.width && size.height == framebuffer_.height)
+        return true;
+    framebuffer_ = size;
+    presenter_.resize(size);
+    rebuildTargets();
+    return true;
+}
+
+void Viewer::rebuildTargets() {
+    RenderSettings render;
+    render.maxDepth = settings_.maxDepth;
+    render.rrDepth = settings_.rrDepth;
+    render.seed = settings_.seed;
+    targets_.rebuild(presenter_.extent(), render, presenter_.displayBuffer());
+}
+
+void Viewer::selectCamera(uint32_t index) {
+    if (index >= cameras_.cameras.size())
+        return;
+    cameraIndex_ = index;
+    controller_.setCamera(cameras_.cameras[index].camera);
+    ++cameraVersion_; // a jump, not a drag: the next frame renders at full resolution
+}
+
+void Viewer::applyKeys(const WindowEvents& events) {
+    for (size_t i = 0; i < events.keysPressed.size(); ++i) {
+        const int key = events.keysPressed[i];
+        if (key == GLFW_KEY_ESCAPE)
+            window_.requestClose();
+        if (overlay_.wantsKeyboard()) // typing into an overlay field
+            continue;
+        if (key == GLFW_KEY_F12 || key == GLFW_KEY_P)
+            screenshotRequested_ = true;
+        else if (key == GLFW_KEY_SPACE)
+            paused_ = !paused_;
+        else if (key == GLFW_KEY_R)
+            selectCamera(cameraIndex_);
+        else if (key == GLFW_KEY_H)
+            overlayVisible_ = !overlayVisible_;
+        else if (key == GLFW_KEY_C)
+            selectCamera((cameraIndex_ + 1) % cameras_.cameras.size());
+        else if (key >= GLFW_KEY_1 && key <= GLFW_KEY_9)
+            selectCamera(static_cast<uint32_t>(key - GLFW_KEY_1));
+    }
+}
+
+void Viewer::applyOverlay(const OverlayActions& actions) {
+    if (actions.renderChanged)
+        rebuildTargets();
+    if (actions.targetChanged)
+        targets_.setTargetSeconds(settings_.targetMs / 1000.0);
+    if (actions.selectCamera >= 0)
+        selectCamera(static_cast<uint32_t>(actions.selectCamera));
+    if (actions.resetView)
+        selectCamera(cameraIndex_);
+    if (actions.restart)
+        targets_.full().renderer->reset();
+    screenshotRequested_ |= actions.screenshot;
+    paused_ ^= actions.togglePause;
+}
+
+RenderTarget& Viewer::chooseTarget(bool forScreenshot) {
+    const bool moving = secondsSince(lastMove_) < kPreviewHoldSeconds;
+    const uint32_t divisor = moving && !forScreenshot ? targets_.movingDivisor() : 1;
+    RenderTarget& target = divisor > 1 ? targets_.preview(divisor) : targets_.full();
+    RenderTargets::follow(target, controller_.camera(), cameraVersion_);
+    return target;
+}
+
+OverlayFacts Viewer::facts() const {
+    OverlayFacts facts;
+    facts.scene = options_.scenePath;
+    facts.device = context_.deviceName();
+    facts.width = presenter_.extent().width;
+    facts.height = presenter_.extent().height;
+    facts.spp = shownSpp_;
+    facts.samplesThisFrame = shownSamples_;
+    facts.previewDivisor = shownDivisor_;
+    facts.frameMs = frameMs_;
+    facts.stats = &shownStats_;
+    facts.paused = paused_;
+    for (const NamedCamera& camera : cameras_.cameras)
+        facts.cameraNames.push_back(camera.name);
+    facts.camera = cameraIndex_;
+    return facts;
+}
+
+bool Viewer::present(RenderTarget& target, bool keepPixels) {
+    return presenter_.presentFrame(
+        [&](VkCommandBuffer cmd) {
+            target.display->record(cmd, settings_.exposure, settings_.tonemap);
+        },
+        [&](VkCommandBuffer cmd) { overlay_.record(cmd); }, keepPixels);
+}
+
+void Viewer::saveScreenshot(const std::string& exrPath) {
+    WavefrontRenderer& renderer = *targets_.full().renderer;
+    ScreenshotData data;
+    data.scenePath = options_.scenePath;
+    data.width = presenter_.extent().width;
+    data.height = presenter_.extent().height;
+    data.radiance = renderer.readImage();
+    data.stats = &renderer.stats();
+    data.seed = settings_.seed;
+    data.maxDepth = settings_.maxDepth;
+    data.shownWidth = presenter_.extent().width;
+    data.shownHeight = presenter_.extent().height;
+    data.shownRgba = presenter_.shownPixels();
+    const std::string png = writeScreenshot(exrPath, data);
+    if (!options_.quiet)
+        std::fprintf(stderr, "wavefront: wrote %s (%u spp) and %s\n", exrPath.c_str(),
+                     renderer.samplesDone(), png.c_str());
+}
+
+// At quit: shows the full-resolution image once more, reading it back, and saves it.
+void Viewer::captureScreenshot(const std::string& exrPath) {
+    RenderTarget& target = chooseTarget(true);
+    if (target.renderer->samplesDone() == 0)
+        target.renderer->renderSamples(1);
+    for (int attempt = 0; attempt < 2; ++attempt) {
+        overlay_.newFrame();
+        overlay_.build(facts(), settings_, overlayVisible_);
+        if (present(target, true))
+            return saveScreenshot(exrPath);
+        if (!fitWindow(true))
+            break;
+    }
+    throw InternalError("cannot show the frame for the screenshot " + exrPath +
+                        ": the window is minimised or its surface keeps changing");
+}
+
+int Viewer::run() {
+    const Clock::time_point start = Clock::now();
+    Clock::time_point last = start;
+    uint32_t frame = 0;
+    while (!quitSignalled && !window_.shouldClose()) {
+        const bool automated = options_.frames > 0 || options_.orbitDegrees != 0.0f;
+        if (!automated && !screenshotRequested_ && !refining())
+            window_.waitEvents(0.1); // nothing to refine: sleep until input
+        else
+            window_.pollEvents();
+        if (quitSignalled || window_.shouldClose())
+            break;
+        if (!fitWindow(false)) {
+            window_.waitEvents(0.1);
+            continue;
+        }
+        const double seconds = secondsSince(last);
+        last = Clock::now();
+
+        overlay_.newFrame();
+        const WindowEvents events = window_.takeEvents();
+        applyKeys(events);
+        bool moved = input_.moveCamera(controller_, events.wheel, static_cast<float>(seconds));
+        if (options_.orbitDegrees != 0.0f) {
+            controller_.orbit(options_.orbitDegrees * 3.14159265f / 180.0f, 0.0f);
+            moved = true;
+        }
+        if (moved)
+            cameraMoved();
+        applyOverlay(overlay_.build(facts(), settings_, overlayVisible_));
+
+        const bool screenshot = screenshotRequested_;
+        RenderTarget& target = chooseTarget(screenshot);
+        // Paused or at the limit, a moved camera still gets one sample to show.
+        uint32_t samples = 0;
+        if (refining() || target.renderer->samplesDone() == 0)
+            samples = targets_.render(target, target.divisor == 1 ? settings_.sppLimit : 0);
+        if (target.divisor == 1)
+            fullSamples_ += samples;
+        shownStats_ = target.renderer->stats();
+        shownSpp_ = target.renderer->samplesDone();
+        shownSamples_ = samples;
+        shownDivisor_ = target.divisor;
+
+        if (!present(target, screenshot)) {
+            fitWindow(true);
+            continue;
+        }
+        if (screenshot) {
+            screenshotRequested_ = false;
+            saveScreenshot(nextScreenshotPath(
+                std::filesystem::path(options_.scenePath).stem().string()));
+        }
+        frameMs_ = 1000.0 * secondsSince(last);
+        if (++frame == 1 && !options_.quiet)
+            std::fprintf(stderr, "wavefront: viewing %s at %ux%u on %s (H: overlay, Esc: quit)\n",
+                         options_.scenePath.c_str(), presenter_.extent().width,
+                         presenter_.extent().height, context_.deviceName().c_str());
+        if (options_.resizeAt && frame == options_.resizeAt->frame)
+            window_.setSize(options_.resizeAt->width, options_.resizeAt->height);
+        if (options_.frames > 0 && frame >= options_.frames)
+            break;
+    }
+    const double wall = secondsSince(start);
+    if (!options_.screenshot.empty())
+        captureScreenshot(options_.screenshot);
+    if (!options_.quiet)
+        std::fprintf(stderr,
+                     "wavefront: %u frames in %.2f s (%.1f ms/frame); %u spp at %ux%u, "
+                     "%.2f spp/s at full resolution\n",
+                     frame, wall, frame ? 1000.0 * wall / frame : 0.0, targets_.fullSpp(),
+                     presenter_.extent().width, presenter_.extent().height,
+                     wall > 0.0 ? fullSamples_ / wall : 0.0);
+    if (context_.validationMessageCount() > 0) {
+        std::fprintf(stderr, "wavefront: %u validation message(s)\n",
+                     context_.validationMessageCount());
+        return 1;
+    }
+    return 0;
+}
+
+} // namespace
+
+int runViewer(const ViewerOptions& options) {
+    quitSignalled = 0;
+    struct sigaction action {};
+    action.sa_handler = onQuitSignal;
+    action.sa_flags = SA_RESETHAND;
+    struct sigaction oldInt {}, oldTerm {};
+    sigaction(SIGINT, &action, &oldInt);
+    sigaction(SIGTERM, &action, &oldTerm);
+    int code;
+    try {
+        Viewer viewer(options);
+        code = viewer.run();
+    } catch (...) {
+        sigaction(SIGINT, &oldInt, nullptr);
+        sigaction(SIGTERM, &oldTerm, nullptr);
+        throw;
+    }
+    sigaction(SIGINT, &oldInt, nullptr);
+    sigaction(SIGTERM, &oldTerm, nullptr);
+    return code;
+}
+
+} // namespace wf

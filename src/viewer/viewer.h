@@ -1,0 +1,59 @@
+// `wavefront view`: a window that refines the image progressively while the user looks, moves
+// and compares. The frame loop (viewer.cpp) reads top-down:
+//   events -> keys and camera -> overlay -> path trace a bounded amount -> display -> present
+// Accumulation restarts on any change of camera or render settings; exposure and tone curve
+// only change the display.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "viewer/display_pass.h"
+
+namespace wf {
+
+// What the user can change while viewing, named as the command-line flags.
+struct ViewSettings {
+    // Restart the accumulation when changed.
+    uint32_t maxDepth = 16;
+    uint32_t rrDepth = 3;
+    uint32_t seed = 0;
+    // Refinement stops at this many samples per pixel; 0: never.
+    uint32_t sppLimit = 0;
+    // Display only.
+    float exposure = 0.0f; // stops (EV)
+    Tonemap tonemap = Tonemap::Linear;
+    // Frame pacing: path tracing per frame aims at this many milliseconds.
+    double targetMs = 33.0;
+};
+
+struct ResizeAt {
+    uint32_t frame;
+    int width;
+    int height;
+};
+
+struct ViewerOptions {
+    std::string scenePath;
+    // Initial window size in screen coordinates; the render size is the framebuffer's. 0: from
+    // the other one and the starting camera's aspect ratio, as `render` sizes its image.
+    int windowWidth = 512;
+    int windowHeight = 0;
+    ViewSettings settings;
+    // Index into the camera list (the file's cameras, then the framing one); none: the camera
+    // `wavefront render` uses. Checked against the list by the viewer.
+    std::optional<uint32_t> camera;
+    std::optional<int> device;
+    bool overlay = true;
+    bool quiet = false;
+    // Automation (scripts and tests).
+    uint32_t frames = 0;          // quit after this many frames; 0: when the user quits
+    std::string screenshot;       // .exr written on quit, with the shown frame as .png beside it
+    std::optional<ResizeAt> resizeAt; // resize the window after a frame
+    float orbitDegrees = 0.0f;    // orbit the camera this much every frame, as a drag would
+};
+
+// Returns the exit code: 0, or 1 when validation messages were counted.
+int runViewer(const ViewerOptions& options);
+
+} // namespace wf

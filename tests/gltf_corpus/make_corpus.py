@@ -1,0 +1,525 @@
+#!/usr/bin/env python3
+"""Writes the hand-made glTF corpus beside this script: valid files (each loads, exercising one
+feature) and invalid ones (each refused with one clear line), plus expected.tsv, which
+tests/unit/test_gltf_corpus.cpp checks and the fuzzer uses as seeds. Each case is a few lines
+here, so what a file breaks is readable without opening it. Run: python3 make_corpus.py"""
+import base64
+import json
+import math
+import os
+import struct
+import zlib
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+F32, U8, U16, U32, I8, I16 = 5126, 5121, 5123, 5125, 5120, 5122
+# An 8x8 two-colour checker as baseline JPEG (written once with stbi_write_jpg).
+JPEG = base64.b64decode("/9j/4AAQSkZJRgABAQAAAQABAAD/2wCEAAMCAgMCAgMDAwMEAwMEBQgFBQQEBQoHBwYIDAoMDAsKCwsNDhIQDQ4RDgsLEBYQERMUFRUVDA8XGBYUGBIUFRQBAwQEBQQFCQUFCRQNCw0UFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFP/AABEIAAgACAMBIgACEQEDEQH/xAGiAAABBQEBAQEBAQAAAAAAAAAAAQIDBAUGBwgJCgsQAAIBAwMCBAMFBQQEAAABfQECAwAEEQUSITFBBhNRYQcicRQygZGhCCNCscEVUtHwJDNicoIJChYXGBkaJSYnKCkqNDU2Nzg5OkNERUZHSElKU1RVVldYWVpjZGVmZ2hpanN0dXZ3eHl6g4SFhoeIiYqSk5SVlpeYmZqio6Slpqeoqaqys7S1tre4ubrCw8TFxsfIycrS09TV1tfY2drh4uPk5ebn6Onq8fLz9PX29/j5+gEAAwEBAQEBAQEBAQAAAAAAAAECAwQFBgcICQoLEQACAQIEBAMEBwUEBAABAncAAQIDEQQFITEGEkFRB2FxEyIygQgUQpGhscEJIzNS8BVictEKFiQ04SXxFxgZGiYnKCkqNTY3ODk6Q0RFRkdISUpTVFVWV1hZWmNkZWZnaGlqc3R1dnd4eXqCg4SFhoeIiYqSk5SVlpeYmZqio6Slpqeoqaqys7S1tre4ubrCw8TFxsfIycrS09TV1tfY2dri4+Tl5ufo6ery8/T19vf4+fr/2gAMAwEAAhEDEQA/AI/+TLP+px/4SX/tx+zfZ/8Av7v3faPbG3vng/4bp/6kn/yrf/aKP26f+ZJ/7fv/AG3r5UrfhLhLJeOslocQ8Q0PbYutzc8+acL8k5Qj7sJRirRjFaRV7Xd22zkzDMMTlWJng8HPlpxtZWTtdJvVpvdvqf/Z")
+
+
+def png(width, height, rgba):
+    """A minimal RGBA8 PNG: one IDAT, filter 0 on every row."""
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(
+            ">I", zlib.crc32(kind + data) & 0xffffffff)
+    rows = b"".join(b"\0" + bytes(rgba[y * width * 4:(y + 1) * width * 4]) for y in range(height))
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0))
+            + chunk(b"IDAT", zlib.compress(rows)) + chunk(b"IEND", b""))
+
+
+def checker_png(size=8, alpha_hole=False):
+    px = []
+    for y in range(size):
+        for x in range(size):
+            on = (x // (size // 2) + y // (size // 2)) % 2
+            a = 0 if (alpha_hole and on) else 255
+            px += [220, 40, 40, a] if on else [240, 240, 240, 255]
+    return png(size, size, px)
+
+
+def normal_png(size=8):
+    """A bumpy tangent-space normal map: rows tilt alternately towards +x and -x."""
+    px = []
+    for y in range(size):
+        for x in range(size):
+            px += [200 if (x // 2) % 2 else 56, 128, 230, 255]
+    return png(size, size, px)
+
+
+class Gltf:
+    def __init__(self):
+        self.bin = bytearray()
+        self.doc = {"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "scene": 0,
+                    "nodes": [], "meshes": [], "accessors": [], "bufferViews": [],
+                    "buffers": []}
+
+    def view(self, data, stride=None):
+        while len(self.bin) % 4:
+            self.bin.append(0)
+        v = {"buffer": 0, "byteOffset": len(self.bin), "byteLength": len(data)}
+        if stride:
+            v["byteStride"] = stride
+        self.bin += data
+        self.doc["bufferViews"].append(v)
+        return len(self.doc["bufferViews"]) - 1
+
+    def accessor(self, data, ctype, count, kind, **extra):
+        acc = {"componentType": ctype, "count": count, "type": kind}
+        if data is not None:
+            acc["bufferView"] = self.view(data)
+        acc.update(extra)
+        self.doc["accessors"].append(acc)
+        return len(self.doc["accessors"]) - 1
+
+    def floats(self, values, kind):
+        n = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4}[kind]
+        return self.accessor(struct.pack("<%df" % len(values), *values), F32, len(values) // n,
+                             kind)
+
+    def indices(self, values, ctype=U16):
+        fmt = {U8: "B", U16: "H", U32: "I"}[ctype]
+        return self.accessor(struct.pack("<%d%s" % (len(values), fmt), *values), ctype,
+                             len(values), "SCALAR")
+
+    def mesh(self, attributes, indices=None, material=None, mode=None):
+        prim = {"attributes": attributes}
+        if indices is not None:
+            prim["indices"] = indices
+        if material is not None:
+            prim["material"] = material
+        if mode is not None:
+            prim["mode"] = mode
+        self.doc["meshes"].append({"primitives": [prim]})
+        return len(self.doc["meshes"]) - 1
+
+    def node(self, **members):
+        self.doc["nodes"].append(members)
+        return len(self.doc["nodes"]) - 1
+
+    def image(self, data, mime="image/png", in_buffer=False):
+        self.doc.setdefault("images", [])
+        if in_buffer:
+            self.doc["images"].append({"bufferView": self.view(data), "mimeType": mime})
+        else:
+            self.doc["images"].append(
+                {"uri": "data:%s;base64,%s" % (mime, base64.b64encode(data).decode())})
+        return len(self.doc["images"]) - 1
+
+    def texture(self, image, sampler=None):
+        self.doc.setdefault("textures", [])
+        t = {"source": image}
+        if sampler is not None:
+            t["sampler"] = sampler
+        self.doc["textures"].append(t)
+        return len(self.doc["textures"]) - 1
+
+    def material(self, **members):
+        self.doc.setdefault("materials", [])
+        self.doc["materials"].append(members)
+        return len(self.doc["materials"]) - 1
+
+    def finish(self, uri=None):
+        buf = {"byteLength": len(self.bin)}
+        if uri is not False:
+            buf["uri"] = uri or "data:application/octet-stream;base64," + base64.b64encode(
+                bytes(self.bin)).decode()
+        self.doc["buffers"] = [buf] if self.bin or uri else []
+        return self.doc
+
+    def glb(self):
+        self.finish(uri=False)
+        text = json.dumps(self.doc).encode()
+        text += b" " * (-len(text) % 4)
+        data = bytes(self.bin) + b"\0" * (-len(self.bin) % 4)
+        out = b"glTF" + struct.pack("<II", 2, 12 + 8 + len(text) + 8 + len(data))
+        out += struct.pack("<I", len(text)) + b"JSON" + text
+        return out + struct.pack("<I", len(data)) + b"BIN\0" + data
+
+
+QUAD = [0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0]
+QUAD_UV = [0, 1, 1, 1, 1, 0, 0, 0]
+QUAD_INDICES = [0, 1, 2, 0, 2, 3]
+
+
+def quad(g, material=None, uv=True, normals=False, extra=None):
+    attrs = {"POSITION": g.floats(QUAD, "VEC3")}
+    if uv:
+        attrs["TEXCOORD_0"] = g.floats(QUAD_UV, "VEC2")
+    if normals:
+        attrs["NORMAL"] = g.floats([0, 0, 1] * 4, "VEC3")
+    attrs.update(extra or {})
+    g.node(mesh=g.mesh(attrs, g.indices(QUAD_INDICES), material))
+    return g
+
+
+def textured(image_bytes, mime="image/png", in_buffer=False, **material):
+    g = Gltf()
+    tex = g.texture(g.image(image_bytes, mime, in_buffer))
+    m = g.material(pbrMetallicRoughness={"baseColorTexture": {"index": tex}}, **material)
+    return quad(g, m)
+
+
+CASES = []  # (file name, expectation, document bytes or Gltf, extra files)
+
+
+def case(name, expect, g, files=None):
+    CASES.append((name, expect, g, files or {}))
+
+
+def tri():
+    g = Gltf()
+    g.node(mesh=g.mesh({"POSITION": g.floats([0, 0, 0, 1, 0, 0, 0, 1, 0], "VEC3")}))
+    return g
+
+
+# --- Valid files: each loads; the expectation counts triangles and what the scene keeps. ---
+case("valid/triangle.gltf", "loads 1 env=1", tri())
+case("valid/triangle.glb", "loads 1", tri())
+g = tri()
+case("valid/external_buffer.gltf", "loads 1", g, {"valid/external_buffer.bin": "BIN"})
+for ctype, name in ((U8, "u8"), (U16, "u16"), (U32, "u32")):
+    g = Gltf()
+    g.node(mesh=g.mesh({"POSITION": g.floats(QUAD, "VEC3")}, g.indices(QUAD_INDICES, ctype)))
+    case("valid/indices_%s.gltf" % name, "loads 2 normals=0", g)
+g = Gltf()
+g.node(mesh=g.mesh({"POSITION": g.floats([0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 0, 2, 0], "VEC3")},
+                   mode=5))
+case("valid/triangle_strip.gltf", "loads 3", g)
+g = Gltf()
+g.node(mesh=g.mesh({"POSITION": g.floats([0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, -1, 1, 0],
+                                         "VEC3")}, g.indices([0, 1, 2, 3, 4]), mode=6))
+case("valid/triangle_fan_indexed.gltf", "loads 3", g)
+g = Gltf()
+pos = g.floats(QUAD, "VEC3")
+g.doc["accessors"][pos]["sparse"] = {
+    "count": 1, "indices": {"bufferView": g.view(struct.pack("<H", 2)), "componentType": U16},
+    "values": {"bufferView": g.view(struct.pack("<3f", 2, 2, 0))}}
+g.node(mesh=g.mesh({"POSITION": pos}, g.indices(QUAD_INDICES)))
+case("valid/sparse_positions.gltf", "loads 2", g)
+g = Gltf()
+pos = g.accessor(None, F32, 3, "VEC3", sparse={
+    "count": 2, "indices": {"bufferView": g.view(struct.pack("<2B", 1, 2)), "componentType": U8},
+    "values": {"bufferView": g.view(struct.pack("<6f", 1, 0, 0, 0, 1, 0))}})
+g.node(mesh=g.mesh({"POSITION": pos}))
+case("valid/sparse_without_bufferview.gltf", "loads 1", g)
+g = Gltf()
+g.doc["extensionsUsed"] = g.doc["extensionsRequired"] = ["KHR_mesh_quantization"]
+pos = g.accessor(struct.pack("<12h", 0, 0, 0, 0, 32767, 0, 0, 0, 0, 32767, 0, 0), I16, 3, "VEC3",
+                 normalized=True)
+g.doc["bufferViews"][-1]["byteStride"] = 8  # 16-bit VEC3 padded to 8 bytes, as exporters do
+g.node(mesh=g.mesh({"POSITION": pos, "NORMAL": g.accessor(
+    struct.pack("<12b", 0, 0, 127, 0, 0, 90, 90, 0, 0, 0, 127, 0), I8, 3, "VEC3",
+    normalized=True)}), scale=[2, 2, 2])
+g.doc["bufferViews"][-1]["byteStride"] = 4
+case("valid/quantized_short_normalized.gltf", "loads 1 normals=1", g)
+g = Gltf()
+g.doc["extensionsUsed"] = ["KHR_mesh_quantization"]
+g.node(mesh=g.mesh({"POSITION": g.accessor(bytes([0, 0, 0, 0, 10, 0, 0, 0, 0, 0, 10, 0]), U8, 3,
+                                           "VEC3")}))
+g.doc["bufferViews"][-1]["byteStride"] = 4
+case("valid/quantized_ubyte.gltf", "loads 1", g)
+g = Gltf()
+g.node(mesh=g.mesh({"POSITION": g.floats([0, 0, 0, 1, 0, 0, 0, 1, 0], "VEC3"),
+                    "NORMAL": g.floats([0, 0, 1, 0.6, 0, 0.8, 0, 0.6, 0.8], "VEC3")}))
+case("valid/smooth_normals.gltf", "loads 1 normals=1", g)
+case("valid/flat_normals_need_no_buffer.gltf", "loads 2 normals=0", quad(Gltf(), normals=True))
+g = Gltf()
+red = g.material(pbrMetallicRoughness={"baseColorFactor": [1, 0, 0, 1], "metallicFactor": 0})
+blue = g.material(pbrMetallicRoughness={"baseColorFactor": [0, 0, 1, 1]})
+p0 = g.floats([0, 0, 0, 1, 0, 0, 0, 1, 0], "VEC3")
+p1 = g.floats([0, 0, 1, 1, 0, 1, 0, 1, 1], "VEC3")
+g.doc["meshes"].append({"primitives": [{"attributes": {"POSITION": p0}, "material": red},
+                                       {"attributes": {"POSITION": p1}, "material": blue},
+                                       {"attributes": {"POSITION": p1}, "mode": 0},
+                                       {"attributes": {"POSITION": p1}, "mode": 3}]})
+g.node(mesh=0)
+case("valid/primitives_points_lines_skipped.gltf", "loads 2", g)
+g = tri()
+g.doc["nodes"] = [{"children": [1], "matrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 5, 0, 0, 1]},
+                  {"children": [2], "rotation": [0, 0.7071068, 0, 0.7071068]},
+                  {"mesh": 0, "scale": [-1, 1, 1], "translation": [0, 1, 0]}]
+case("valid/hierarchy_matrix_trs_mirror.gltf", "loads 1", g)
+g = tri()
+del g.doc["scenes"], g.doc["scene"]
+case("valid/no_scenes.gltf", "loads 1", g)
+g = Gltf()
+g.node(mesh=g.mesh({"POSITION": g.floats([0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 0, 0, 1, 0, 0, 0, 1, 0],
+                                         "VEC3")}))
+case("valid/degenerate_dropped.gltf", "loads 1", g)
+g = Gltf()
+g.doc["nodes"] = [{}]
+case("valid/empty_scene.gltf", "loads 0", g)
+case("valid/texture_png.gltf", "loads 2 images=1 uv0=1", textured(checker_png()))
+case("valid/texture_jpeg_in_bufferview.glb", "loads 2 images=1", textured(JPEG, "image/jpeg",
+                                                                        True))
+g = textured(b"", "image/png")
+g.doc["images"][0] = {"uri": "checker.png"}
+case("valid/texture_external_file.gltf", "loads 2 images=1", g,
+     {"valid/checker.png": checker_png()})
+g = textured(checker_png())
+g.doc["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"] = {
+    "KHR_texture_transform": {"offset": [0.5, 0], "rotation": 0.3, "scale": [2, 2]}}
+g.doc["extensionsUsed"] = ["KHR_texture_transform"]
+g.doc["samplers"] = [{"wrapS": 33648, "wrapT": 33071, "magFilter": 9728}]
+g.doc["textures"][0]["sampler"] = 0
+case("valid/texture_transform_sampler.gltf", "loads 2 images=1", g)
+g = Gltf()
+tex = g.texture(g.image(checker_png()))
+m = g.material(pbrMetallicRoughness={"baseColorTexture": {"index": tex, "texCoord": 1}})
+quad(g, m, extra={"TEXCOORD_1": g.floats([0, 0, 2, 0, 2, 2, 0, 2], "VEC2")})
+case("valid/texcoord1.gltf", "loads 2 uv1=1", g)
+g = Gltf()
+m = g.material(normalTexture={"index": g.texture(g.image(normal_png())), "scale": 0.8})
+case("valid/normal_map_generated_tangents.gltf", "loads 2 normals=1 tangents=1", quad(g, m))
+g = Gltf()
+m = g.material(normalTexture={"index": g.texture(g.image(normal_png()))})
+quad(g, m, normals=True, extra={"TANGENT": g.floats([1, 0, 0, 1] * 4, "VEC4")})
+case("valid/normal_map_with_tangents.gltf", "loads 2 normals=1 tangents=1", g)
+g = Gltf()
+tex = g.texture(g.image(checker_png(alpha_hole=True)))
+mr = g.texture(g.image(checker_png()))
+m = g.material(pbrMetallicRoughness={"baseColorTexture": {"index": tex},
+                                     "metallicRoughnessTexture": {"index": mr}},
+               emissiveTexture={"index": mr}, emissiveFactor=[1, 1, 1], alphaMode="MASK",
+               alphaCutoff=0.4, doubleSided=True)
+case("valid/alpha_mask_all_textures.gltf", "loads 2 images=2 env=0", quad(g, m))
+case("valid/alpha_blend.gltf", "loads 2", textured(checker_png(alpha_hole=True),
+                                                    alphaMode="BLEND"))
+g = textured(b"")
+g.doc["images"][0] = {"uri": "does_not_exist.png"}
+case("valid/missing_image_warns.gltf", "loads 2 images=1", g)
+case("valid/gif_image_warns.gltf", "loads 2 images=1",
+     textured(b"GIF89a\x01\x00\x01\x00\x00\x00\x00;", "image/gif"))
+case("valid/hdr_bytes_never_decoded.gltf", "loads 2 images=1",
+     textured(b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 1\n\x02\x02\x00\x01", "image/png"))
+g = textured(checker_png())
+g.doc["images"][0] = {"uri": "../outside.png"}
+case("valid/image_outside_folder_warns.gltf", "loads 2 images=1", g)
+g = tri()
+g.doc["extensionsUsed"] = ["KHR_lights_punctual"]
+g.doc["extensions"] = {"KHR_lights_punctual": {"lights": [
+    {"type": "point", "color": [1, 0.5, 0.25], "intensity": 10},
+    {"type": "spot", "intensity": 5, "spot": {"innerConeAngle": 0.2, "outerConeAngle": 0.5}},
+    {"type": "directional", "intensity": 2},
+    {"type": "point", "intensity": 100, "extras": {"radius": 0.25}},
+    {"type": "spot", "spot": {"innerConeAngle": 0.6, "outerConeAngle": 0.5}},
+    {"type": "area"}]}}
+for i in range(6):
+    g.node(translation=[i, 2, 0], extensions={"KHR_lights_punctual": {"light": i}})
+g.doc["scenes"][0]["nodes"] = list(range(7))
+case("valid/lights_punctual_and_sphere.gltf", "loads 1 lights=4 env=0", g)
+g = tri()
+g.doc["cameras"] = [{"type": "perspective", "name": "front",
+                     "perspective": {"yfov": 0.7, "znear": 0.1}},
+                    {"type": "orthographic", "orthographic": {"xmag": 1, "ymag": 1, "znear": 0,
+                                                              "zfar": 1}},
+                    {"type": "perspective", "perspective": {"yfov": 0, "znear": 0.1}},
+                    {"type": "perspective", "perspective": {"yfov": 1.2, "aspectRatio": 2,
+                                                            "znear": 0.1}}]
+for i in range(4):
+    g.node(camera=i, translation=[0, 0, 3 + i], name="cam%d" % i)
+g.doc["scenes"][0]["nodes"] = list(range(5))
+case("valid/cameras_some_invalid.gltf", "loads 1 cameras=2", g)
+g = tri()
+g.doc["extensionsUsed"] = ["EXT_unknown_thing", "KHR_materials_volume"]
+case("valid/unknown_extensions_warn.gltf", "loads 1", g)
+g = Gltf()
+m = g.material(pbrMetallicRoughness={"baseColorFactor": [0.9, 0.9, 0.9, 1],
+                                     "metallicFactor": 0.2, "roughnessFactor": 0.3},
+               emissiveFactor=[1, 1, 1],
+               extensions={"KHR_materials_emissive_strength": {"emissiveStrength": 5},
+                           "KHR_materials_ior": {"ior": 1.33},
+                           "KHR_materials_transmission": {"transmissionFactor": 0.5},
+                           "KHR_materials_specular": {"specularFactor": 0.5,
+                                                      "specularColorFactor": [1, 0.9, 0.8]}})
+case("valid/material_extensions.gltf", "loads 2 env=0", quad(g, m, uv=False))
+g = tri()
+g.doc["nodes"][0]["children"] = [1]
+g.doc["nodes"].append({"mesh": 0, "translation": [0, 0, 1]})
+case("valid/instanced_mesh.gltf", "loads 2", g)
+
+
+# --- Invalid files: each refused with one line naming the problem. ---
+def broken(name, substring, g):
+    case("invalid/" + name, "refused " + substring, g)
+
+
+case("invalid/not_json.gltf", "refused ", b"{ this is not json")
+case("invalid/empty_file.gltf", "refused ", b"")
+case("invalid/bad_magic.glb", "refused magic", b"gLTf" + bytes(40))
+case("invalid/truncated.glb", "refused ", tri().glb()[:40])
+case("invalid/text_pretending_glb.glb", "refused magic", b'{"asset":{"version":"2.0"}}')
+case("invalid/deep_nesting.gltf", "refused nested",
+     b'{"asset":{"version":"2.0"},"extras":' + b"[" * 5000 + b"]" * 5000 + b"}")
+g = tri()
+g.doc["extensionsRequired"] = g.doc["extensionsUsed"] = ["KHR_draco_mesh_compression"]
+broken("required_unknown_extension.gltf", "KHR_draco_mesh_compression", g)
+g = tri()
+g.doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = 7
+broken("accessor_index_out_of_range.gltf", "accessor 7", g)
+g = tri()
+g.doc["accessors"][0]["byteOffset"] = 4
+broken("accessor_past_bufferview.gltf", "extend past the end of bufferView", g)
+g = tri()
+g.doc["bufferViews"][0]["byteOffset"] = 8
+broken("bufferview_past_buffer.gltf", "bufferView 0", g)
+g = Gltf()
+g.node(mesh=g.mesh({"POSITION": g.floats(QUAD, "VEC3")}, g.indices([0, 1, 9])))
+broken("index_past_vertices.gltf", "is 9, but there are only 4 vertices", g)
+g = Gltf()
+g.node(mesh=g.mesh({"POSITION": g.floats([0, 0, 0, 1, float("nan"), 0, 0, 1, 0], "VEC3")}))
+broken("nan_position.gltf", "NaN or infinite", g)
+g = Gltf()
+g.node(mesh=g.mesh({"POSITION": g.floats([0, 0, 0, float("inf"), 0, 0, 0, 1, 0], "VEC3")}))
+broken("inf_position.gltf", "NaN or infinite", g)
+g = tri()
+g.doc["nodes"][0]["scale"] = [1e30, 1e30, 1e30]
+g.doc["nodes"] = [{"children": [1], "scale": [1e30, 1e30, 1e30]}, g.doc["nodes"][0]]
+broken("overflow_after_transform.gltf", "not finite", g)
+g = tri()
+g.doc["nodes"][0]["children"] = [1]
+g.doc["nodes"].append({"children": [0]})
+broken("node_cycle.gltf", "cycle", g)
+g = tri()
+g.doc["nodes"][0]["children"] = [0]
+broken("node_own_child.gltf", "", g)
+g = tri()
+g.doc["nodes"] += [{"children": [0]}, {"children": [0]}]
+g.doc["scenes"][0]["nodes"] = [1, 2]
+broken("node_two_parents.gltf", "two parents", g)
+g = tri()
+g.doc["meshes"][0]["primitives"][0]["material"] = 3
+broken("material_index_out_of_range.gltf", "material 3", g)
+g = textured(checker_png())
+g.doc["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["index"] = 5
+broken("texture_index_out_of_range.gltf", "texture 5", g)
+g = textured(checker_png())
+g.doc["textures"][0]["source"] = 4
+broken("image_index_out_of_range.gltf", "image 4", g)
+g = textured(checker_png())
+g.doc["textures"][0]["sampler"] = 2
+broken("sampler_index_out_of_range.gltf", "sampler 2", g)
+g = textured(JPEG, "image/jpeg", True)
+g.doc["bufferViews"][-1]["byteLength"] = 100000
+broken("image_bufferview_past_buffer.gltf", "extends past the end of buffer", g)
+case("invalid/buffer_outside_folder.gltf", "refused '..' is not allowed",
+     tri().finish(uri="../outside.bin"))
+case("invalid/buffer_absolute_path.gltf", "refused only paths relative",
+     tri().finish(uri="/etc/passwd"))
+case("invalid/buffer_missing_file.gltf", "refused missing.bin", tri().finish(uri="missing.bin"))
+g = tri()
+g.doc["accessors"].append({"componentType": F32, "count": 2 ** 31, "type": "VEC3"})
+g.doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = 1
+broken("huge_count_without_bufferview.gltf", "over the limit", g)
+g = tri()
+g.doc["bufferViews"][0]["byteStride"] = 2
+broken("stride_smaller_than_element.gltf", "byteStride", g)
+g = Gltf()
+pos = g.floats(QUAD, "VEC3")
+g.doc["accessors"][pos]["sparse"] = {
+    "count": 2, "indices": {"bufferView": g.view(struct.pack("<2H", 2, 1)), "componentType": U16},
+    "values": {"bufferView": g.view(struct.pack("<6f", 2, 2, 0, 3, 3, 0))}}
+g.node(mesh=g.mesh({"POSITION": pos}, g.indices(QUAD_INDICES)))
+broken("sparse_indices_not_increasing.gltf", "not increasing", g)
+g = Gltf()
+pos = g.floats(QUAD, "VEC3")
+g.doc["accessors"][pos]["sparse"] = {
+    "count": 1, "indices": {"bufferView": g.view(struct.pack("<H", 60)), "componentType": U16},
+    "values": {"bufferView": g.view(struct.pack("<3f", 2, 2, 0))}}
+g.node(mesh=g.mesh({"POSITION": pos}, g.indices(QUAD_INDICES)))
+broken("sparse_index_out_of_range.gltf", "out of range", g)
+g = tri()
+g.doc["accessors"][0]["normalized"] = True
+broken("normalized_float.gltf", "normalized", g)
+g = tri()
+g.doc["accessors"][0]["type"] = "VEC2"
+broken("position_wrong_type.gltf", "wrong type", g)
+g = tri()
+g.doc["accessors"][0]["componentType"] = U32
+broken("position_uint.gltf", "componentType 5125", g)
+g = tri()
+g.doc["meshes"][0]["primitives"][0]["mode"] = 9
+broken("bad_primitive_mode.gltf", "mode 9", g)
+g = Gltf()
+g.node(mesh=g.mesh({"POSITION": g.floats(QUAD, "VEC3")}, g.indices([0, 1, 2, 3])))
+broken("not_whole_triangles.gltf", "whole triangles", g)
+g = tri()
+del g.doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"]
+g.doc["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = 0
+broken("no_position.gltf", "no POSITION", g)
+g = Gltf()
+g.node(mesh=g.mesh({"POSITION": g.floats([0, 0, 0, 1, 0, 0, 0, 1, 0], "VEC3"),
+                    "NORMAL": g.floats([0, 0, 1, 0, 0, 1], "VEC3")}))
+broken("normal_count_mismatch.gltf", "NORMAL has 2 elements", g)
+g = tri()
+g.material(pbrMetallicRoughness={"baseColorFactor": [1.5, 0, 0, 1]})
+g.doc["meshes"][0]["primitives"][0]["material"] = 0
+broken("base_color_above_one.gltf", "baseColorFactor", g)
+g = tri()
+g.material(emissiveFactor=[-1, 0, 0])
+g.doc["meshes"][0]["primitives"][0]["material"] = 0
+broken("negative_emission.gltf", "emissiveFactor", g)
+g = tri()
+g.material(alphaMode="SOMETIMES")
+g.doc["meshes"][0]["primitives"][0]["material"] = 0
+broken("bad_alpha_mode.gltf", "alphaMode", g)
+g = tri()
+g.material(pbrMetallicRoughness={"roughnessFactor": 2})
+g.doc["meshes"][0]["primitives"][0]["material"] = 0
+broken("roughness_above_one.gltf", "roughnessFactor", g)
+g = tri()
+g.doc["nodes"][0]["extensions"] = {"KHR_lights_punctual": {"light": 3}}
+g.doc["extensions"] = {"KHR_lights_punctual": {"lights": [{"type": "point"}]}}
+broken("light_index_out_of_range.gltf", "KHR_lights_punctual light", g)
+g = tri()
+g.doc["nodes"][0]["camera"] = 2
+broken("camera_index_out_of_range.gltf", "camera 2", g)
+g = tri()
+g.doc["scene"] = 4
+broken("default_scene_out_of_range.gltf", "scene 4", g)
+g = tri()
+g.doc["nodes"][0]["rotation"] = [0, 0, 0, 0]
+broken("zero_quaternion.gltf", "quaternion", g)
+g = tri()
+g.doc["nodes"][0]["matrix"] = [1, 0, 0]
+broken("short_matrix.gltf", "16 numbers", g)
+g = textured(checker_png())
+g.doc["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"] = {
+    "KHR_texture_transform": {"scale": [1e39, 1]}}
+broken("texture_transform_infinite.gltf", "KHR_texture_transform", g)
+g = tri()
+g.doc["scenes"][0]["nodes"] = [0, 0]
+broken("node_listed_twice.gltf", "listed twice", g)
+
+
+def main():
+    lines = []
+    for name, expect, doc, files in CASES:
+        path = os.path.join(HERE, name)
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        if isinstance(doc, Gltf):
+            if name.endswith(".glb"):
+                data = doc.glb()
+            elif files and "BIN" in files.values():
+                bin_name = [f for f, v in files.items() if v == "BIN"][0]
+                data = json.dumps(doc.finish(uri=os.path.basename(bin_name))).encode()
+                files = {bin_name: bytes(doc.bin)}
+            else:
+                data = json.dumps(doc.finish()).encode()
+        elif isinstance(doc, dict):
+            data = json.dumps(doc).encode()
+        else:
+            data = doc
+        with open(path, "wb") as out:
+            out.write(data)
+        for extra, content in files.items():
+            with open(os.path.join(HERE, extra), "wb") as out:
+                out.write(content)
+        lines.append(name + "\t" + expect)
+    with open(os.path.join(HERE, "expected.tsv"), "w") as out:
+        out.write("# file\texpectation (loads TRIANGLES [key=value...] | refused SUBSTRING)\n")
+        out.write("\n".join(lines) + "\n")
+    print("wrote %d files" % len(CASES))
+
+
+if __name__ == "__main__":
+    main()

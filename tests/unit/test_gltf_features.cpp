@@ -1,0 +1,160 @@
+// What the corpus files mean, beyond loading: sparse and quantized values, strip winding,
+// normals and tangents in world space, texture references, lights and cameras.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <glm/gtc/packing.hpp>
+
+#include "scene/gltf_loader.h"
+#include "scene/gltf_primitives.h"
+
+namespace wf {
+namespace {
+
+Scene load(const std::string& name) {
+    return loadGltf(std::string(WF_TEST_CORPUS_DIR) + "/valid/" + name);
+}
+
+void expectNear(const glm::vec3& a, const glm::vec3& b, float eps = 1e-4f) {
+    EXPECT_NEAR(a.x, b.x, eps);
+    EXPECT_NEAR(a.y, b.y, eps);
+    EXPECT_NEAR(a.z, b.z, eps);
+}
+
+glm::vec3 decode(uint32_t packed) {
+    return gpu_types::octDecode(glm::unpackSnorm2x16(packed));
+}
+
+TEST(GltfFeatures, OctahedralNormalsRoundTrip) {
+    for (int i = 0; i < 1000; ++i) {
+        const float z = 1.0f - 2.0f * (i + 0.5f) / 1000.0f, phi = 2.4f * i;
+        const float r = std::sqrt(1.0f - z * z);
+        const glm::vec3 n(r * std::cos(phi), r * std::sin(phi), z);
+        EXPECT_GT(glm::dot(decode(gltf::octEncode(n)), n), 0.99999f);
+    }
+    expectNear(decode(gltf::octEncode({0, 0, -1})), {0, 0, -1});
+}
+
+TEST(GltfFeatures, SparseValuesReplaceDenseOnes) {
+    Scene scene = load("sparse_positions.gltf");
+    ASSERT_EQ(scene.triangles.size(), 2u);
+    expectNear(scene.triangles[0].p2, {2, 2, 0}); // vertex 2 replaced by the sparse value
+    Scene zeros = load("sparse_without_bufferview.gltf");
+    expectNear(zeros.triangles[0].p0, {0, 0, 0});
+    expectNear(zeros.triangles[0].p1, {1, 0, 0});
+}
+
+TEST(GltfFeatures, QuantizedAttributesAreDequantized) {
+    Scene scene = load("quantized_short_normalized.gltf"); // node scale 2
+    expectNear(scene.triangles[0].p1, {2, 0, 0});
+    expectNear(scene.triangles[0].p2, {0, 2, 0});
+    ASSERT_EQ(scene.surface.normals.size(), 1u);
+    expectNear(decode(scene.surface.normals[0].n1), glm::normalize(glm::vec3(0, 1, 1)), 1e-3f);
+    expectNear(load("quantized_ubyte.gltf").triangles[0].p1, {10, 0, 0});
+}
+
+TEST(GltfFeatures, StripsAndFansKeepCounterClockwiseFaces) {
+    for (const char* name : {"triangle_strip.gltf", "triangle_fan_indexed.gltf"}) {
+        for (const Triangle& t : load(name).triangles) {
+            EXPECT_GT(glm::cross(t.p1 - t.p0, t.p2 - t.p0).z, 0.0f) << name;
+        }
+    }
+}
+
+TEST(GltfFeatures, TexturesKeepSamplerTransformAndColourSpace) {
+    Scene scene = load("texture_transform_sampler.gltf");
+    ASSERT_EQ(scene.surface.textureRefs.size(), 1u);
+    const TextureRef& ref = scene.surface.textureRefs[0];
+    EXPECT_EQ(ref.flags & 3u, WF_WRAP_MIRROR);
+    EXPECT_EQ(ref.flags >> 2 & 3u, WF_WRAP_CLAMP);
+    EXPECT_TRUE(ref.flags & WF_TEXTURE_SRGB);
+    EXPECT_TRUE(ref.flags & WF_TEXTURE_NEAREST);
+    // offset (0.5, 0), rotation 0.3, scale 2: u' = 2cos(.3) u + 2sin(.3) v + 0.5
+    expectNear(ref.uRow, {2 * std::cos(0.3f), 2 * std::sin(0.3f), 0.5f});
+    expectNear(ref.vRow, {-2 * std::sin(0.3f), 2 * std::cos(0.3f), 0.0f});
+    EXPECT_EQ(scene.materials[0].baseColorTexture, 0u);
+    const TextureImage& image = scene.surface.images[scene.surface.refImage[0]];
+    EXPECT_EQ(image.width, 8u);
+    EXPECT_EQ(image.rgba[0], 0xfff0f0f0u); // the checker's light square, opaque
+    EXPECT_EQ(load("texture_jpeg_in_bufferview.glb").surface.images[0].width, 8u);
+}
+
+TEST(GltfFeatures, MissingImagesShowACheckerAndDropOtherUses) {
+    Scene scene = load("missing_image_warns.gltf");
+    ASSERT_EQ(scene.surface.images.size(), 1u);
+    EXPECT_EQ(scene.surface.images[0].rgba[0], 0xffff00ffu); // magenta
+    EXPECT_EQ(scene.materials[0].baseColorTexture, 0u);
+}
+
+TEST(GltfFeatures, GeneratedTangentsFollowTheUvs) {
+    Scene scene = load("normal_map_generated_tangents.gltf");
+    ASSERT_EQ(scene.surface.tangents.size(), 2u);
+    for (const TriangleTangents& t : scene.surface.tangents) {
+        expectNear(decode(t.t0), {1, 0, 0}, 1e-3f); // u grows along +x
+        EXPECT_EQ(t.signs, 0u); // v grows along -y: an unmirrored mapping
+    }
+    Scene given = load("normal_map_with_tangents.gltf");
+    expectNear(decode(given.surface.tangents[0].t2), {1, 0, 0}, 1e-3f);
+    expectNear(decode(given.surface.normals[0].n0), {0, 0, 1}, 1e-3f);
+    EXPECT_EQ(given.materials[0].normalTexture, 0u);
+    EXPECT_NEAR(load("normal_map_generated_tangents.gltf").materials[0].normalScale, 0.8f, 1e-6f);
+}
+
+TEST(GltfFeatures, PunctualLightsInWorldSpace) {
+    Scene scene = load("lights_punctual_and_sphere.gltf");
+    ASSERT_EQ(scene.lights.size(), 4u); // the bad spot and the area light are skipped
+    const PunctualLight& point = scene.lights[0];
+    EXPECT_EQ(point.type, WF_LIGHT_POINT);
+    expectNear(point.position, {0, 2, 0});
+    expectNear(point.intensity, {10, 5, 2.5f});
+    const PunctualLight& spot = scene.lights[1];
+    EXPECT_EQ(spot.type, WF_LIGHT_SPOT);
+    expectNear(spot.direction, {0, 0, -1});
+    EXPECT_NEAR(spot.cosInner, std::cos(0.2f), 1e-6f);
+    EXPECT_NEAR(spot.cosOuter, std::cos(0.5f), 1e-6f);
+    EXPECT_EQ(scene.lights[2].type, WF_LIGHT_DIRECTIONAL);
+    EXPECT_EQ(scene.lights[3].type, WF_LIGHT_SPHERE);
+    EXPECT_FLOAT_EQ(scene.lights[3].radius, 0.25f);
+    EXPECT_FALSE(scene.environment.present()); // lit scenes get no default sky
+}
+
+TEST(GltfFeatures, CamerasByNameAndDefaultSky) {
+    Scene scene = load("cameras_some_invalid.gltf");
+    ASSERT_EQ(scene.cameraNames.size(), 2u);
+    EXPECT_EQ(scene.cameraNames[0], "front");
+    EXPECT_EQ(scene.cameraNames[1], "cam3"); // unnamed camera: its node's name
+    EXPECT_FLOAT_EQ(scene.cameras[1].aspect, 2.0f);
+    expectNear(scene.camera.position, {0, 0, 3});
+    ASSERT_TRUE(scene.environment.present()); // nothing emits: uniform white
+    EXPECT_EQ(scene.environment.rgb, std::vector<float>({1, 1, 1}));
+}
+
+TEST(GltfFeatures, MaterialExtensions) {
+    const Material m = load("material_extensions.gltf").materials[0];
+    expectNear(m.emission, {5, 5, 5});
+    EXPECT_FLOAT_EQ(m.ior, 1.33f);
+    EXPECT_FLOAT_EQ(m.transmission, 0.5f);
+    EXPECT_FLOAT_EQ(m.specular, 0.5f);
+    expectNear(m.specularColor, {1, 0.9f, 0.8f});
+    EXPECT_FLOAT_EQ(m.metallic, 0.2f);
+    EXPECT_FLOAT_EQ(m.roughness, 0.3f);
+    const Material mask = load("alpha_mask_all_textures.gltf").materials[0];
+    EXPECT_EQ(mask.flags, WF_MATERIAL_DOUBLE_SIDED | WF_MATERIAL_ALPHA_MASK);
+    EXPECT_FLOAT_EQ(mask.alphaCutoff, 0.4f);
+    EXPECT_NE(mask.metallicRoughnessTexture, WF_NO_TEXTURE);
+    EXPECT_NE(mask.emissiveTexture, WF_NO_TEXTURE);
+    EXPECT_EQ(load("alpha_blend.gltf").materials[0].flags, WF_MATERIAL_ALPHA_BLEND);
+}
+
+TEST(GltfFeatures, UnknownExtensionsWarnOnceEach) {
+    ::testing::internal::CaptureStderr();
+    load("unknown_extensions_warn.gltf");
+    const std::string err = ::testing::internal::GetCapturedStderr();
+    EXPECT_NE(err.find("EXT_unknown_thing"), std::string::npos) << err;
+    EXPECT_NE(err.find("KHR_materials_volume"), std::string::npos) << err;
+    EXPECT_EQ(err.find("EXT_unknown_thing"), err.rfind("EXT_unknown_thing")) << err;
+}
+
+} // namespace
+} // namespace wf

@@ -1,0 +1,118 @@
+#!/usr/bin/env bash
+# `wavefront view` end to end in a real window: Xvfb, the Vulkan device present (lavapipe in
+# CI), the validation layer on (any message makes the viewer exit 1, so every run below that
+# expects 0 also proves a clean validation log). Checks that
+#  - a screenshot after N frames equals `wavefront render` of the same camera, size, spp and
+#    seed, and that the PNG of the shown frame is that radiance through the display pass;
+#  - after a resize the viewer re-renders at the new size and matches a render of that size;
+#  - the moving-camera preview path runs (orbit every frame, a 1 ms frame target);
+#  - SIGTERM quits cleanly: exit 0, screenshot written, no temporary file left;
+#  - --help lists every flag and key; no display or bad flags give one-line errors.
+# Without Xvfb this fails (scripts/setup.sh --with-tests installs it); it never skips.
+# Usage: test_viewer.sh PATH/TO/wavefront PATH/TO/wf_compare_images PATH/TO/scenes
+set -u
+wavefront=$1
+compare=$2
+scenes=$3
+work=$(mktemp -d)
+xvfb_pid=""
+cleanup() {
+    [ -n "$xvfb_pid" ] && kill "$xvfb_pid" 2>/dev/null
+    rm -rf "$work"
+}
+trap cleanup EXIT
+failures=0
+passes=0
+pass() { passes=$((passes + 1)); }
+failed() { # failed NAME [LOG]
+    echo "FAIL $1"
+    [ -n "${2:-}" ] && sed 's/^/  /' "$2" | tail -15
+    failures=$((failures + 1))
+    # Keep what the failure produced (images, logs) where the developer can look at it.
+    mkdir -p "$PWD/viewer_test_failures" && cp -r "$work"/. "$PWD/viewer_test_failures/" 2>/dev/null
+}
+run() { # run NAME EXPECTED_CODE COMMAND...; output in $work/NAME.log
+    local name=$1 expected=$2
+    shift 2
+    "$@" >"$work/$name.log" 2>&1
+    local code=$?
+    if [ "$code" -ne "$expected" ]; then failed "$name: exit $code, expected $expected" "$work/$name.log"; else pass; fi
+}
+check() { # check NAME COMMAND...
+    local name=$1
+    shift
+    if "$@" >"$work/check.log" 2>&1; then pass; else failed "$name" "$work/check.log"; fi
+}
+
+if ! command -v Xvfb >/dev/null; then
+    echo "FAIL Xvfb is not installed: the viewer test needs it (bash scripts/setup.sh --with-tests)"
+    exit 1
+fi
+# -displayfd picks a free display number and reports it once the server accepts clients.
+Xvfb -displayfd 3 -screen 0 1024x768x24 -nolisten tcp 3>"$work/display" 2>"$work/xvfb.log" &
+xvfb_pid=$!
+for _ in $(seq 100); do
+    [ -s "$work/display" ] && break
+    sleep 0.1
+done
+if [ ! -s "$work/display" ]; then
+    echo "FAIL Xvfb did not start"; sed 's/^/  /' "$work/xvfb.log" | tail -5
+    exit 1
+fi
+export DISPLAY=":$(head -n1 "$work/display")"
+export WAVEFRONT_VALIDATION=1
+cornell="$scenes/cornell_box.gltf"
+common=(--spp 8 --seed 7 --max-depth 6)
+
+# 1. Same image as render: 12 frames of at least one sample each reach the 8-spp limit.
+run "view" 0 "$wavefront" view "$cornell" "${common[@]}" --width 128 --height 96 --frames 12 \
+    --no-overlay --screenshot "$work/view.exr"
+run "render" 0 "$wavefront" render "$cornell" "${common[@]}" --width 128 --height 96 \
+    -o "$work/render.exr" --quiet
+check "view matches render" "$compare" "$work/view.exr" "$work/render.exr" --spp 8 \
+    --shown "$work/view.png"
+
+# 2. Resize after frame 3: the accumulation restarts at the new size and reaches 8 spp again.
+run "resize" 0 "$wavefront" view "$cornell" "${common[@]}" --width 128 --height 96 \
+    --resize-at 3:160x120 --frames 16 --screenshot "$work/resized.exr"
+run "render-resized" 0 "$wavefront" render "$cornell" "${common[@]}" --width 160 --height 120 \
+    -o "$work/render-resized.exr" --quiet
+check "resized view matches render" "$compare" "$work/resized.exr" "$work/render-resized.exr" \
+    --spp 8
+
+# 3. Orbiting every frame with a 1 ms target: the low-resolution preview is drawn and scaled.
+run "orbit" 0 "$wavefront" view "$cornell" --width 256 --height 192 --orbit 10 --frames 6 \
+    --target-ms 1 --screenshot "$work/orbit.exr"
+check "orbit screenshot written" test -s "$work/orbit.png"
+
+# 4. SIGTERM while refining: a clean quit that still writes the screenshot atomically.
+"$wavefront" view "$cornell" --width 128 --height 96 --screenshot "$work/term.exr" \
+    >"$work/term.log" 2>&1 &
+viewer=$!
+for _ in $(seq 300); do
+    grep -q "viewing" "$work/term.log" && break
+    sleep 0.1
+done
+kill -TERM "$viewer"
+wait "$viewer"
+code=$?
+if [ "$code" -eq 0 ]; then pass; else failed "SIGTERM: exit $code, expected 0" "$work/term.log"; fi
+check "SIGTERM screenshot written" test -s "$work/term.exr" -a -s "$work/term.png"
+check "no temporary files left" bash -c "! ls '$work' | grep -q tmp"
+
+# 5. Command-line contract.
+run "help" 0 "$wavefront" view --help
+for word in --width --height --spp --max-depth --rr-depth --seed --exposure --tonemap \
+    --target-ms --camera --no-overlay --device --frames --screenshot --resize-at --orbit \
+    --quiet F12 Space Esc orbit pan dolly fly; do
+    check "view help lists $word" grep -q -- "$word" "$work/help.log"
+done
+run "no display" 1 env -u DISPLAY -u WAYLAND_DISPLAY "$wavefront" view "$cornell" --frames 1
+check "no display: one line naming xvfb-run" \
+    bash -c "[ \$(wc -l <'$work/no display.log') -eq 1 ] && grep -q xvfb-run '$work/no display.log'"
+run "bad tonemap" 2 "$wavefront" view "$cornell" --tonemap filmic
+run "bad resize" 2 "$wavefront" view "$cornell" --resize-at 3x4
+run "bad camera" 2 "$wavefront" view "$cornell" --camera 7 --frames 1
+
+echo "$passes passed, $failures failed"
+[ "$failures" -eq 0 ]
