@@ -2,7 +2,7 @@
 """Writes the scenes where one light-transport method fails on purpose (issue: materials and
 light transport). Each stays a small, self-contained glTF; run `python3 make_failure_scenes.py`.
 
-- tiny_light.gltf: a 2 cm, very bright square light over a white floor. BSDF sampling almost
+- tiny_light.gltf: a 10 cm, very bright square light 2 m over a white floor. BSDF sampling almost
   never hits it; next-event estimation finds it every time.
 - veach_mis.gltf: Veach's MIS scene: four metal plates from nearly mirror to rough, lit by four
   sphere lights from tiny to large, of equal power. Light sampling fails on the sharp plates
@@ -18,7 +18,12 @@ import math
 import os
 import struct
 
-from make_cornell_box import GltfWriter, quad
+from make_cornell_box import GltfWriter, quad, sub
+
+
+def normalized(v):
+    n = math.sqrt(sum(c * c for c in v))
+    return tuple(c / n for c in v)
 
 
 def material(g, name, color, metallic=0.0, roughness=1.0, lambert=False, emission=None,
@@ -126,9 +131,9 @@ def tiny_light():
     g = GltfWriter()
     white = material(g, "white", (0.8, 0.8, 0.8), lambert=True)
     light = material(g, "tiny light", (0.0, 0.0, 0.0), lambert=True,
-                     emission=(30000.0, 30000.0, 30000.0))
+                     emission=(1200.0, 1200.0, 1200.0))
     g.node(name="floor", mesh=g.mesh("floor", [g.primitive(floor(8.0), white)]))
-    s, y = 0.01, 2.0
+    s, y = 0.05, 2.0
     g.node(name="light", mesh=g.mesh("light", [g.primitive(
         [quad((-s, y, -s), (s, y, -s), (s, y, s), (-s, y, s), (0, -1, 0))], light)]))
     camera(g, (0.0, 3.0, 5.0), (0.0, 0.0, 0.0), 0.8)
@@ -139,18 +144,22 @@ def veach_mis():
     g = GltfWriter()
     backdrop = material(g, "backdrop", (0.1, 0.1, 0.1), lambert=True)
     g.node(name="floor", mesh=g.mesh("floor", [g.primitive(floor(40.0, -3.0), backdrop)]))
-    # Plates: tilted strips, each reflecting the lights towards the camera.
+    # Plates: strips tilted so that each mirrors the row of lights towards the camera.
+    eye, lights_center = (0.0, 2.0, 9.0), (0.0, 2.5, -4.0)
     for k, roughness in enumerate((0.05, 0.12, 0.25, 0.45)):
         plate = material(g, "plate %d" % k, (0.9, 0.9, 0.9), metallic=1.0, roughness=roughness)
-        z = 0.8 - 1.2 * k
-        y = -1.0 + 0.45 * k
-        tilt = 0.35 + 0.12 * k
-        dz, dy = 0.5 * math.cos(tilt), 0.5 * math.sin(tilt)
-        q = quad((-4, y - dy, z + dz), (4, y - dy, z + dz), (4, y + dy, z - dz),
-                 (-4, y + dy, z - dz), (0, math.cos(tilt), math.sin(tilt)))
+        center = (0.0, -1.0 + 0.45 * k, 0.8 - 1.2 * k)
+        to_eye = normalized(sub(eye, center))
+        to_light = normalized(sub(lights_center, center))
+        n = normalized(tuple(a + b for a, b in zip(to_eye, to_light)))
+        along = normalized((0.0, n[2], -n[1]))  # in the yz plane, perpendicular to n
+        h = tuple(0.5 * c for c in along)
+        q = quad((-4, center[1] - h[1], center[2] - h[2]), (4, center[1] - h[1], center[2] - h[2]),
+                 (4, center[1] + h[1], center[2] + h[2]), (-4, center[1] + h[1], center[2] + h[2]),
+                 n)
         g.node(name="plate %d" % k, mesh=g.mesh("plate %d" % k, [g.primitive([q], plate)]))
     for k, radius in enumerate((0.03, 0.1, 0.3, 0.9)):
-        sphere_light(g, "light %d" % k, (-3.75 + 2.5 * k, 2.5, -4.0), radius, 40.0)
+        sphere_light(g, "light %d" % k, (-3.75 + 2.5 * k, 2.5, -4.0), radius, 3.0)
     camera(g, (0.0, 2.0, 9.0), (0.0, -0.8, -0.5), 0.7, aspect=1.5)
     return g
 
@@ -171,7 +180,7 @@ def glass_caustic():
     g.node(name="floor", mesh=g.mesh("floor", [g.primitive(floor(6.0), white)]))
     g.node(name="ball", mesh=g.mesh("ball", [triangle_primitive(
         g, uv_sphere((0.0, 0.6, 0.0), 0.5), glass)]))
-    sphere_light(g, "light", (0.6, 3.0, -0.4), 0.05, 30.0)
+    sphere_light(g, "light", (0.6, 3.0, -0.4), 0.15, 30.0)
     camera(g, (0.0, 2.2, 3.0), (0.0, 0.3, 0.0), 0.75)
     return g
 

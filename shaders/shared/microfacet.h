@@ -41,12 +41,6 @@ WF_INLINE float ggxStretchedLength(vec3 w, float alpha) {
     return sqrt(w.z * w.z + alpha * alpha * (w.x * w.x + w.y * w.y));
 }
 
-// Smith G1 = 1 / (1 + Lambda) = 2 |cos| / (|cos| + stretched length).
-WF_INLINE float ggxG1(vec3 w, float alpha) {
-    float az = abs(w.z);
-    return 2.0f * az / (az + ggxStretchedLength(w, alpha));
-}
-
 // Height-correlated G2 = 1 / (1 + Lambda(wo) + Lambda(wi)), divided by |cos o| |cos i| (the
 // form every lobe needs): 2 / (L(wo) |cos i| + L(wi) |cos o|). Zero only if both are grazing.
 WF_INLINE float ggxG2OverCosines(vec3 wo, vec3 wi, float alpha) {

@@ -161,7 +161,8 @@ int runRenderCommand(const std::vector<std::string>& args) {
     const bool verbose = parsed.has("--verbose");
 
     const std::string scenePath = parsed.positional.front();
-    Scene scene = loadGltf(scenePath);
+    std::vector<std::string> loadWarnings; // printed once the scene and flags are accepted
+    Scene scene = loadGltf(scenePath, &loadWarnings);
     if (auto name = parsed.value("--camera")) {
         scene.camera = selectCamera(scene, *name, scenePath);
         scene.hasCamera = true;
@@ -169,6 +170,8 @@ int runRenderCommand(const std::vector<std::string>& args) {
     if (auto env = parsed.value("--env"))
         scene.environment = loadEnvironmentExr(*env);
     const SceneSummary summary = summarize(scene);
+    for (const std::string& line : loadWarnings)
+        std::fprintf(stderr, "%s\n", line.c_str());
     if (!scene.hasCamera)
         scene.camera = frameBounds(scene);
     const float aspect = scene.camera.aspect > 0.0f ? scene.camera.aspect : 1.0f;

@@ -86,8 +86,20 @@ void checkIndex(const std::string& file, int index, size_t size, const std::stri
     }
 }
 
-void warn(const std::string& file, const std::string& problem) {
-    std::cerr << "warning: " << file << ": " << problem << "\n";
+namespace {
+thread_local std::vector<std::string>* activeSink = nullptr;
+}
+
+WarningSink::WarningSink() : previous_(activeSink) { activeSink = &lines_; }
+WarningSink::~WarningSink() { activeSink = previous_; }
+
+void warn(const std::string& file, const std::string& problem, const char* kind) {
+    std::string line = std::string(kind) + ": " + file + ": " + problem;
+    if (activeSink) {
+        activeSink->push_back(std::move(line));
+    } else {
+        std::cerr << line << "\n";
+    }
 }
 
 // A checked dense accessor: `count` elements, `stride` bytes apart, all inside their buffer;

@@ -27,8 +27,24 @@ constexpr std::size_t MAX_ACCESSOR_ELEMENTS = std::size_t(1) << 24;
 // Fails unless 0 <= index < size; `by` names what holds the index, `what` what it points at.
 void checkIndex(const std::string& file, int index, std::size_t size, const std::string& what,
                 const std::string& by);
-// One warning line on stderr: "warning: <file>: <problem>".
-void warn(const std::string& file, const std::string& problem);
+// One warning line "warning: <file>: <problem>" (kind "note" for notes), collected while a
+// WarningSink is alive on this thread, else printed to stderr at once.
+void warn(const std::string& file, const std::string& problem, const char* kind = "warning");
+
+// Collects the warnings of one load, so a refused file prints its one error line and nothing
+// else, and a loaded one prints its warnings after everything else about it was checked.
+class WarningSink {
+public:
+    WarningSink();
+    ~WarningSink();
+    WarningSink(const WarningSink&) = delete;
+    WarningSink& operator=(const WarningSink&) = delete;
+    std::vector<std::string> take() { return std::move(lines_); }
+
+private:
+    std::vector<std::string> lines_;
+    std::vector<std::string>* previous_;
+};
 
 // Which component types an attribute accepts (bit i set: componentType 5120 + i).
 enum ComponentMask : unsigned {

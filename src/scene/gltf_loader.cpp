@@ -299,9 +299,7 @@ Scene Converter::run() {
     return std::move(scene_);
 }
 
-} // namespace
-
-Scene loadGltf(const std::string& path) {
+Scene loadModel(const std::string& path) {
     std::string ext = fs::path(path).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) {
         return char(std::tolower(c));
@@ -364,9 +362,24 @@ Scene loadGltf(const std::string& path) {
         throw InputError(path + ": " + problem);
     }
     if (!messages.empty()) {
-        std::cerr << "warning: " << path << ": " << messages << "\n";
+        gltf::warn(path, messages);
     }
     return Converter(model, path, policy).run();
+}
+
+} // namespace
+
+Scene loadGltf(const std::string& path, std::vector<std::string>* warnings) {
+    gltf::WarningSink sink;
+    Scene scene = loadModel(path);
+    for (std::string& line : sink.take()) {
+        if (warnings) {
+            warnings->push_back(std::move(line));
+        } else {
+            std::cerr << line << "\n";
+        }
+    }
+    return scene;
 }
 
 } // namespace wf

@@ -3,6 +3,7 @@
 // roughness materials, every perspective camera and KHR_lights_punctual light.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "scene/scene.h"
 
@@ -18,6 +19,8 @@ namespace wf {
 // most 1 GiB each); PNG and JPEG images are decoded with their sizes checked first.
 // Throws InputError("<path>: <problem>", one line) for unreadable, malformed or unsupported
 // input: every index, offset, stride and count is checked before use.
-Scene loadGltf(const std::string& path);
+// Warnings (skipped primitives, missing images, ignored extensions) go to `warnings` when
+// given, else to stderr once the whole file has loaded; a refused file prints nothing.
+Scene loadGltf(const std::string& path, std::vector<std::string>* warnings = nullptr);
 
 } // namespace wf

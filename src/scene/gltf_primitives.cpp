@@ -218,8 +218,8 @@ void PrimitiveBuilder::finish(Scene& scene) {
                     "attribute their textures use; they sample one texel");
     }
     if (degenerateTriangles_ > 0) {
-        std::cerr << "note: " << file_ << ": dropped " << degenerateTriangles_
-                  << " degenerate triangles\n";
+        warn(file_, "dropped " + std::to_string(degenerateTriangles_) + " degenerate triangles",
+             "note");
     }
     const size_t n = triangles_.size();
     // Arrays that some triangle needed are padded to one entry per triangle; the others go.

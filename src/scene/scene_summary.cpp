@@ -99,11 +99,13 @@ std::string describe(const SceneSummary& summary) {
     text += "; textures: " + (summary.imageCount ? std::to_string(summary.imageCount) +
                                                        " images" + texels
                                                  : std::string("none"));
-    text += "; vertex data: " +
-            listCounts({{summary.smoothNormals ? 1u : 0u, "smooth normals"},
-                        {summary.imageCount ? 1u : 0u, summary.texcoord1 ? "2 UV sets" : "UVs"},
-                        {summary.normalMaps ? 1u : 0u, "tangents"}},
-                       "positions only");
+    std::string vertexData = summary.smoothNormals ? "smooth normals" : "";
+    if (summary.imageCount > 0)
+        vertexData += (vertexData.empty() ? "" : ", ") +
+                      std::string(summary.texcoord1 ? "2 UV sets" : "UVs");
+    if (summary.normalMaps)
+        vertexData += ", tangents";
+    text += "; vertex data: " + (vertexData.empty() ? "positions only" : vertexData);
     text += "; materials with " + listCounts({{summary.alphaMaskMaterials, "alpha mask"},
                                               {summary.alphaBlendMaterials, "alpha blend"},
                                               {summary.transmissiveMaterials, "transmission"}},

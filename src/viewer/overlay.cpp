@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "gpu/context.h"
 #include "gpu/vk_check.h"
@@ -35,35 +36,46 @@ void checkImGuiVk(VkResult result) {
 
 double perSecond(double count, double seconds) { return seconds > 0.0 ? count / seconds : 0.0; }
 
+// Counts as 967k, 1.2M: the overlay must stay narrow.
+std::string shortCount(double value) {
+    char text[32];
+    if (value >= 1e6)
+        std::snprintf(text, sizeof text, "%.3gM", value / 1e6);
+    else if (value >= 1e3)
+        std::snprintf(text, sizeof text, "%.3gk", value / 1e3);
+    else
+        std::snprintf(text, sizeof text, "%.3g", value);
+    return text;
+}
+
 void statsSection(const OverlayFacts& facts) {
-    ImGui::Text("%s", facts.scene.c_str());
     ImGui::TextDisabled("%s", facts.device.c_str());
-    ImGui::Text("%u x %u%s", facts.width, facts.height,
-                facts.previewDivisor > 1 ? "  (moving: preview)" : "");
-    if (facts.previewDivisor > 1)
-        ImGui::Text("preview 1/%u resolution", facts.previewDivisor);
-    ImGui::Text("spp %u%s   +%u this frame", facts.spp, facts.paused ? " (paused)" : "",
-                facts.samplesThisFrame);
-    ImGui::Text("frame %.1f ms", facts.frameMs);
+    ImGui::Text("%u x %u", facts.width, facts.height);
+    if (facts.previewDivisor > 1) {
+        ImGui::SameLine();
+        ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "moving: 1/%u preview",
+                           facts.previewDivisor);
+    }
+    ImGui::Text("spp %u (+%u)%s   frame %.0f ms", facts.spp, facts.samplesThisFrame,
+                facts.paused ? " paused" : "", facts.frameMs);
     if (!facts.stats)
         return;
     const RenderStats& s = *facts.stats;
     const double rays = double(s.cameraRays + s.extensionRays + s.shadowRays);
-    ImGui::Text("%.3g spp/s   %.3g paths/s", perSecond(s.samplesPerPixel, s.seconds),
-                perSecond(double(s.paths), s.seconds));
-    ImGui::Text("%.3g rays/s (camera %.3g, extension %.3g, shadow %.3g)",
-                perSecond(rays, s.seconds), perSecond(double(s.cameraRays), s.seconds),
-                perSecond(double(s.extensionRays), s.seconds),
-                perSecond(double(s.shadowRays), s.seconds));
-    if (s.samplesPerPixel > 0 &&
-        ImGui::BeginTable("passes", 2, ImGuiTableFlags_SizingFixedFit)) {
+    ImGui::Text("%.3g spp/s  %s paths/s  %s rays/s", perSecond(s.samplesPerPixel, s.seconds),
+                shortCount(perSecond(double(s.paths), s.seconds)).c_str(),
+                shortCount(perSecond(rays, s.seconds)).c_str());
+    if (s.samplesPerPixel == 0 ||
+        !ImGui::CollapsingHeader("GPU time per pass", ImGuiTreeNodeFlags_DefaultOpen))
+        return;
+    if (ImGui::BeginTable("passes", 2, ImGuiTableFlags_SizingFixedFit)) {
         // Summed over the waves since the last restart, shown per sample per pixel.
         for (const auto& [pass, ms] : s.passMilliseconds) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
-            ImGui::Text("%s", pass.c_str());
+            ImGui::TextUnformatted(pass.c_str());
             ImGui::TableNextColumn();
-            ImGui::Text("%8.2f ms/spp", ms / s.samplesPerPixel);
+            ImGui::Text("%7.2f ms/spp", ms / s.samplesPerPixel);
         }
         ImGui::EndTable();
     }
@@ -89,7 +101,7 @@ void renderSection(ViewSettings& settings, OverlayActions& actions) {
         settings.seed = uint32_t(seed);
         actions.renderChanged = true;
     }
-    if (ImGui::InputInt("--spp (0: no limit)", &spp, 16) && spp >= 0)
+    if (ImGui::InputInt("--spp (0: none)", &spp, 16) && spp >= 0)
         settings.sppLimit = uint32_t(spp);
 }
 
@@ -97,7 +109,7 @@ void displaySection(ViewSettings& settings, OverlayActions& actions) {
     actions.displayChanged |= ImGui::SliderFloat("--exposure (EV)", &settings.exposure, -10.0f,
                                                  10.0f, "%.1f");
     int tonemap = int(settings.tonemap);
-    if (ImGui::Combo("--tonemap", &tonemap, "linear (clamp)\0aces (Narkowicz fit)\0")) {
+    if (ImGui::Combo("--tonemap", &tonemap, "linear\0aces\0")) {
         settings.tonemap = Tonemap(tonemap);
         actions.displayChanged = true;
     }
@@ -172,7 +184,8 @@ OverlayActions Overlay::build(const OverlayFacts& facts, ViewSettings& settings,
     if (visible) {
         ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
         ImGui::SetNextWindowBgAlpha(0.75f);
-        ImGui::Begin("Wavefront", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+        ImGui::Begin(facts.scene.c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+        ImGui::PushItemWidth(ImGui::GetFontSize() * 7.0f);
         statsSection(facts);
         if (ImGui::CollapsingHeader("Render", ImGuiTreeNodeFlags_DefaultOpen))
             renderSection(settings, actions);
@@ -194,6 +207,7 @@ OverlayActions Overlay::build(const OverlayFacts& facts, ViewSettings& settings,
         actions.screenshot = ImGui::Button("Screenshot (F12)");
         if (ImGui::CollapsingHeader("Keys"))
             ImGui::TextUnformatted(kViewerControlsHelp);
+        ImGui::PopItemWidth();
         ImGui::End();
     }
     ImGui::Render();

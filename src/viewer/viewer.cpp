@@ -161,6 +161,7 @@ private:
     double frameMs_ = 0.0;
     // For the closing summary.
     uint64_t fullSamples_ = 0;
+    uint32_t previewFrames_ = 0;
 };
 
 VkExtent2D Viewer::waitForFramebuffer() {
@@ -348,6 +349,8 @@ int Viewer::run() {
             samples = targets_.render(target, target.divisor == 1 ? settings_.sppLimit : 0);
         if (target.divisor == 1)
             fullSamples_ += samples;
+        else
+            ++previewFrames_;
         shownStats_ = target.renderer->stats();
         shownSpp_ = target.renderer->samplesDone();
         shownSamples_ = samples;
@@ -377,9 +380,10 @@ int Viewer::run() {
         captureScreenshot(options_.screenshot);
     if (!options_.quiet)
         std::fprintf(stderr,
-                     "wavefront: %u frames in %.2f s (%.1f ms/frame); %u spp at %ux%u, "
-                     "%.2f spp/s at full resolution\n",
-                     frame, wall, frame ? 1000.0 * wall / frame : 0.0, targets_.fullSpp(),
+                     "wavefront: %u frames (%u previews) in %.2f s (%.1f ms/frame); %u spp at "
+                     "%ux%u, %.2f spp/s at full resolution\n",
+                     frame, previewFrames_, wall, frame ? 1000.0 * wall / frame : 0.0,
+                     targets_.fullSpp(),
                      presenter_.extent().width, presenter_.extent().height,
                      wall > 0.0 ? fullSamples_ / wall : 0.0);
     if (context_.validationMessageCount() > 0) {

@@ -67,7 +67,7 @@ bool finite(vec3 v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-constexpr int CHI2_SAMPLES = 400000;
+constexpr int CHI2_SAMPLES = 300000;
 
 // Counts of non-delta sampled directions per sphere cell (delta and failed samples fall in no
 // cell, just as bsdfPdf leaves their mass out).

@@ -41,7 +41,12 @@ run() { # run NAME EXPECTED_CODE COMMAND...; output in $work/NAME.log
 check() { # check NAME COMMAND...
     local name=$1
     shift
-    if "$@" >"$work/check.log" 2>&1; then pass; else failed "$name" "$work/check.log"; fi
+    if "$@" >"$work/check.log" 2>&1; then
+        pass
+        grep '^ok' "$work/check.log" # the comparisons' figures
+    else
+        failed "$name" "$work/check.log"
+    fi
 }
 
 if ! command -v Xvfb >/dev/null; then
@@ -84,6 +89,7 @@ check "resized view matches render" "$compare" "$work/resized.exr" "$work/render
 run "orbit" 0 "$wavefront" view "$cornell" --width 256 --height 192 --orbit 10 --frames 6 \
     --target-ms 1 --screenshot "$work/orbit.exr"
 check "orbit screenshot written" test -s "$work/orbit.png"
+check "orbit drew previews" grep -Eq "frames \([1-9][0-9]* previews\)" "$work/orbit.log"
 
 # 4. SIGTERM while refining: a clean quit that still writes the screenshot atomically.
 "$wavefront" view "$cornell" --width 128 --height 96 --screenshot "$work/term.exr" \
