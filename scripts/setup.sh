@@ -9,10 +9,11 @@ packages=(
     build-essential cmake ninja-build pkg-config
     libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers
     glslang-dev libglm-dev libtinygltf-dev libopenexr-dev libstb-dev
+    libglfw3-dev libimgui-dev # wavefront view (WF_BUILD_VIEWER)
 )
 tests=OFF
 if [ "${1:-}" = "--with-tests" ]; then
-    packages+=(googletest libgtest-dev)
+    packages+=(googletest libgtest-dev xvfb xauth) # the viewer test's display; xvfb-run
     tests=ON
 fi
 

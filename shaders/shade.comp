@@ -58,6 +58,9 @@ void main() {
     vec3 origin = rayOrigin[path].xyz;
     float previousPdf = rayOrigin[path].w; // BSDF density of this ray's direction
     vec3 beta = throughput[path].rgb;
+    // Product of eta^2 over refractions: radiance scaling across interfaces must not steer
+    // Russian roulette (pbrt's etaScale).
+    float etaScale = throughput[path].w;
     float t = uintBitsToFloat(hit.x);
 
 #if WF_HAS_ENVIRONMENT
@@ -165,10 +168,11 @@ void main() {
             if (sampled) {
                 vec3 wi = normalize(tangent * s.wi.x + bitangent * s.wi.y + n * s.wi.z);
                 beta *= s.weight;
+                etaScale *= s.eta * s.eta;
                 if (pass.depth >= params.rrDepth) {
                     // Survive with the throughput's largest channel (at most 1) and divide by
                     // it: unbiased, and paths that carry little end early.
-                    float survive = min(max(beta.r, max(beta.g, beta.b)), 1.0);
+                    float survive = min(max(beta.r, max(beta.g, beta.b)) * etaScale, 1.0);
                     float u = sample1D(pixel, sampleIndex,
                                        bounceDimension(pass.depth, WF_DIM_ROULETTE), params.seed);
                     beta = u < survive ? beta / survive : vec3(0.0);
@@ -182,7 +186,7 @@ void main() {
                     // A Dirac bounce stores pdf 0: emission it finds counts in full.
                     rayOrigin[path] = vec4(next, s.isDelta ? 0.0 : s.pdf);
                     rayDirection[path] = vec4(wi, 0.0);
-                    throughput[path] = vec4(beta, 0.0);
+                    throughput[path] = vec4(beta, etaScale);
                 }
             }
         }

@@ -87,9 +87,9 @@ int runViewCommand(const std::vector<std::string>& args) {
     options.windowHeight = int(parsed.uintValue("--height", 0, 1, 16384));
     ViewSettings& settings = options.settings;
     settings.sppLimit = parsed.uintValue("--spp", 0, 1, 1u << 20);
-    settings.maxDepth = parsed.uintValue("--max-depth", 16, 1, 1024);
-    settings.rrDepth = parsed.uintValue("--rr-depth", 3, 0, 1024);
-    settings.seed = parsed.uintValue("--seed", 0, 0, 0xffffffffu);
+    settings.render.maxDepth = parsed.uintValue("--max-depth", 16, 1, 1024);
+    settings.render.rrDepth = parsed.uintValue("--rr-depth", 3, 0, 1024);
+    settings.render.seed = parsed.uintValue("--seed", 0, 0, 0xffffffffu);
     settings.exposure = parsed.floatValue("--exposure", 0.0f, -64.0f, 64.0f);
     settings.tonemap = parsed.choiceValue("--tonemap", "linear", {"linear", "aces"}) == "aces"
                            ? Tonemap::Aces

@@ -299,19 +299,16 @@ Scene Converter::run() {
     return std::move(scene_);
 }
 
-Scene loadModel(const std::string& path) {
+std::string lowerExtension(const std::string& path) {
     std::string ext = fs::path(path).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) {
         return char(std::tolower(c));
     });
-    if (ext != ".gltf" && ext != ".glb") {
-        throw InputError(path + ": expected a .gltf or .glb file");
-    }
-    std::vector<unsigned char> bytes;
-    std::string why;
-    if (!gltf::readLimited(path, bytes, why)) {
-        throw InputError(path + ": cannot read scene: " + why);
-    }
+    return ext;
+}
+
+Scene loadModel(std::vector<unsigned char> bytes, const std::string& path) {
+    const std::string ext = lowerExtension(path);
     const size_t size = bytes.size();
     const bool binary = size >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
     if (ext == ".glb" && !binary) {
@@ -370,8 +367,17 @@ Scene loadModel(const std::string& path) {
 } // namespace
 
 Scene loadGltf(const std::string& path, std::vector<std::string>* warnings) {
+    const std::string ext = lowerExtension(path);
+    if (ext != ".gltf" && ext != ".glb") {
+        throw InputError(path + ": expected a .gltf or .glb file");
+    }
+    std::vector<unsigned char> bytes;
+    std::string why;
+    if (!gltf::readLimited(path, bytes, why)) {
+        throw InputError(path + ": cannot read scene: " + why);
+    }
     gltf::WarningSink sink;
-    Scene scene = loadModel(path);
+    Scene scene = loadModel(std::move(bytes), path);
     for (std::string& line : sink.take()) {
         if (warnings) {
             warnings->push_back(std::move(line));
@@ -380,6 +386,11 @@ Scene loadGltf(const std::string& path, std::vector<std::string>* warnings) {
         }
     }
     return scene;
+}
+
+Scene loadGltfFromMemory(const unsigned char* data, size_t size, const std::string& path) {
+    gltf::WarningSink sink; // the caller (a fuzzer) wants no output
+    return loadModel(std::vector<unsigned char>(data, data + size), path);
 }
 
 } // namespace wf

@@ -2,6 +2,7 @@
 // scene's node tree with the vertex attributes and textures their materials use, metallic-
 // roughness materials, every perspective camera and KHR_lights_punctual light.
 #pragma once
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -22,5 +23,9 @@ namespace wf {
 // Warnings (skipped primitives, missing images, ignored extensions) go to `warnings` when
 // given, else to stderr once the whole file has loaded; a refused file prints nothing.
 Scene loadGltf(const std::string& path, std::vector<std::string>* warnings = nullptr);
+
+// The same for a file already in memory (the fuzzer): `path` names it in messages, its
+// extension says .gltf or .glb, and its folder is where URIs resolve. Warnings are dropped.
+Scene loadGltfFromMemory(const unsigned char* data, std::size_t size, const std::string& path);
 
 } // namespace wf

@@ -15,10 +15,13 @@ namespace wf::gltf {
 namespace {
 
 // The GPU normalizes cross(p1 - p0, p2 - p0) in float; a triangle whose float cross product
-// has no normal-range length would give it a NaN normal, so such triangles count as zero area.
+// has no normal-range squared length (too small, or overflowing to infinity for coordinates
+// near 1e19) would give it a NaN normal, so such triangles count as degenerate.
 bool isDegenerate(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
     const glm::vec3 n = glm::cross(b - a, c - a);
-    return !(glm::dot(n, n) >= std::numeric_limits<float>::min());
+    const float length2 = glm::dot(n, n);
+    return !(length2 >= std::numeric_limits<float>::min() &&
+             length2 <= std::numeric_limits<float>::max());
 }
 
 bool finite(const glm::vec3& v) { return std::isfinite(v.x + v.y + v.z); }
@@ -33,7 +36,11 @@ glm::vec3 orthogonal(const glm::vec3& n) {
 } // namespace
 
 uint32_t octEncode(glm::vec3 n) {
-    n /= std::abs(n.x) + std::abs(n.y) + std::abs(n.z);
+    const float sum = std::abs(n.x) + std::abs(n.y) + std::abs(n.z);
+    if (!(sum > 0.0f && sum <= std::numeric_limits<float>::max())) {
+        return glm::packSnorm2x16(glm::vec2(0.0f)); // +Z; callers pass unit vectors
+    }
+    n /= sum;
     glm::vec2 e(n.x, n.y);
     if (n.z < 0.0f) {
         e = glm::vec2((1.0f - std::abs(n.y)) * (n.x >= 0.0f ? 1.0f : -1.0f),

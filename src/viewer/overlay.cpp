@@ -85,20 +85,21 @@ void statsSection(const OverlayFacts& facts) {
 // RenderSettings fields (a sampler, a light-sampling strategy) get their row here and their
 // flag in view_command.cpp, and set renderChanged like max-depth does.
 void renderSection(ViewSettings& settings, OverlayActions& actions) {
-    int maxDepth = int(settings.maxDepth), rrDepth = int(settings.rrDepth);
-    int seed = int(settings.seed), spp = int(settings.sppLimit);
+    RenderSettings& render = settings.render;
+    int maxDepth = int(render.maxDepth), rrDepth = int(render.rrDepth);
+    int seed = int(render.seed), spp = int(settings.sppLimit);
     ImGui::SliderInt("--max-depth", &maxDepth, 1, 64);
     if (ImGui::IsItemDeactivatedAfterEdit()) { // rebuilding per slider step would stall
-        settings.maxDepth = uint32_t(maxDepth);
+        render.maxDepth = uint32_t(maxDepth);
         actions.renderChanged = true;
     }
     ImGui::SliderInt("--rr-depth", &rrDepth, 0, 64);
     if (ImGui::IsItemDeactivatedAfterEdit()) {
-        settings.rrDepth = uint32_t(rrDepth);
+        render.rrDepth = uint32_t(rrDepth);
         actions.renderChanged = true;
     }
     if (ImGui::InputInt("--seed", &seed) && seed >= 0) {
-        settings.seed = uint32_t(seed);
+        render.seed = uint32_t(seed);
         actions.renderChanged = true;
     }
     if (ImGui::InputInt("--spp (0: none)", &spp, 16) && spp >= 0)

@@ -24,9 +24,7 @@ void RenderTargets::rebuild(VkExtent2D size, const RenderSettings& settings,
     settings_ = settings;
     settings_.width = size.width;
     settings_.height = size.height;
-    // Only the path-buffer size depends on the renderer's wave limit; the frame's work is
-    // bounded by the samples requested, so the default limit stays.
-    settings_.samplesPerPixel = 1u << 30;
+    settings_.samplesPerPixel = 1u << 30; // the viewer asks for samples frame by frame
     displayBuffer_ = &displayBuffer;
     full_ = makeTarget(1);
     if (sameSize)
@@ -43,6 +41,10 @@ RenderTarget RenderTargets::makeTarget(uint32_t divisor) {
     RenderSettings settings = settings_;
     settings.width = std::max(1u, size_.width / divisor);
     settings.height = std::max(1u, size_.height / divisor);
+    // A frame renders the budget's few samples, so path buffers for one sample of every pixel
+    // suffice (not the render command's 2^20 paths per renderer); the floor keeps a small
+    // window's frame to one wave.
+    settings.maxPathsPerWave = std::max(settings.width * settings.height, 1u << 18);
     RenderTarget target;
     target.divisor = divisor;
     target.budget = SampleBudget(targetSeconds_);

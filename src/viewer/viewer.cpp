@@ -188,11 +188,7 @@ bool Viewer::fitWindow(bool force) {
 }
 
 void Viewer::rebuildTargets() {
-    RenderSettings render;
-    render.maxDepth = settings_.maxDepth;
-    render.rrDepth = settings_.rrDepth;
-    render.seed = settings_.seed;
-    targets_.rebuild(presenter_.extent(), render, presenter_.displayBuffer());
+    targets_.rebuild(presenter_.extent(), settings_.render, presenter_.displayBuffer());
 }
 
 void Viewer::selectCamera(uint32_t index) {
@@ -282,8 +278,8 @@ void Viewer::saveScreenshot(const std::string& exrPath) {
     data.height = presenter_.extent().height;
     data.radiance = renderer.readImage();
     data.stats = &renderer.stats();
-    data.seed = settings_.seed;
-    data.maxDepth = settings_.maxDepth;
+    data.seed = settings_.render.seed;
+    data.maxDepth = settings_.render.maxDepth;
     data.shownWidth = presenter_.extent().width;
     data.shownHeight = presenter_.extent().height;
     data.shownRgba = presenter_.shownPixels();

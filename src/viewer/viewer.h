@@ -8,16 +8,17 @@
 #include <optional>
 #include <string>
 
+#include "render/wavefront_renderer.h"
 #include "viewer/display_pass.h"
 
 namespace wf {
 
 // What the user can change while viewing, named as the command-line flags.
 struct ViewSettings {
-    // Restart the accumulation when changed.
-    uint32_t maxDepth = 16;
-    uint32_t rrDepth = 3;
-    uint32_t seed = 0;
+    // The renderer's settings (max depth, Russian roulette, seed, and whatever the renderer
+    // gains): a change rebuilds the renderers and restarts the accumulation. Width, height and
+    // spp are the viewer's business and ignored here.
+    RenderSettings render;
     // Refinement stops at this many samples per pixel; 0: never.
     uint32_t sppLimit = 0;
     // Display only.
