@@ -60,7 +60,7 @@ Environment rowEnvironment(uint32_t width, uint32_t height, float (*rowRadiance)
     for (uint32_t y = 0; y < height; ++y)
         for (uint32_t x = 0; x < width; ++x)
             for (int c = 0; c < 3; ++c)
-                env.rgb[(size_t(y) * width + x) * 3 + c] = rowRadiance(y);
+                env.rgb[(size_t(y) * width + x) * 3 + c] = rowRadiance ? rowRadiance(y) : 0.0f;
     return env;
 }
 
@@ -76,6 +76,34 @@ double rowEnvironmentIrradiance(uint32_t height, float (*rowRadiance)(uint32_t))
         irradiance += rowRadiance(r) * M_PI * (s1 * s1 - s0 * s0);
     }
     return irradiance;
+}
+
+Scene furnaceSphere(const Material& material, float environmentRadiance) {
+    Scene scene;
+    scene.materials.push_back(material);
+    const int rings = 48, segments = 96;
+    auto point = [&](int i, int j) {
+        double theta = M_PI * i / rings, phi = 2.0 * M_PI * j / segments;
+        return glm::vec3(std::sin(theta) * std::cos(phi), std::cos(theta),
+                         std::sin(theta) * std::sin(phi));
+    };
+    for (int i = 0; i < rings; ++i)
+        for (int j = 0; j < segments; ++j) {
+            glm::vec3 a = point(i, j), b = point(i + 1, j), c = point(i + 1, j + 1),
+                      d = point(i, j + 1);
+            if (i > 0)
+                scene.triangles.push_back({a, 0, d, WF_NO_EMITTER, b, 0});
+            if (i < rings - 1)
+                scene.triangles.push_back({b, 0, d, WF_NO_EMITTER, c, 0});
+        }
+    scene.environment = rowEnvironment(1, 1, nullptr);
+    scene.environment.rgb = {environmentRadiance, environmentRadiance, environmentRadiance};
+    scene.camera.position = glm::vec3(0.0f, 0.0f, 4.0f);
+    scene.camera.forward = glm::vec3(0.0f, 0.0f, -1.0f);
+    scene.camera.up = glm::vec3(0.0f, 1.0f, 0.0f);
+    scene.camera.yfov = 0.25f; // the sphere fills the view
+    scene.hasCamera = true;
+    return scene;
 }
 
 } // namespace wf::test

@@ -26,4 +26,9 @@ Environment rowEnvironment(uint32_t width, uint32_t height, float (*rowRadiance)
 // Irradiance at an upward-facing point from that environment: rows above the horizon only.
 double rowEnvironmentIrradiance(uint32_t height, float (*rowRadiance)(uint32_t));
 
+// A closed UV sphere (outward, counter-clockwise) of `material` at the origin, radius 1, seen by
+// a camera whose view is filled by it, with no light but a uniform environment of radiance
+// `environmentRadiance`: the BSDF white-furnace test.
+Scene furnaceSphere(const Material& material, float environmentRadiance);
+
 } // namespace wf::test
