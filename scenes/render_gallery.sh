@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Renders each failure scene with each method at equal samples for the README's gallery:
+# docs/images/failures/<scene>_<method>.png. Usage: scenes/render_gallery.sh [build/wavefront]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+wavefront=${1:-build/wavefront}
+out=docs/images/failures
+mkdir -p "$out"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+render() { # scene method flags...
+    local scene=$1 method=$2
+    shift 2
+    "$wavefront" render "scenes/$scene.gltf" -o "$tmp/$scene-$method.exr" --width 200 --spp 16 \
+        --seed 1 --quiet "$@"
+    mv "$tmp/$scene-$method.png" "$out/${scene}_$method.png"
+}
+for scene in tiny_light veach_mis glass_caustic; do
+    render "$scene" bsdf --light-sampling bsdf
+    render "$scene" nee --light-sampling nee
+    render "$scene" mis --light-sampling mis
+done
+render sphere_near_floor area --light-sampling nee --sphere-sampling area
+render sphere_near_floor solid-angle --light-sampling nee --sphere-sampling solid-angle
+echo "wrote $(ls "$out" | wc -l) images to $out"
