@@ -31,7 +31,8 @@ one_line_error() { [ "$(wc -l <"$work/stderr")" -eq 1 ] && grep -q . "$work/stde
 check "top help" 0 "$wavefront" --help
 expect "top help lists render" grep -q "render" "$work/stdout"
 check "render help" 0 "$wavefront" render --help
-for flag in --output --spp --width --height --max-depth --seed --json --quiet --device; do
+for flag in --output --spp --width --height --max-depth --rr-depth --seed --json --quiet \
+    --device --light-sampling --triangle-sampling --sphere-sampling --min-throughput --clamp; do
     expect "render help lists $flag" grep -q -- "$flag" "$work/stdout"
 done
 
@@ -59,6 +60,15 @@ expect "unknown flag: one line" one_line_error
 check "missing output" 2 "$wavefront" render "$scenes/cornell_box.gltf"
 check "bad spp" 2 "$wavefront" render "$scenes/cornell_box.gltf" -o "$work/x.exr" --spp -3
 expect "bad spp: one line" one_line_error
+check "bad light sampling" 2 "$wavefront" render "$scenes/cornell_box.gltf" -o "$work/x.exr" \
+    --light-sampling magic
+expect "bad light sampling: one line" one_line_error
+check "negative clamp" 2 "$wavefront" render "$scenes/cornell_box.gltf" -o "$work/x.exr" --clamp -1
+for mode in bsdf nee mis; do
+    check "light sampling $mode" 0 "$wavefront" render "$scenes/cornell_box.gltf" \
+        -o "$work/$mode.exr" --spp 2 --width 24 --quiet --light-sampling $mode \
+        --triangle-sampling area --sphere-sampling area --min-throughput 0.01 --clamp 50
+done
 check "spp zero" 2 "$wavefront" render "$scenes/cornell_box.gltf" -o "$work/x.exr" --spp 0
 check "missing scene" 2 "$wavefront" render "$work/none.gltf" -o "$work/x.exr"
 expect "missing scene: one line" one_line_error
