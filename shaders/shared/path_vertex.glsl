@@ -1,0 +1,186 @@
+// One vertex of a path: what the ray found (emission, MIS-weighted against light sampling), a
+// next-event connection to a light, and the BSDF-sampled continuation with Russian roulette.
+// The wavefront's shade pass and the megakernel baseline both call shadePathVertex, so the two
+// trace the same paths. Includers provide bindings, geometry, rng, sampling, light_sampling,
+// bsdf, lights and surface.
+// Estimator: WF_LIGHT_SAMPLING 0 = BSDF sampling only, 1 = NEE only, 2 = MIS (power heuristic).
+
+struct PathVertex {
+    // In: where the path is.
+    uint pixel;
+    uint sampleIndex;
+    uint depth;        // bounce index: this ray is path segment depth + 1
+    uvec4 hit;         // from intersectClosest
+    // In and out: the ray, and after shading the continuation ray.
+    vec3 origin;
+    vec3 direction;
+    float previousPdf; // BSDF density of `direction` (0: camera ray or a Dirac bounce)
+    vec3 beta;         // throughput
+    float etaScale;    // product of eta^2 over refractions, so that RR ignores radiance scaling
+    // Out.
+    vec3 radiance;     // emission found by this ray, weighted
+    bool continues;
+    bool connects;
+    vec3 shadowOrigin;
+    vec3 shadowSegment;  // to the light point: t in (0, 1)
+    vec3 shadowRadiance; // added if the segment is unoccluded
+};
+
+// Weight of emission found by a ray whose direction had BSDF density directionPdf (0: camera or
+// a specular bounce, which light sampling cannot reproduce) and light density lightPdf.
+float emissionWeight(float directionPdf, float lightPdf) {
+#if WF_LIGHT_SAMPLING == 0
+    return 1.0;
+#elif WF_LIGHT_SAMPLING == 1
+    return directionPdf == 0.0 || lightPdf == 0.0 ? 1.0 : 0.0;
+#else
+    return directionPdf == 0.0 ? 1.0 : powerHeuristic(directionPdf, lightPdf);
+#endif
+}
+
+// --clamp: scale a contribution down so no channel exceeds the limit (biased, off by default).
+vec3 clampContribution(vec3 c) {
+    float peak = max(c.r, max(c.g, c.b));
+    return params.clampRadiance > 0.0 && peak > params.clampRadiance
+               ? c * (params.clampRadiance / peak) : c;
+}
+
+float vertexSample1D(PathVertex v, uint offset) {
+    return sample1D(v.pixel, v.sampleIndex, bounceDimension(v.depth, offset), params.seed);
+}
+
+vec2 vertexSample2D(PathVertex v, uint offset) {
+    return sample2D(v.pixel, v.sampleIndex, bounceDimension(v.depth, offset), params.seed);
+}
+
+// Emission from the environment or a sphere light; returns false when the path ends here.
+bool shadeLightHit(inout PathVertex v) {
+    float t = uintBitsToFloat(v.hit.x);
+    if (v.hit.w == WF_MISS) {
+#if WF_HAS_ENVIRONMENT
+        float lightPdf = 0.0;
+#if WF_HAS_EMITTERS && WF_LIGHT_SAMPLING != 0
+        lightPdf = environmentLightPdf(v.direction);
+#endif
+        v.radiance += clampContribution(v.beta * environmentRadiance(v.direction) *
+                                        emissionWeight(v.previousPdf, lightPdf));
+#endif
+        return false;
+    }
+#if WF_HAS_SPHERE_LIGHTS
+    // Sphere lights are pure emitters: add what leaves the outside and end the path.
+    if ((v.hit.w & WF_SPHERE_HIT) != 0u) {
+        PunctualLight light = lights[v.hit.w & ~WF_SPHERE_HIT];
+        vec3 normal = normalize(v.origin + t * v.direction - light.position);
+        float cosLight = dot(normal, -v.direction);
+        if (cosLight > 0.0) {
+            float lightPdf = 0.0;
+#if WF_HAS_EMITTERS && WF_LIGHT_SAMPLING != 0
+            if (light.emitter != WF_NO_EMITTER)
+                lightPdf = sphereLightPdf(light.emitter, light, v.origin, t, cosLight);
+#endif
+            v.radiance += clampContribution(v.beta * sphereRadiance(light) *
+                                            emissionWeight(v.previousPdf, lightPdf));
+        }
+        return false;
+    }
+#endif
+    return true;
+}
+
+BsdfParams bsdfAt(SurfaceHit surface) {
+    BsdfParams bsdf;
+    bsdf.baseColor = surface.baseColor;
+    bsdf.metallic = surface.metallic;
+    bsdf.roughness = surface.roughness;
+    bsdf.ior = surface.ior;
+    bsdf.transmission = surface.transmission;
+    bsdf.specular = surface.specular;
+    bsdf.specularColor = surface.specularColor;
+    return bsdf;
+}
+
+void shadePathVertex(inout PathVertex v) {
+    v.radiance = vec3(0.0);
+    v.continues = false;
+    v.connects = false;
+    if (!shadeLightHit(v))
+        return;
+
+    float t = uintBitsToFloat(v.hit.x);
+    vec3 wo = -v.direction;
+    SurfaceHit surface = loadSurface(v.hit.w, uintBitsToFloat(v.hit.y), uintBitsToFloat(v.hit.z),
+                                     wo);
+    if (any(greaterThan(surface.emission, vec3(0.0)))) {
+        float lightPdf = 0.0;
+#if WF_HAS_TRIANGLE_EMITTERS && WF_LIGHT_SAMPLING != 0
+        if (v.previousPdf > 0.0 && surface.emitter != WF_NO_EMITTER)
+            lightPdf = triangleLightPdf(surface.emitter, triangles[v.hit.w], v.origin, t,
+                                        abs(dot(surface.ng, wo)));
+#endif
+        v.radiance += clampContribution(v.beta * surface.emission *
+                                        emissionWeight(v.previousPdf, lightPdf));
+    }
+
+    BsdfParams bsdf = bsdfAt(surface);
+    // Opaque surfaces shade two-sided (the frame faces the arriving ray); transmissive ones
+    // keep +z on the outside so that the BSDF knows which medium the ray is in.
+    bool flip = surface.transmission > 0.0 && !surface.frontFace;
+    vec3 n = flip ? -surface.ns : surface.ns;
+    vec3 geometricOutside = flip ? -surface.ng : surface.ng;
+    vec3 tangent, bitangent;
+    buildOrthonormalBasis(n, tangent, bitangent);
+    vec3 woLocal = vec3(dot(wo, tangent), dot(wo, bitangent), dot(wo, n));
+
+#if WF_HAS_EMITTERS && WF_LIGHT_SAMPLING != 0
+    // Next-event estimation: the connection adds one more path segment.
+    if (v.depth + 2u <= params.maxDepth && bsdfHasNonDelta(bsdf)) {
+        LightSample light = sampleLight(vertexSample1D(v, WF_DIM_LIGHT_CHOICE),
+                                        vertexSample2D(v, WF_DIM_LIGHT_POINT),
+                                        vertexSample1D(v, WF_DIM_LIGHT_EXTRA), surface.p);
+        vec3 wiLocal = vec3(dot(light.direction, tangent), dot(light.direction, bitangent),
+                            dot(light.direction, n));
+        if (light.pdf > 0.0) {
+            vec3 f = bsdfEval(bsdf, woLocal, wiLocal);
+            float weight = 1.0;
+#if WF_LIGHT_SAMPLING == 2
+            if (!light.isDelta)
+                weight = powerHeuristic(light.pdf, bsdfPdf(bsdf, woLocal, wiLocal));
+#endif
+            vec3 contribution = v.beta * f * light.radiance * (abs(wiLocal.z) * weight / light.pdf);
+            v.shadowOrigin =
+                offsetRayOrigin(surface.p, surface.pError, geometricOutside, light.direction);
+            v.shadowSegment = light.segmentEnd - v.shadowOrigin;
+            v.shadowRadiance = clampContribution(contribution);
+            v.connects = any(greaterThan(contribution, vec3(0.0)));
+        }
+    }
+#endif
+
+    if (v.depth + 1u >= params.maxDepth)
+        return;
+    BsdfSample s;
+    if (!bsdfSample(bsdf, woLocal, vertexSample1D(v, WF_DIM_BSDF_LOBE),
+                    vertexSample2D(v, WF_DIM_BSDF), s))
+        return;
+    vec3 wi = normalize(tangent * s.wi.x + bitangent * s.wi.y + n * s.wi.z);
+    vec3 beta = v.beta * s.weight;
+    float etaScale = v.etaScale * s.eta * s.eta;
+    if (v.depth >= params.rrDepth) {
+        // Survive with the throughput's largest channel (at most 1) and divide by it:
+        // unbiased, and paths that carry little end early.
+        float survive = min(max(beta.r, max(beta.g, beta.b)) * etaScale, 1.0);
+        beta = vertexSample1D(v, WF_DIM_ROULETTE) < survive ? beta / survive : vec3(0.0);
+    }
+    // --min-throughput: the course's biased alternative to roulette.
+    if (max(beta.r, max(beta.g, beta.b)) < params.minThroughput)
+        beta = vec3(0.0);
+    v.continues = any(greaterThan(beta, vec3(0.0)));
+    if (v.continues) {
+        v.origin = offsetRayOrigin(surface.p, surface.pError, geometricOutside, wi);
+        v.direction = wi;
+        v.previousPdf = s.isDelta ? 0.0 : s.pdf; // a Dirac bounce: emission counts in full
+        v.beta = beta;
+        v.etaScale = etaScale;
+    }
+}

@@ -1,0 +1,43 @@
+// Ray queries against the whole scene (BVH of triangles plus the few sphere lights), shared by
+// the intersect and shadow passes and by the megakernel baseline.
+#define WF_BVH_NODE(i) bvhNodes[i]
+#define WF_BVH_TRIANGLE(i) triangles[i]
+#include "bvh_traverse.h"
+#include "light_sampling.h"
+
+// (t, b1, b2, triangle) as bits, (t, -, -, WF_SPHERE_HIT | light), or w = WF_MISS.
+uvec4 intersectClosest(vec3 origin, vec3 direction) {
+    HitRecord hit;
+    uvec4 result = uvec4(0u, 0u, 0u, WF_MISS);
+    float closest = 3.0e38;
+    if (traceClosest(origin, direction, closest, hit)) {
+        result = uvec4(floatBitsToUint(hit.t), floatBitsToUint(hit.b1), floatBitsToUint(hit.b2),
+                       hit.triangle);
+        closest = hit.t;
+    }
+#if WF_HAS_SPHERE_LIGHTS
+    // Sphere lights are few: test them all rather than put them in the BVH.
+    for (uint i = 0u; i < params.sphereLightCount; ++i) {
+        float t = raySphereNear(origin, direction, lights[i].position, lights[i].radius, false);
+        if (t > 0.0 && t < closest) {
+            closest = t;
+            result = uvec4(floatBitsToUint(t), 0u, 0u, WF_SPHERE_HIT | i);
+        }
+    }
+#endif
+    return result;
+}
+
+// Whether anything blocks the segment origin + t * segment, t in (0, 1).
+bool segmentOccluded(vec3 origin, vec3 segment) {
+    bool occluded = traceAny(origin, segment, 1.0);
+#if WF_HAS_SPHERE_LIGHTS
+    float length_ = length(segment);
+    for (uint i = 0u; i < params.sphereLightCount && !occluded; ++i) {
+        float t = raySphereNear(origin, segment / length_, lights[i].position, lights[i].radius,
+                                false);
+        occluded = t > 0.0 && t < length_;
+    }
+#endif
+    return occluded;
+}
