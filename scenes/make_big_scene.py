@@ -120,7 +120,7 @@ def main():
         out.write(b"glTF" + struct.pack("<II", 2, 12 + 8 + len(text) + 8 + len(blob)))
         out.write(struct.pack("<I", len(text)) + b"JSON" + text)
         out.write(struct.pack("<I", len(blob)) + b"BIN\0" + bytes(blob))
-    triangles = 2 * args.terrain ** 2 + k * k * 2 * 48 * 24 + 2
+    triangles = 2 * args.terrain ** 2 + k * k * 2 * 48 * (24 - 1) + 2  # poles: 1 per quad
     print("wrote %s: %d triangles" % (args.output, triangles))
 
 

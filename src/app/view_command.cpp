@@ -26,24 +26,30 @@ const CommandSpec& viewSpec() {
             {"--spp", "", "N", "stop refining at N samples per pixel (default: never)"},
             {"--max-depth", "", "D", "path segments from the camera (default 16)"},
             {"--rr-depth", "", "N", "Russian roulette from bounce N on (default 3)"},
+            {"--light-sampling", "", "MODE", "bsdf, nee or mis, as for render (default mis)"},
+            {"--triangle-sampling", "", "MODE", "area or solid-angle, as for render (default "
+                                                "solid-angle)"},
+            {"--sphere-sampling", "", "MODE", "area or solid-angle, as for render (default "
+                                              "solid-angle)"},
+            {"--min-throughput", "", "T", "end paths below throughput T (biased; default 0: "
+                                          "off)"},
+            {"--clamp", "", "X", "clamp each contribution to X (biased; default 0: off)"},
+            {"--env", "", "FILE.exr", "equirectangular environment map, as for render"},
             {"--seed", "", "S", "random seed, as for render (default 0)"},
             {"--exposure", "", "EV", "display exposure in stops: radiance x 2^EV (default 0)"},
-            {"--tonemap", "", "MODE", "linear (clamp to [0,1], as render's PNG) or aces "
-                                      "(Narkowicz's ACES filmic fit) (default linear)"},
-            {"--target-ms", "", "MS", "path tracing per frame aims at MS milliseconds; while "
-                                      "the camera moves a lower-resolution preview is drawn "
-                                      "if needed (default 33)"},
-            {"--camera", "", "N", "start from camera N of the list (the file's cameras, then "
-                                  "one framing the scene) (default: render's camera)"},
+            {"--tonemap", "", "MODE", "linear (clamp, as render's PNG) or aces (filmic) "
+                                      "(default linear)"},
+            {"--target-ms", "", "MS", "path tracing per frame aims at MS ms (default 33)"},
+            {"--camera", "", "NAME|INDEX", "the file's camera, or the framing one after them "
+                                           "(default: render's)"},
             {"--no-overlay", "", "", "start with the overlay hidden (H shows it)"},
             {"--device", "", "N", "Vulkan device index (default: WAVEFRONT_DEVICE, else the "
                                   "first GPU)"},
             {"--frames", "", "N", "quit after N frames (scripts, tests)"},
-            {"--screenshot", "", "FILE.exr", "on quit, write the accumulated radiance to FILE.exr "
-                                             "and the frame as shown to FILE.png"},
+            {"--screenshot", "", "FILE.exr", "on quit, write the radiance (and FILE.png, as "
+                                             "shown)"},
             {"--resize-at", "", "F:WxH", "after frame F, resize the window to W x H (tests)"},
-            {"--orbit", "", "DEG", "orbit the camera DEG degrees every frame, as a drag would "
-                                   "(demos, benchmarks)"},
+            {"--orbit", "", "DEG", "orbit DEG degrees per frame, as a drag would (benchmarks)"},
             {"--quiet", "-q", "", "print nothing but errors"},
         },
         std::string("Mouse and keys:\n") + kViewerControlsHelp +
@@ -90,13 +96,23 @@ int runViewCommand(const std::vector<std::string>& args) {
     settings.render.maxDepth = parsed.uintValue("--max-depth", 16, 1, 1024);
     settings.render.rrDepth = parsed.uintValue("--rr-depth", 3, 0, 1024);
     settings.render.seed = parsed.uintValue("--seed", 0, 0, 0xffffffffu);
+    settings.render.lightSampling =
+        parseLightSampling(parsed.choiceValue("--light-sampling", "mis", {"bsdf", "nee", "mis"}));
+    settings.render.triangleSolidAngle = parsed.choiceValue("--triangle-sampling", "solid-angle",
+                                                            {"area", "solid-angle"}) ==
+                                         "solid-angle";
+    settings.render.sphereSolidAngle = parsed.choiceValue("--sphere-sampling", "solid-angle",
+                                                          {"area", "solid-angle"}) ==
+                                       "solid-angle";
+    settings.render.minThroughput = parsed.floatValue("--min-throughput", 0.0f, 0.0f, 1e30f);
+    settings.render.clampRadiance = parsed.floatValue("--clamp", 0.0f, 0.0f, 1e30f);
     settings.exposure = parsed.floatValue("--exposure", 0.0f, -64.0f, 64.0f);
     settings.tonemap = parsed.choiceValue("--tonemap", "linear", {"linear", "aces"}) == "aces"
                            ? Tonemap::Aces
                            : Tonemap::Linear;
     settings.targetMs = parsed.floatValue("--target-ms", 33.0f, 1.0f, 60000.0f);
-    if (parsed.has("--camera"))
-        options.camera = parsed.uintValue("--camera", 0, 0, 1u << 20);
+    options.camera = parsed.value("--camera");
+    options.environmentPath = parsed.value("--env").value_or("");
     options.overlay = !parsed.has("--no-overlay");
     if (parsed.has("--device"))
         options.device = static_cast<int>(parsed.uintValue("--device", 0, 0, 64));

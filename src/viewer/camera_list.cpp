@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "errors.h"
 #include "scene/default_camera.h"
 
 namespace wf {
@@ -36,6 +37,20 @@ CameraList viewerCameras(const Scene& scene) {
     if (!scene.hasCamera) // `render` frames the scene itself when the file has no camera
         list.renderDefault = static_cast<uint32_t>(list.cameras.size() - 1);
     return list;
+}
+
+uint32_t findCamera(const CameraList& list, const std::string& nameOrIndex) {
+    const bool digits = !nameOrIndex.empty() &&
+                        nameOrIndex.find_first_not_of("0123456789") == std::string::npos;
+    if (digits && nameOrIndex.size() < 9 && std::stoul(nameOrIndex) < list.cameras.size())
+        return static_cast<uint32_t>(std::stoul(nameOrIndex));
+    std::string names;
+    for (size_t i = 0; i < list.cameras.size(); ++i) {
+        if (list.cameras[i].name == nameOrIndex)
+            return static_cast<uint32_t>(i);
+        names += (i ? ", " : "") + std::to_string(i) + " '" + list.cameras[i].name + "'";
+    }
+    throw UsageError("--camera " + nameOrIndex + ": no such camera; the scene offers " + names);
 }
 
 ViewBounds viewBounds(const Scene& scene) {

@@ -22,6 +22,10 @@ struct CameraList {
 
 CameraList viewerCameras(const Scene& scene);
 
+// The camera `nameOrIndex` names (an index into the list, or a camera's name); UsageError
+// listing the choices otherwise.
+uint32_t findCamera(const CameraList& list, const std::string& nameOrIndex);
+
 // The triangles' bounding sphere (centre of the box, half its diagonal): the orbit target of a
 // camera that looks elsewhere, and the scale of fly speed and dolly limits.
 struct ViewBounds {

@@ -5,6 +5,7 @@
 #include <backends/imgui_impl_vulkan.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 
@@ -24,7 +25,7 @@ const char* const kViewerControlsHelp =
     "  R                    reset the view to the current camera and restart\n"
     "  Space                pause / resume refinement\n"
     "  F12 or P             screenshot: SCENE-NNN.exr (radiance) + .png (as shown)\n"
-    "  H                    show / hide this overlay\n"
+    "  H                    show / hide the overlay\n"
     "  Esc                  quit\n";
 
 namespace {
@@ -81,9 +82,37 @@ void statsSection(const OverlayFacts& facts) {
     }
 }
 
-// One control per ViewSettings field that changes the image, labelled as its flag. New
-// RenderSettings fields (a sampler, a light-sampling strategy) get their row here and their
-// flag in view_command.cpp, and set renderChanged like max-depth does.
+// The estimator's settings, as render's flags name them.
+void samplingRows(RenderSettings& render, OverlayActions& actions) {
+    int lightSampling = int(render.lightSampling);
+    if (ImGui::Combo("--light-sampling", &lightSampling, "bsdf\0nee\0mis\0")) {
+        render.lightSampling = LightSampling(lightSampling);
+        actions.renderChanged = true;
+    }
+    int triangle = render.triangleSolidAngle ? 1 : 0, sphere = render.sphereSolidAngle ? 1 : 0;
+    if (ImGui::Combo("--triangle-sampling", &triangle, "area\0solid-angle\0")) {
+        render.triangleSolidAngle = triangle == 1;
+        actions.renderChanged = true;
+    }
+    if (ImGui::Combo("--sphere-sampling", &sphere, "area\0solid-angle\0")) {
+        render.sphereSolidAngle = sphere == 1;
+        actions.renderChanged = true;
+    }
+    ImGui::InputFloat("--min-throughput", &render.minThroughput, 0.0f, 0.0f, "%g");
+    if (ImGui::IsItemDeactivatedAfterEdit()) {
+        render.minThroughput = std::max(render.minThroughput, 0.0f);
+        actions.renderChanged = true;
+    }
+    ImGui::InputFloat("--clamp", &render.clampRadiance, 0.0f, 0.0f, "%g");
+    if (ImGui::IsItemDeactivatedAfterEdit()) {
+        render.clampRadiance = std::max(render.clampRadiance, 0.0f);
+        actions.renderChanged = true;
+    }
+}
+
+// One control per ViewSettings field that changes the image, labelled as its flag. A new
+// RenderSettings field (a sampler) gets its row here and its flag in view_command.cpp, and
+// sets renderChanged like max-depth does; the viewer passes RenderSettings through whole.
 void renderSection(ViewSettings& settings, OverlayActions& actions) {
     RenderSettings& render = settings.render;
     int maxDepth = int(render.maxDepth), rrDepth = int(render.rrDepth);
@@ -104,6 +133,10 @@ void renderSection(ViewSettings& settings, OverlayActions& actions) {
     }
     if (ImGui::InputInt("--spp (0: none)", &spp, 16) && spp >= 0)
         settings.sppLimit = uint32_t(spp);
+    if (ImGui::TreeNode("Light sampling")) {
+        samplingRows(render, actions);
+        ImGui::TreePop();
+    }
 }
 
 void displaySection(ViewSettings& settings, OverlayActions& actions) {
@@ -184,6 +217,9 @@ OverlayActions Overlay::build(const OverlayFacts& facts, ViewSettings& settings,
     OverlayActions actions;
     if (visible) {
         ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+        // Auto-sized, but never taller than the window: a small window scrolls the overlay.
+        ImGui::SetNextWindowSizeConstraints(
+            ImVec2(0, 0), ImVec2(FLT_MAX, std::max(ImGui::GetIO().DisplaySize.y - 16.0f, 64.0f)));
         ImGui::SetNextWindowBgAlpha(0.75f);
         ImGui::Begin(facts.scene.c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize);
         ImGui::PushItemWidth(ImGui::GetFontSize() * 7.0f);

@@ -14,6 +14,7 @@
 #include "gpu/context.h"
 #include "render/scene_buffers.h"
 #include "scene/default_camera.h"
+#include "scene/environment_map.h"
 #include "scene/gltf_loader.h"
 #include "viewer/camera_controller.h"
 #include "viewer/camera_list.h"
@@ -42,8 +43,14 @@ double secondsSince(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-PreparedScene loadScene(const std::string& path, CameraList& cameras, ViewBounds& bounds) {
-    Scene scene = loadGltf(path);
+PreparedScene loadScene(const ViewerOptions& options, CameraList& cameras, ViewBounds& bounds) {
+    std::vector<std::string> warnings;
+    Scene scene = loadGltf(options.scenePath, &warnings);
+    if (!options.environmentPath.empty())
+        scene.environment = loadEnvironmentExr(options.environmentPath);
+    for (const std::string& line : warnings)
+        if (!options.quiet)
+            std::fprintf(stderr, "%s\n", line.c_str());
     if (!scene.hasCamera)
         scene.camera = frameBounds(scene); // as `wavefront render` does
     cameras = viewerCameras(scene);
@@ -65,14 +72,7 @@ WindowSize windowSize(const ViewerOptions& options, const Camera& camera) {
 }
 
 uint32_t startCamera(const ViewerOptions& options, const CameraList& cameras) {
-    if (!options.camera)
-        return cameras.renderDefault;
-    if (*options.camera >= cameras.cameras.size())
-        throw UsageError("--camera " + std::to_string(*options.camera) + ": the scene offers " +
-                         std::to_string(cameras.cameras.size()) + " camera(s), 0 to " +
-                         std::to_string(cameras.cameras.size() - 1) +
-                         " (the file's, then the framing camera)");
-    return *options.camera;
+    return options.camera ? findCamera(cameras, *options.camera) : cameras.renderDefault;
 }
 
 std::string windowTitle(const std::string& scenePath) {
@@ -94,7 +94,7 @@ class Viewer {
 public:
     explicit Viewer(const ViewerOptions& options)
         : options_(options), settings_(options.settings),
-          scene_(loadScene(options.scenePath, cameras_, bounds_)),
+          scene_(loadScene(options, cameras_, bounds_)),
           cameraIndex_(startCamera(options, cameras_)),
           window_(windowTitle(options.scenePath),
                   windowSize(options, cameras_.cameras[cameraIndex_].camera)),

@@ -41,9 +41,10 @@ struct ViewerOptions {
     int windowWidth = 512;
     int windowHeight = 0;
     ViewSettings settings;
-    // Index into the camera list (the file's cameras, then the framing one); none: the camera
-    // `wavefront render` uses. Checked against the list by the viewer.
-    std::optional<uint32_t> camera;
+    // The starting camera, by name or index in the list (the file's cameras, then the framing
+    // one); none: the camera `wavefront render` uses.
+    std::optional<std::string> camera;
+    std::string environmentPath; // --env, replacing the scene's environment
     std::optional<int> device;
     bool overlay = true;
     bool quiet = false;

@@ -108,9 +108,10 @@ check "no temporary files left" bash -c "! ls '$work' | grep -q tmp"
 
 # 5. Command-line contract.
 run "help" 0 "$wavefront" view --help
-for word in --width --height --spp --max-depth --rr-depth --seed --exposure --tonemap \
-    --target-ms --camera --no-overlay --device --frames --screenshot --resize-at --orbit \
-    --quiet F12 Space Esc orbit pan dolly fly; do
+for word in --width --height --spp --max-depth --rr-depth --light-sampling \
+    --triangle-sampling --sphere-sampling --min-throughput --clamp --env --seed --exposure \
+    --tonemap --target-ms --camera --no-overlay --device --frames --screenshot --resize-at \
+    --orbit --quiet F12 Space Esc orbit pan dolly fly; do
     check "view help lists $word" grep -q -- "$word" "$work/help.log"
 done
 run "no display" 1 env -u DISPLAY -u WAYLAND_DISPLAY "$wavefront" view "$cornell" --frames 1

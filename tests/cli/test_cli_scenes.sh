@@ -1,0 +1,79 @@
+#!/usr/bin/env bash
+# The command line on real and broken scenes: every invalid corpus file is refused with exit
+# code 2, one line on stderr and no output file; --camera and --env choose and refuse cleanly;
+# textured scenes render; a generated scene of over 300k triangles renders with its BVH
+# statistics in --verbose.
+# Usage: test_cli_scenes.sh PATH/TO/wavefront SOURCE_DIR
+set -u
+wavefront=$1
+source_dir=$2
+corpus=$source_dir/tests/gltf_corpus
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+passes=0
+
+check() { # check NAME EXPECTED_CODE COMMAND...
+    local name=$1 expected=$2
+    shift 2
+    "$@" >"$work/stdout" 2>"$work/stderr"
+    local code=$?
+    if [ "$code" -ne "$expected" ]; then
+        echo "FAIL $name: exit $code, expected $expected"; sed 's/^/  /' "$work/stderr" | head -5
+        failures=$((failures + 1))
+    else
+        passes=$((passes + 1))
+    fi
+}
+expect() { # expect NAME CONDITION...
+    local name=$1
+    shift
+    if "$@"; then passes=$((passes + 1)); else echo "FAIL $name"; failures=$((failures + 1)); fi
+}
+one_line_error() { [ "$(wc -l <"$work/stderr")" -eq 1 ] && grep -q "^wavefront: " "$work/stderr"; }
+render() { "$wavefront" render "$@" --spp 1 --width 24 --max-depth 2 --quiet; }
+
+for file in "$corpus"/invalid/*.gl*; do
+    name=invalid/$(basename "$file")
+    check "$name" 2 render "$file" -o "$work/out.exr"
+    expect "$name: one line" one_line_error
+    expect "$name: names the file" grep -qF "$file" "$work/stderr"
+    expect "$name: no output" test ! -e "$work/out.exr" -a ! -e "$work/out.png"
+done
+
+check "help" 0 "$wavefront" render --help
+for flag in --camera --env --verbose; do
+    expect "help lists $flag" grep -q -- "$flag" "$work/stdout"
+done
+for file in texture_png.gltf texture_jpeg_in_bufferview.glb alpha_mask_all_textures.gltf \
+            normal_map_generated_tangents.gltf lights_punctual_and_sphere.gltf; do
+    check "valid/$file renders" 0 render "$corpus/valid/$file" -o "$work/$file.exr"
+    expect "valid/$file: image" test -s "$work/$file.png"
+done
+cameras=$corpus/valid/cameras_some_invalid.gltf
+check "--camera by name" 0 render "$cameras" -o "$work/cam.exr" --camera cam3
+check "--camera by index" 0 render "$cameras" -o "$work/cam.exr" --camera 1
+check "--camera unknown" 2 render "$cameras" -o "$work/nocam.exr" --camera side
+expect "--camera unknown: one line" one_line_error
+expect "--camera unknown: lists cameras" grep -q "'front'" "$work/stderr"
+expect "--camera unknown: no output" test ! -e "$work/nocam.exr"
+check "--env" 0 render "$corpus/valid/triangle.gltf" -o "$work/env.exr" --env "$work/cam.exr"
+printf 'v/1\001 this is not an EXR' >"$work/broken.exr"
+check "--env broken" 2 render "$corpus/valid/triangle.gltf" -o "$work/noenv.exr" \
+    --env "$work/broken.exr"
+expect "--env broken: one line" one_line_error
+check "--env missing" 2 render "$corpus/valid/triangle.gltf" -o "$work/noenv.exr" \
+    --env "$work/none.exr"
+expect "--env missing: one line" one_line_error
+
+python3 "$source_dir/scenes/make_big_scene.py" "$work/big.glb" >/dev/null
+check "big scene renders" 0 "$wavefront" render "$work/big.glb" -o "$work/big.exr" --spp 1 \
+    --width 48 --max-depth 2 --verbose
+triangles=$(grep -o '[0-9]* triangles, [0-9]* materials, [0-9]* emitters' "$work/stderr" |
+            head -1 | cut -d' ' -f1)
+expect "big scene has >= 300k triangles ($triangles)" test "${triangles:-0}" -ge 300000
+expect "big scene: BVH build time and SAH cost" grep -q "SAH cost .*built in" "$work/stderr"
+expect "big scene: vertex normals buffer" grep -q "vertex normals" "$work/stderr"
+
+echo "$passes passed, $failures failed"
+[ "$failures" -eq 0 ]
