@@ -13,7 +13,7 @@ packages=(
 )
 tests=OFF
 if [ "${1:-}" = "--with-tests" ]; then
-    packages+=(googletest libgtest-dev xvfb xauth) # the viewer test's display; xvfb-run
+    packages+=(googletest libgtest-dev xvfb xauth xdotool) # the viewer test: display, input
     packages+=(clang libclang-rt-14-dev) # the loader's libFuzzer and ASan+UBSan build (fuzz/)
     tests=ON
 fi

@@ -1,8 +1,10 @@
 #version 460
-// accumulate: adds the wave's samples of each pixel to the film, in sample order so that the
-// sum is reproducible bit for bit. A sample with a NaN or Inf component is dropped (zeroed)
-// and counted; the test is on the bit pattern so that no fast-math pass can fold it away.
-// In: radiance of paths pixel + s * pixelCount. Out: film[pixel], counters.nonFiniteSamples.
+// accumulate: adds the wave's samples of each pixel to the film one at a time, in sample
+// order, so the film's bits do not depend on how samples were grouped into waves (a wave may
+// hold several samples of every pixel, or one sample of a range of pixels). A sample with a
+// NaN or Inf component is dropped (zeroed) and counted; the test is on the bit pattern so
+// that no fast-math pass can fold it away.
+// In: radiance of the wave's paths. Out: film[pixel], counters.nonFiniteSamples.
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "bindings.glsl"
@@ -15,19 +17,20 @@ bool isFiniteBits(vec3 v) {
 }
 
 void main() {
-    uint pixel = gl_GlobalInvocationID.x;
-    if (pixel >= params.pixelCount)
+    uint local = gl_GlobalInvocationID.x;
+    if (local >= pass.wavePixels)
         return;
-    vec3 sum = vec3(0.0);
+    uint pixel = pass.pixelBase + local;
+    vec4 sum = film[pixel];
     uint dropped = 0u;
     for (uint s = 0u; s < pass.samplesPerPixel; ++s) {
-        vec3 value = radiance[pixel + s * params.pixelCount].rgb;
+        vec3 value = radiance[local + s * pass.wavePixels].rgb;
         if (isFiniteBits(value))
-            sum += value;
+            sum.rgb += value;
         else
             ++dropped;
     }
     if (dropped > 0u)
         atomicAdd(counters.nonFiniteSamples, dropped);
-    film[pixel] += vec4(sum, float(pass.samplesPerPixel));
+    film[pixel] = vec4(sum.rgb, sum.a + float(pass.samplesPerPixel));
 }

@@ -1,7 +1,7 @@
 #version 460
 // queue: turns the append counters into indirect-dispatch arguments for the next passes, then
 // zeroes the counters for the next bounce, so the host never reads a count inside a wave.
-// In/out: counters. One invocation.
+// In/out: counters. One invocation; push constant depth: the bounce the shade pass just did.
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = 1) in;
 #include "bindings.glsl"
@@ -10,6 +10,8 @@ DispatchArgs argsFor(uint count) {
     return DispatchArgs((count + WF_WORKGROUP_SIZE - 1u) / WF_WORKGROUP_SIZE, 1u, 1u, count);
 }
 
+layout(push_constant) uniform Push { PassConstants pass; };
+
 void main() {
     uint rays = counters.rayCount;
     uint shadows = counters.shadowCount;
@@ -17,6 +19,9 @@ void main() {
     counters.shadowArgs = argsFor(shadows);
     counters.extensionRays += rays;
     counters.shadowRays += shadows;
+    // Occupancy per bounce: the rays just queued are traced at depth + 1.
+    counters.depthRays[min(pass.depth + 1u, WF_TRACKED_DEPTHS - 1u)] += rays;
+    counters.depthShadowRays[min(pass.depth, WF_TRACKED_DEPTHS - 1u)] += shadows;
     counters.rayCount = 0u;
     counters.shadowCount = 0u;
 }

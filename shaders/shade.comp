@@ -13,9 +13,10 @@ layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "sampling.h"
 #include "light_sampling.h"
 #include "bsdf.h"
-#include "lights.glsl"
 #include "surface.glsl"
+#include "lights.glsl"
 #include "path_vertex.glsl"
+#include "wave_paths.glsl"
 
 layout(push_constant) uniform Push { PassConstants pass; };
 
@@ -32,8 +33,8 @@ void main() {
     v.continues = false;
     v.connects = false;
     if (inQueue) {
-        v.pixel = path % params.pixelCount;
-        v.sampleIndex = pass.sampleBase + path / params.pixelCount;
+        v.pixel = wavePathPixel(pass, path);
+        v.sampleIndex = wavePathSample(pass, path);
         v.depth = pass.depth;
         v.hit = hits[path];
         v.origin = rayOrigin[path].xyz;

@@ -19,6 +19,8 @@ const char* kTopHelp =
     "Commands:\n"
     "  render SCENE.gltf -o OUT.exr   offscreen render to OpenEXR, plus a PNG preview\n"
     "  view SCENE.gltf                window that refines the image progressively\n"
+    "  converge SCENE.gltf -o DIR     error against time and samples per sampler and estimator\n"
+    "  bench SCENE.gltf               frame timings per pass, throughput, queue occupancy\n"
     "\n"
     "Run 'wavefront COMMAND --help' for the options of a command.\n"
     "\n"
@@ -46,6 +48,10 @@ int main(int argc, char** argv) {
         }
         if (command == "render")
             return wf::runRenderCommand(args);
+        if (command == "converge")
+            return wf::runConvergeCommand(args);
+        if (command == "bench")
+            return wf::runBenchCommand(args);
         if (command == "view") {
 #ifdef WF_HAVE_VIEWER
             return wf::runViewCommand(args);

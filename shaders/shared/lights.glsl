@@ -2,7 +2,7 @@
 // spot and directional lights, the environment) and the matching densities for rays that hit
 // a light by BSDF sampling, so that MIS weights on both sides agree.
 // Variant switches: WF_TRIANGLE_SOLID_ANGLE (spherical-triangle sampling, else area),
-// WF_SPHERE_SOLID_ANGLE (cone sampling, else area).
+// WF_SPHERE_SOLID_ANGLE (cone sampling, else area). Needs surface.glsl (surfaceEmission).
 
 #if WF_HAS_ENVIRONMENT
 uint environmentTexel(vec3 direction) {
@@ -117,7 +117,7 @@ LightSample sampleTriangleLight(uint emitter, uint triangleIndex, vec2 u, vec3 p
     s.direction = direction;
     s.pdf = solidAngle ? emitters[emitter].pmf / omega
                        : triangleLightPdf(emitter, tri, p, distance, cosLight);
-    s.radiance = material.emission;
+    s.radiance = surfaceEmission(triangleIndex, material, b.x, b.y); // textured emission too
     vec3 qError = triangleSpawnError(tri.p0, tri.p1, tri.p2, b.x, b.y);
     s.segmentEnd = offsetRayOrigin(q, qError, nl, -direction);
     s.isDelta = false;

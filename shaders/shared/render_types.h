@@ -7,6 +7,7 @@
 //   shade       reads rayQueue[depth & 1] + hits; appends to rayQueue[(depth+1) & 1] (rayCount)
 //               and to shadowQueue (shadowCount); adds emission to radiance
 //   queue       copies rayCount/shadowCount into rayArgs/shadowArgs, zeroes them, keeps stats
+//               (totals and per depth: depthRays[depth + 1], depthShadowRays[depth])
 //   shadow      reads shadowQueue (count in shadowArgs.count); adds unoccluded NEE to radiance
 //   accumulate  adds each pixel's paths into the film, zeroing NaN/Inf samples
 #ifndef WF_RENDER_TYPES_H
@@ -77,6 +78,10 @@ struct DispatchArgs {
     uint count;
 };
 
+// Per-depth statistics (queue occupancy per bounce) cover this many depths; deeper bounces are
+// counted in the last entry, so the entries always sum to the totals.
+#define WF_TRACKED_DEPTHS 16
+
 struct QueueCounters {
     uint rayCount;    // live append counter of the next ray queue
     uint shadowCount; // live append counter of the shadow queue
@@ -88,13 +93,22 @@ struct QueueCounters {
     uint shadowRays;
     uint nonFiniteSamples;
     uint pad2;
+    uint depthRays[WF_TRACKED_DEPTHS];       // rays intersected at each depth (0: camera rays)
+    uint depthShadowRays[WF_TRACKED_DEPTHS]; // NEE connections made at each depth
 };
 
+// A wave covers pixels [pixelBase, pixelBase + wavePixels) x samples [sampleBase, sampleBase +
+// samplesPerPixel): path p is sample sampleBase + p / wavePixels of pixel pixelBase + p %
+// wavePixels (wave_paths.glsl). Waves smaller than the image keep a submit short.
 struct PassConstants {
     uint depth;       // bounce index: the ray segment being processed is depth + 1
     uint sampleBase;  // sample index of the wave's first sample per pixel
-    uint pathCount;   // paths in this wave (raygen, accumulate)
-    uint samplesPerPixel; // samples per pixel in this wave (accumulate)
+    uint pathCount;   // paths in this wave: wavePixels * samplesPerPixel
+    uint samplesPerPixel; // samples per pixel in this wave
+    uint pixelBase;   // first pixel of the wave
+    uint wavePixels;  // pixels in the wave
+    uint pad0;
+    uint pad1;
 };
 
 #ifdef __cplusplus
@@ -105,11 +119,14 @@ static_assert(offsetof(wf::gpu_types::RenderParams, clampRadiance) == 124);
 static_assert(offsetof(wf::gpu_types::RenderParams, seed) == 44);
 static_assert(offsetof(wf::gpu_types::RenderParams, maxDepth) == 60);
 static_assert(offsetof(wf::gpu_types::RenderParams, pathCapacity) == 84);
-static_assert(sizeof(wf::gpu_types::QueueCounters) == 64);
+static_assert(sizeof(wf::gpu_types::QueueCounters) == 64 + 8 * WF_TRACKED_DEPTHS);
 static_assert(offsetof(wf::gpu_types::QueueCounters, rayArgs) == 16);
 static_assert(offsetof(wf::gpu_types::QueueCounters, shadowArgs) == 32);
 static_assert(offsetof(wf::gpu_types::QueueCounters, nonFiniteSamples) == 56);
-static_assert(sizeof(wf::gpu_types::PassConstants) == 16);
+static_assert(offsetof(wf::gpu_types::QueueCounters, depthRays) == 64);
+static_assert(offsetof(wf::gpu_types::QueueCounters, depthShadowRays) == 64 + 4 * WF_TRACKED_DEPTHS);
+static_assert(sizeof(wf::gpu_types::PassConstants) == 32);
+static_assert(offsetof(wf::gpu_types::PassConstants, wavePixels) == 20);
 #endif
 
 #endif

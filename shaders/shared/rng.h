@@ -1,6 +1,11 @@
-// Counter-based random numbers: a sample is a pure function of (pixel, sample index, dimension,
-// seed), so an image does not depend on which path lands in which queue slot, waves can be
-// split any way, and a render is reproducible bit for bit.
+// Sample values: a sample is a pure function of (pixel, sample index, dimension, seed), so an
+// image does not depend on which path lands in which queue slot, waves can be split any way, a
+// render is reproducible bit for bit, and sample index ranges (--spp-offset) merge.
+//
+// sample1D/sample2D are the only entry points; they dispatch to the sampler of WF_SAMPLER:
+// independent, stratified, multijitter, halton, hammersley, sobol, bluenoise (sampler_*.h).
+// A sample2D call takes dimensions d and d + 1 as one 2D pattern (the pixel position, a light
+// point, a BSDF direction), a sample1D call dimension d alone.
 //
 // Sample dimensions, in this fixed order (every sampler plugs into the same numbering):
 //   0-1               pixel position inside the pixel (box filter)
@@ -15,6 +20,26 @@
 #define WF_RNG_H
 
 #include "glsl_cpp.h"
+#include "sampler_common.h"
+
+// The sampler is chosen at compile time (WF_SAMPLER, shader_variant.cpp); C++ code that does
+// not choose gets `independent`. The CPU tests call each sampler's functions directly.
+#ifndef WF_SAMPLER
+#define WF_SAMPLER WF_SAMPLER_INDEPENDENT
+#endif
+#ifndef WF_SAMPLER_RANDOMIZE
+#define WF_SAMPLER_RANDOMIZE 1
+#endif
+// Samplers that read the sampler table (set size, primes, blue-noise mask): the host binds it.
+#define WF_SAMPLER_TABLES (WF_SAMPLER != WF_SAMPLER_INDEPENDENT && WF_SAMPLER != WF_SAMPLER_SOBOL)
+
+#include "sampler_sobol.h"
+#include "sampler_stratified.h"
+#include "sampler_tables.h"
+#if defined(__cplusplus) || WF_SAMPLER_TABLES
+#include "sampler_radical_inverse.h"
+#include "sampler_blue_noise.h"
+#endif
 
 #ifdef __cplusplus
 namespace wf::gpu_types {
@@ -30,32 +55,58 @@ namespace wf::gpu_types {
 #define WF_DIM_BSDF_LOBE 6u
 #define WF_DIM_LIGHT_EXTRA 7u
 
-// PCG-style 4D hash (Jarzynski & Olano, "Hash Functions for GPU Rendering", 2020): good
-// avalanche in all four inputs at a few integer multiplies.
-WF_INLINE uvec4 pcg4d(uvec4 v) {
-    v = v * 1664525u + uvec4(1013904223u);
-    v.x += v.y * v.w;
-    v.y += v.z * v.x;
-    v.z += v.x * v.y;
-    v.w += v.y * v.z;
-    v = v ^ (v >> uvec4(16u));
-    v.x += v.y * v.w;
-    v.y += v.z * v.x;
-    v.z += v.x * v.y;
-    v.w += v.y * v.z;
-    return v;
-}
-
-// Top 24 bits to [0, 1): exactly representable, never 1.
-WF_INLINE float uintToUnitFloat(uint bits) { return float(bits >> 8u) * (1.0f / 16777216.0f); }
-
-WF_INLINE vec2 sample2D(uint pixel, uint sampleIndex, uint dimension, uint seed) {
+// `independent`: a fresh hash of (pixel, sample, dimension, seed) per call.
+WF_INLINE vec2 independentSample2D(uint pixel, uint sampleIndex, uint dimension, uint seed) {
     uvec4 h = pcg4d(uvec4(pixel, sampleIndex, dimension, seed));
     return vec2(uintToUnitFloat(h.x), uintToUnitFloat(h.y));
 }
 
-WF_INLINE float sample1D(uint pixel, uint sampleIndex, uint dimension, uint seed) {
+WF_INLINE float independentSample1D(uint pixel, uint sampleIndex, uint dimension, uint seed) {
     return uintToUnitFloat(pcg4d(uvec4(pixel, sampleIndex, dimension, seed)).x);
+}
+
+#define WF_RANDOMIZE (WF_SAMPLER_RANDOMIZE != 0)
+
+#if !defined(__cplusplus) && WF_SAMPLER == WF_SAMPLER_BLUENOISE
+// The blue-noise mask is laid over the image: it needs the pixel's coordinates.
+uvec2 samplerPixelXY(uint pixel) { return uvec2(pixel % params.width, pixel / params.width); }
+#endif
+#if !defined(__cplusplus) && WF_SAMPLER_TABLES
+uint samplerSetSize() { return samplerTable(WF_SAMPLER_TABLE_SET_SIZE); }
+#endif
+
+WF_INLINE vec2 sample2D(uint pixel, uint sampleIndex, uint dimension, uint seed) {
+#if WF_SAMPLER == WF_SAMPLER_SOBOL
+    return sobolSample2D(pixel, sampleIndex, dimension, seed, WF_RANDOMIZE);
+#elif WF_SAMPLER == WF_SAMPLER_STRATIFIED
+    return stratifiedSample2D(pixel, sampleIndex, dimension, seed, samplerSetSize(), WF_RANDOMIZE);
+#elif WF_SAMPLER == WF_SAMPLER_MULTIJITTER
+    return multijitterSample2D(pixel, sampleIndex, dimension, seed, samplerSetSize(), WF_RANDOMIZE);
+#elif WF_SAMPLER == WF_SAMPLER_HALTON
+    return haltonSample2D(pixel, sampleIndex, dimension, seed, WF_RANDOMIZE);
+#elif WF_SAMPLER == WF_SAMPLER_HAMMERSLEY
+    return hammersleySample2D(pixel, sampleIndex, dimension, seed, samplerSetSize(), WF_RANDOMIZE);
+#elif WF_SAMPLER == WF_SAMPLER_BLUENOISE
+    return blueNoiseSample2D(samplerPixelXY(pixel), sampleIndex, dimension, seed, WF_RANDOMIZE);
+#else
+    return independentSample2D(pixel, sampleIndex, dimension, seed);
+#endif
+}
+
+WF_INLINE float sample1D(uint pixel, uint sampleIndex, uint dimension, uint seed) {
+#if WF_SAMPLER == WF_SAMPLER_SOBOL
+    return sobolSample1D(pixel, sampleIndex, dimension, seed, WF_RANDOMIZE);
+#elif WF_SAMPLER == WF_SAMPLER_STRATIFIED || WF_SAMPLER == WF_SAMPLER_MULTIJITTER
+    return stratifiedSample1D(pixel, sampleIndex, dimension, seed, samplerSetSize(), WF_RANDOMIZE);
+#elif WF_SAMPLER == WF_SAMPLER_HALTON
+    return haltonSample1D(pixel, sampleIndex, dimension, seed, WF_RANDOMIZE);
+#elif WF_SAMPLER == WF_SAMPLER_HAMMERSLEY
+    return hammersleySample1D(pixel, sampleIndex, dimension, seed, samplerSetSize(), WF_RANDOMIZE);
+#elif WF_SAMPLER == WF_SAMPLER_BLUENOISE
+    return blueNoiseSample1D(samplerPixelXY(pixel), sampleIndex, dimension, seed, WF_RANDOMIZE);
+#else
+    return independentSample1D(pixel, sampleIndex, dimension, seed);
+#endif
 }
 
 WF_INLINE uint bounceDimension(uint depth, uint offset) {

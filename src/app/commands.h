@@ -7,6 +7,10 @@ namespace wf {
 
 int runRenderCommand(const std::vector<std::string>& args);
 std::string renderHelp();
+int runConvergeCommand(const std::vector<std::string>& args);
+std::string convergeHelp();
+int runBenchCommand(const std::vector<std::string>& args);
+std::string benchHelp();
 // Only in builds with the viewer (WF_BUILD_VIEWER, defines WF_HAVE_VIEWER).
 int runViewCommand(const std::vector<std::string>& args);
 std::string viewHelp();

@@ -49,6 +49,14 @@ const CommandSpec& renderSpec() {
             {"--clamp", "", "X", "clamp each contribution to X per channel (biased; default "
                                  "0: off)"},
             {"--seed", "", "S", "random seed; same seed, same image bit for bit (default 0)"},
+            {"--sampler", "", "NAME", "sample pattern: independent, stratified, multijitter, "
+                                      "halton, hammersley, sobol (default) or bluenoise"},
+            {"--no-randomize", "", "", "same sample points in every pixel and for every seed "
+                                       "(shows a pattern's structure; biased)"},
+            {"--spp-offset", "", "N", "first sample index: renders samples N .. N+spp-1, so "
+                                      "partial renders merge (default 0)"},
+            {"--spp-total", "", "N", "stratified, multijitter, hammersley: samples in the whole "
+                                     "set that this part belongs to (default offset + spp)"},
             {"--json", "", "STATS.json", "write statistics: spp, seconds, paths/s, rays/s"},
             {"--device", "", "N", "Vulkan device index (default: WAVEFRONT_DEVICE, else the "
                                   "first GPU)"},
@@ -68,6 +76,19 @@ const CommandSpec& renderSpec() {
         "\n"
         "Exit codes: 0 done, 2 bad usage or bad input, 1 internal or device failure.\n"};
     return spec;
+}
+
+// --sampler, --no-randomize, --spp-offset, --spp-total.
+void applySamplerFlags(const ParsedArgs& parsed, RenderSettings& settings) {
+    settings.sampler = parseSampler(
+        parsed.choiceValue("--sampler", samplerName(kDefaultSampler), samplerNames()));
+    settings.randomizeSamples = !parsed.has("--no-randomize");
+    settings.sppOffset = parsed.uintValue("--spp-offset", 0, 0, 1u << 30);
+    const uint32_t total = settings.sppOffset + settings.samplesPerPixel;
+    settings.sampleSetSize = parsed.uintValue("--spp-total", total, 1, 1u << 31);
+    if (settings.sampleSetSize < total)
+        throw UsageError("--spp-total " + std::to_string(settings.sampleSetSize) +
+                         " is less than --spp-offset + --spp = " + std::to_string(total));
 }
 
 std::string pngPathFor(const std::string& exrPath) {
@@ -111,8 +132,8 @@ void printVerbose(const PreparedScene& scene, const WavefrontRenderer& renderer,
                  scene.triangles.size(), scene.materials.size(), scene.lights.emitters.size(),
                  scene.bvhStats.nodeCount, scene.bvhStats.maxDepth, scene.bvhStats.sahCost,
                  scene.bvhStats.buildSeconds);
-    std::fprintf(stderr, "wavefront: shader variant: %s; %u samples per wave\n",
-                 renderer.variant().describe().c_str(), renderer.samplesPerWave());
+    std::fprintf(stderr, "wavefront: shader variant: %s; up to %u paths per wave\n",
+                 renderer.variant().describe().c_str(), renderer.pathCapacity());
     uint64_t total = 0;
     for (const auto& [name, bytes] : renderer.memoryReport()) {
         std::fprintf(stderr, "wavefront:   %-18s %10.2f KiB\n", name.c_str(), bytes / 1024.0);
@@ -157,6 +178,7 @@ int runRenderCommand(const std::vector<std::string>& args) {
                                                    {"area", "solid-angle"}) == "solid-angle";
     settings.minThroughput = parsed.floatValue("--min-throughput", 0.0f, 0.0f, 1e30f);
     settings.clampRadiance = parsed.floatValue("--clamp", 0.0f, 0.0f, 1e30f);
+    applySamplerFlags(parsed, settings);
     const bool quiet = parsed.has("--quiet");
     const bool verbose = parsed.has("--verbose");
 
@@ -200,11 +222,14 @@ int runRenderCommand(const std::vector<std::string>& args) {
     std::vector<float> image = renderer.readImage();
 
     writeExr(*output, static_cast<int>(settings.width), static_cast<int>(settings.height), image,
-             {{"software", "Wavefront"}, {"scene", scenePath}},
+             {{"software", "Wavefront"}, {"scene", scenePath},
+              {"sampler", samplerName(settings.sampler)}},
              {{"renderSeconds", static_cast<float>(stats.seconds)}},
              {{"spp", static_cast<int>(stats.samplesPerPixel)},
               {"seed", static_cast<int>(settings.seed)},
-              {"maxDepth", static_cast<int>(settings.maxDepth)}});
+              {"maxDepth", static_cast<int>(settings.maxDepth)},
+              {"sppOffset", static_cast<int>(settings.sppOffset)},
+              {"sppTotal", static_cast<int>(settings.sampleSetSize)}});
     writePngPreview(pngPathFor(*output), static_cast<int>(settings.width),
                     static_cast<int>(settings.height), image);
     if (auto json = parsed.value("--json"))

@@ -9,9 +9,8 @@
 #include "image/atomic_file.h"
 
 namespace wf {
-namespace {
 
-std::string quoted(const std::string& text) {
+std::string jsonQuoted(const std::string& text) {
     std::string out = "\"";
     for (char c : text) {
         if (c == '"' || c == '\\') {
@@ -28,13 +27,18 @@ std::string quoted(const std::string& text) {
     return out + "\"";
 }
 
-std::string number(double value) {
+std::string jsonNumber(double value) {
     if (!std::isfinite(value))
         return "null";
     char text[32];
     std::snprintf(text, sizeof text, "%.6g", value);
     return text;
 }
+
+namespace {
+
+std::string quoted(const std::string& text) { return jsonQuoted(text); }
+std::string number(double value) { return jsonNumber(value); }
 
 } // namespace
 

@@ -15,6 +15,11 @@ struct StatsContext {
     uint32_t seed = 0;
 };
 
+// JSON text pieces, shared with the bench report: a quoted, escaped string; a number (null when
+// not finite).
+std::string jsonQuoted(const std::string& text);
+std::string jsonNumber(double value);
+
 std::string statsToJson(const RenderStats& stats, const StatsContext& context);
 void writeStatsJson(const std::string& path, const RenderStats& stats,
                     const StatsContext& context);

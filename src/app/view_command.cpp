@@ -5,6 +5,7 @@
 #include "app/cli.h"
 #include "app/commands.h"
 #include "errors.h"
+#include "render/samplers.h"
 #include "viewer/overlay.h"
 #include "viewer/viewer.h"
 
@@ -26,6 +27,8 @@ const CommandSpec& viewSpec() {
             {"--spp", "", "N", "stop refining at N samples per pixel (default: never)"},
             {"--max-depth", "", "D", "path segments from the camera (default 16)"},
             {"--rr-depth", "", "N", "Russian roulette from bounce N on (default 3)"},
+            {"--sampler", "", "NAME", "sample pattern as for render; finite sets stop at --spp "
+                                      "or 256"},
             {"--light-sampling", "", "MODE", "bsdf, nee or mis, as for render (default mis)"},
             {"--triangle-sampling", "", "MODE", "area or solid-angle, as for render (default "
                                                 "solid-angle)"},
@@ -96,6 +99,8 @@ int runViewCommand(const std::vector<std::string>& args) {
     settings.render.maxDepth = parsed.uintValue("--max-depth", 16, 1, 1024);
     settings.render.rrDepth = parsed.uintValue("--rr-depth", 3, 0, 1024);
     settings.render.seed = parsed.uintValue("--seed", 0, 0, 0xffffffffu);
+    settings.render.sampler = parseSampler(
+        parsed.choiceValue("--sampler", samplerName(kDefaultSampler), samplerNames()));
     settings.render.lightSampling =
         parseLightSampling(parsed.choiceValue("--light-sampling", "mis", {"bsdf", "nee", "mis"}));
     settings.render.triangleSolidAngle = parsed.choiceValue("--triangle-sampling", "solid-angle",

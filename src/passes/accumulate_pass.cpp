@@ -2,9 +2,8 @@
 
 namespace wf {
 
-void AccumulatePass::record(VkCommandBuffer cmd, uint32_t pixelCount,
-                            uint32_t samplesPerPixel) const {
-    pass_.dispatch(cmd, groupsFor(pixelCount), PassConstants{0, 0, 0, samplesPerPixel});
+void AccumulatePass::record(VkCommandBuffer cmd, const PassConstants& wave) const {
+    pass_.dispatch(cmd, groupsFor(wave.wavePixels), wave);
 }
 
 } // namespace wf

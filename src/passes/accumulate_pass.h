@@ -8,7 +8,7 @@ class AccumulatePass {
 public:
     explicit AccumulatePass(const PassResources& resources)
         : pass_(resources, "accumulate", "accumulate.comp") {}
-    void record(VkCommandBuffer cmd, uint32_t pixelCount, uint32_t samplesPerPixel) const;
+    void record(VkCommandBuffer cmd, const PassConstants& wave) const;
 
 private:
     Pass pass_;

@@ -6,7 +6,7 @@ namespace wf {
 
 void IntersectPass::record(VkCommandBuffer cmd, uint32_t depth) const {
     pass_.dispatchIndirect(cmd, offsetof(gpu_types::QueueCounters, rayArgs),
-                           PassConstants{depth, 0, 0, 0});
+                           PassConstants{depth, 0, 0, 0, 0, 0, 0, 0});
 }
 
 } // namespace wf

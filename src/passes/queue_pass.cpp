@@ -2,8 +2,8 @@
 
 namespace wf {
 
-void QueuePass::record(VkCommandBuffer cmd) const {
-    pass_.dispatch(cmd, 1, PassConstants{0, 0, 0, 0});
+void QueuePass::record(VkCommandBuffer cmd, uint32_t depth) const {
+    pass_.dispatch(cmd, 1, PassConstants{depth, 0, 0, 0, 0, 0, 0, 0});
 }
 
 } // namespace wf

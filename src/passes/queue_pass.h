@@ -9,7 +9,7 @@ class QueuePass {
 public:
     explicit QueuePass(const PassResources& resources)
         : pass_(resources, "queue", "queue.comp") {}
-    void record(VkCommandBuffer cmd) const;
+    void record(VkCommandBuffer cmd, uint32_t depth) const;
 
 private:
     Pass pass_;

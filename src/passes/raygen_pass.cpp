@@ -2,9 +2,8 @@
 
 namespace wf {
 
-void RaygenPass::record(VkCommandBuffer cmd, uint32_t sampleBase, uint32_t pathCount) const {
-    PassConstants constants{0, sampleBase, pathCount, 0};
-    pass_.dispatch(cmd, groupsFor(pathCount), constants);
+void RaygenPass::record(VkCommandBuffer cmd, const PassConstants& wave) const {
+    pass_.dispatch(cmd, groupsFor(wave.pathCount), wave);
 }
 
 } // namespace wf

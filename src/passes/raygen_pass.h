@@ -8,7 +8,7 @@ class RaygenPass {
 public:
     explicit RaygenPass(const PassResources& resources)
         : pass_(resources, "raygen", "raygen.comp") {}
-    void record(VkCommandBuffer cmd, uint32_t sampleBase, uint32_t pathCount) const;
+    void record(VkCommandBuffer cmd, const PassConstants& wave) const;
 
 private:
     Pass pass_;

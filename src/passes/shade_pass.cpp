@@ -4,9 +4,10 @@
 
 namespace wf {
 
-void ShadePass::record(VkCommandBuffer cmd, uint32_t depth, uint32_t sampleBase) const {
-    pass_.dispatchIndirect(cmd, offsetof(gpu_types::QueueCounters, rayArgs),
-                           PassConstants{depth, sampleBase, 0, 0});
+void ShadePass::record(VkCommandBuffer cmd, uint32_t depth, const PassConstants& wave) const {
+    PassConstants constants = wave;
+    constants.depth = depth;
+    pass_.dispatchIndirect(cmd, offsetof(gpu_types::QueueCounters, rayArgs), constants);
 }
 
 } // namespace wf

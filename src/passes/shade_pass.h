@@ -9,7 +9,7 @@ class ShadePass {
 public:
     explicit ShadePass(const PassResources& resources)
         : pass_(resources, "shade", "shade.comp") {}
-    void record(VkCommandBuffer cmd, uint32_t depth, uint32_t sampleBase) const;
+    void record(VkCommandBuffer cmd, uint32_t depth, const PassConstants& wave) const;
 
 private:
     Pass pass_;

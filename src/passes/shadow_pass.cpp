@@ -6,7 +6,7 @@ namespace wf {
 
 void ShadowPass::record(VkCommandBuffer cmd, uint32_t depth) const {
     pass_.dispatchIndirect(cmd, offsetof(gpu_types::QueueCounters, shadowArgs),
-                           PassConstants{depth, 0, 0, 0});
+                           PassConstants{depth, 0, 0, 0, 0, 0, 0, 0});
 }
 
 } // namespace wf

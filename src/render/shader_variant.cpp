@@ -19,6 +19,8 @@ ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& se
     variant.environment = lights.environmentEmitter != WF_NO_EMITTER;
     variant.triangleSolidAngle = settings.triangleSolidAngle;
     variant.sphereSolidAngle = settings.sphereSolidAngle;
+    variant.sampler = settings.sampler;
+    variant.randomizeSamples = settings.randomizeSamples;
     return variant;
 }
 
@@ -39,7 +41,9 @@ ShaderDefines ShaderVariant::defines() const {
             {"WF_HAS_TEXCOORD1", flag(surface.texcoord1)},
             {"WF_HAS_NORMALS", flag(surface.normals)},
             {"WF_HAS_NORMAL_MAPS", flag(surface.normalMaps)},
-            {"WF_HAS_ALPHA_MASK", flag(surface.alphaMask)}};
+            {"WF_HAS_ALPHA_MASK", flag(surface.alphaMask)},
+            {"WF_SAMPLER", std::to_string(static_cast<uint32_t>(sampler))},
+            {"WF_SAMPLER_RANDOMIZE", flag(randomizeSamples)}};
 }
 
 std::string ShaderVariant::describe() const {

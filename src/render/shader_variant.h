@@ -4,6 +4,7 @@
 #include <string>
 
 #include "gpu/shader_compiler.h"
+#include "render/samplers.h"
 #include "render/surface_buffers.h"
 
 namespace wf {
@@ -23,6 +24,8 @@ struct ShaderVariant {
     bool triangleSolidAngle = true;
     bool sphereSolidAngle = true;
     SurfaceFeatures surface;          // textures, normals, alpha: set by the renderer
+    SamplerKind sampler = kDefaultSampler; // WF_SAMPLER (rng.h)
+    bool randomizeSamples = true;     // WF_SAMPLER_RANDOMIZE: off for --no-randomize
 
     bool lightsBuffer() const { return sphereLights || deltaLights; }
     ShaderDefines defines() const;

@@ -10,17 +10,21 @@
 #include "gpu/timestamp_timer.h"
 #include "passes/accumulate_pass.h"
 #include "passes/intersect_pass.h"
+#include "passes/megakernel_pass.h"
 #include "passes/queue_pass.h"
 #include "passes/raygen_pass.h"
 #include "passes/shade_pass.h"
 #include "passes/shadow_pass.h"
 #include "render/path_buffers.h"
+#include "render/sampler_tables.h"
 #include "render/scene_buffers.h"
 #include "render/workgroup.h"
 #include "shaders/shared/render_types.h"
+#include "shaders/shared/sampler_tables.h"
 
 namespace wf {
 
+using gpu_types::PassConstants;
 using gpu_types::QueueCounters;
 using gpu_types::RenderParams;
 
@@ -37,15 +41,20 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
         throw UsageError("width, height, spp and max depth must all be at least 1");
     const uint64_t pixels = uint64_t(settings.width) * settings.height;
     const uint64_t maxPaths = uint64_t(kMaxGroupsX) * kWorkgroupSize;
-    if (pixels > maxPaths)
-        throw UsageError("image of " + std::to_string(pixels) + " pixels is over the limit of " +
-                         std::to_string(maxPaths) + " pixels per wave");
+    // Waves may cover part of the image, so only the film (16 bytes a pixel) bounds its size.
+    const uint64_t maxPixels = context.properties().limits.maxStorageBufferRange / 16;
+    if (pixels > maxPixels)
+        throw UsageError("image of " + std::to_string(pixels) + " pixels is over this device's "
+                         "limit of " + std::to_string(maxPixels) + " pixels");
     pixelCount_ = static_cast<uint32_t>(pixels);
-    // A wave holds whole samples of every pixel, as many as fit the per-wave path budget.
-    samplesPerWave_ = std::clamp<uint32_t>(
-        static_cast<uint32_t>(std::min<uint64_t>(settings.maxPathsPerWave, maxPaths) / pixels), 1,
-        settings.samplesPerPixel);
-    pathCapacity_ = pixelCount_ * samplesPerWave_;
+    pathCapacity_ = static_cast<uint32_t>(std::max<uint64_t>(
+        1, std::min({uint64_t(settings.maxPathsPerWave), maxPaths,
+                     pixels * settings.samplesPerPixel})));
+    // The first wave's size is a guess (a CPU device traces ~1e5-1e6 paths/s, a GPU far more);
+    // later waves follow the measured time.
+    const bool cpu = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+    wavePaths_ = settings.submitBudgetSeconds > 0.0 && cpu ? std::min(pathCapacity_, 1u << 12)
+                                                           : pathCapacity_;
     variant_ = chooseVariant(scene, settings);
     variant_.surface = surfaceFeatures(scene.surface, scene.materials,
                                        context.properties().limits.maxStorageBufferRange);
@@ -56,18 +65,26 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
     std::vector<std::pair<uint32_t, const Buffer*>> bindings;
     sceneBuffers_->appendBindings(bindings);
     pathBuffers_->appendBindings(bindings);
+    if (samplerReadsTable(settings.sampler)) {
+        samplerTable_ = std::make_unique<Buffer>(makeSamplerTableBuffer(context, setSize()));
+        bindings.emplace_back(WF_BINDING_SAMPLER_TABLES, samplerTable_.get());
+    }
     table_ = std::make_unique<DescriptorTable>(context, bindings);
-    // Two intervals per depth for each of four passes, plus raygen and accumulate.
+    // One interval per depth for each of four passes, plus raygen and accumulate.
     timer_ = std::make_unique<TimestampTimer>(context, 4 * settings.maxDepth + 2);
 
     PassResources resources{context, compiler, defines_, *table_, pathBuffers_->counters,
                             *timer_};
-    raygen_ = std::make_unique<RaygenPass>(resources);
-    intersect_ = std::make_unique<IntersectPass>(resources);
-    shade_ = std::make_unique<ShadePass>(resources);
-    queue_ = std::make_unique<QueuePass>(resources);
-    if (variant_.nextEventEstimation)
-        shadow_ = std::make_unique<ShadowPass>(resources);
+    if (settings.megakernel) {
+        megakernel_ = std::make_unique<MegakernelPass>(resources);
+    } else {
+        raygen_ = std::make_unique<RaygenPass>(resources);
+        intersect_ = std::make_unique<IntersectPass>(resources);
+        shade_ = std::make_unique<ShadePass>(resources);
+        queue_ = std::make_unique<QueuePass>(resources);
+        if (variant_.nextEventEstimation)
+            shadow_ = std::make_unique<ShadowPass>(resources);
+    }
     accumulate_ = std::make_unique<AccumulatePass>(resources);
 
     camera_ = scene.camera;
@@ -105,61 +122,102 @@ void WavefrontRenderer::uploadParams() {
     pathBuffers_->params.upload(&params, sizeof params);
 }
 
-void WavefrontRenderer::recordWave(VkCommandBuffer cmd, uint32_t sampleBase, uint32_t samples) {
-    const uint32_t paths = pixelCount_ * samples;
+void WavefrontRenderer::recordWave(VkCommandBuffer cmd, const PassConstants& wave) {
     timer_->reset(cmd);
     QueueCounters initial{};
-    initial.rayArgs = {groupsFor(paths), 1, 1, paths};
+    initial.rayArgs = {groupsFor(wave.pathCount), 1, 1, wave.pathCount};
+    initial.depthRays[0] = wave.pathCount;
     vkCmdUpdateBuffer(cmd, pathBuffers_->counters.handle(), 0, sizeof initial, &initial);
     computeBarrier(cmd);
 
-    raygen_->record(cmd, sampleBase, paths);
-    for (uint32_t depth = 0; depth < settings_.maxDepth; ++depth) {
-        intersect_->record(cmd, depth);
-        shade_->record(cmd, depth, sampleBase);
-        if (depth + 1 == settings_.maxDepth)
-            break; // the last bounce queues nothing
-        queue_->record(cmd);
-        if (shadow_)
-            shadow_->record(cmd, depth);
+    if (megakernel_) {
+        megakernel_->record(cmd, wave);
+    } else {
+        raygen_->record(cmd, wave);
+        for (uint32_t depth = 0; depth < settings_.maxDepth; ++depth) {
+            intersect_->record(cmd, depth);
+            shade_->record(cmd, depth, wave);
+            if (depth + 1 == settings_.maxDepth)
+                break; // the last bounce queues nothing
+            queue_->record(cmd, depth);
+            if (shadow_)
+                shadow_->record(cmd, depth);
+        }
     }
-    accumulate_->record(cmd, pixelCount_, samples);
+    accumulate_->record(cmd, wave);
 }
 
-void WavefrontRenderer::runWave(uint32_t samples) {
+void WavefrontRenderer::runWave(uint32_t pixelBase, uint32_t pixels, uint32_t samples) {
     const auto start = std::chrono::steady_clock::now();
-    const uint32_t sampleBase = samplesDone_;
-    context_.submitAndWait([&](VkCommandBuffer cmd) { recordWave(cmd, sampleBase, samples); });
+    const uint32_t paths = pixels * samples;
+    // Sample indices start at --spp-offset, so that partial renders merge.
+    const PassConstants wave{
+        0, settings_.sppOffset + samplesDone_, paths, samples, pixelBase, pixels, 0, 0};
+    context_.submitAndWait([&](VkCommandBuffer cmd) { recordWave(cmd, wave); });
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     QueueCounters counters{};
     pathBuffers_->counters.download(&counters, sizeof counters);
-    stats_.cameraRays += uint64_t(pixelCount_) * samples;
-    stats_.paths += uint64_t(pixelCount_) * samples;
+    stats_.cameraRays += paths;
+    stats_.paths += paths;
     stats_.extensionRays += counters.extensionRays;
     stats_.shadowRays += counters.shadowRays;
     stats_.nonFiniteSamples += counters.nonFiniteSamples;
+    for (uint32_t d = 0; d < WF_TRACKED_DEPTHS; ++d) {
+        stats_.depthRays[d] += counters.depthRays[d];
+        stats_.depthShadowRays[d] += counters.depthShadowRays[d];
+    }
     for (const auto& [pass, ms] : timer_->collect())
         stats_.passMilliseconds[pass] += ms;
     ++stats_.waves;
+    stats_.seconds += seconds;
+    stats_.longestSubmitSeconds = std::max(stats_.longestSubmitSeconds, seconds);
+    adaptWaveSize(paths, seconds);
+}
+
+void WavefrontRenderer::adaptWaveSize(uint32_t paths, double seconds) {
+    // Only full-size waves say how long a full-size wave takes: the image's last pixel range
+    // may be tiny, and fixed costs would dominate it.
+    if (settings_.submitBudgetSeconds <= 0.0 || 2ull * paths < wavePaths_ || seconds <= 0.0)
+        return;
+    // Aim at 60% of the budget, as waves over other pixels may cost more; grow at most 4x at
+    // a time so that one lucky wave cannot overshoot.
+    const double wanted = 0.6 * settings_.submitBudgetSeconds * paths / seconds;
+    const double grown = std::min(wanted, 4.0 * wavePaths_);
+    const uint32_t floor = std::min(pathCapacity_, 1024u);
+    wavePaths_ = static_cast<uint32_t>(std::clamp(grown, double(floor), double(pathCapacity_)));
+}
+
+// One step: several whole samples of every pixel in one wave, or, when a whole sample is over
+// the wave size, one sample in pixel ranges. Either way each pixel receives its samples in
+// order, which is what makes the film independent of the wave sizes.
+uint32_t WavefrontRenderer::advance(uint32_t maxSamples) {
+    uint32_t samples = 1;
+    if (wavePaths_ >= pixelCount_) {
+        samples = std::min(wavePaths_ / pixelCount_, maxSamples);
+        runWave(0, pixelCount_, samples);
+    } else {
+        for (uint32_t base = 0; base < pixelCount_;) {
+            const uint32_t pixels = std::min(wavePaths_, pixelCount_ - base);
+            runWave(base, pixels, 1);
+            base += pixels;
+        }
+    }
     samplesDone_ += samples;
     stats_.samplesPerPixel = samplesDone_;
-    stats_.seconds +=
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return samples;
 }
 
 uint32_t WavefrontRenderer::renderSamples(uint32_t samples) {
-    uint32_t done = 0;
-    while (done < samples) {
-        const uint32_t wave = std::min(samplesPerWave_, samples - done);
-        runWave(wave);
-        done += wave;
-    }
+    for (uint32_t done = 0; done < samples;)
+        done += advance(samples - done);
     return samplesDone_;
 }
 
 void WavefrontRenderer::render(const std::function<void(const WaveProgress&)>& onWave) {
     while (samplesDone_ < settings_.samplesPerPixel) {
-        runWave(std::min(samplesPerWave_, settings_.samplesPerPixel - samplesDone_));
+        advance(settings_.samplesPerPixel - samplesDone_);
         if (onWave)
             onWave({samplesDone_, settings_.samplesPerPixel, stats_.seconds});
     }
@@ -170,6 +228,23 @@ void WavefrontRenderer::reset() {
     pathBuffers_->film.upload(zeros);
     samplesDone_ = 0;
     stats_ = {};
+    stats_.depthRays.assign(WF_TRACKED_DEPTHS, 0);
+    stats_.depthShadowRays.assign(WF_TRACKED_DEPTHS, 0);
+}
+
+void WavefrontRenderer::restart(uint32_t seed, uint32_t sppOffset, uint32_t sampleSetSize) {
+    settings_.seed = seed;
+    settings_.sppOffset = sppOffset;
+    settings_.sampleSetSize = sampleSetSize;
+    uploadParams();
+    if (samplerTable_)
+        setSamplerSetSize(*samplerTable_, setSize());
+    reset();
+}
+
+uint32_t WavefrontRenderer::setSize() const {
+    return settings_.sampleSetSize != 0 ? settings_.sampleSetSize
+                                        : settings_.sppOffset + settings_.samplesPerPixel;
 }
 
 void WavefrontRenderer::setCamera(const Camera& camera) {
@@ -194,6 +269,8 @@ std::vector<float> WavefrontRenderer::readImage() const {
 std::vector<std::pair<std::string, uint64_t>> WavefrontRenderer::memoryReport() const {
     std::vector<std::pair<std::string, uint64_t>> report;
     sceneBuffers_->appendMemoryReport(report);
+    if (samplerTable_)
+        report.emplace_back(samplerTable_->name(), samplerTable_->size());
     pathBuffers_->appendMemoryReport(report);
     return report;
 }

@@ -1,7 +1,9 @@
 // The frame loop of the wavefront path tracer. A render is a sequence of waves; each wave is
 // one command buffer and one submit:
 //   raygen; for depth in [0, maxDepth): intersect, shade, queue, shadow; accumulate
-// with queue sizes passed from pass to pass on the GPU through indirect dispatch.
+// with queue sizes passed from pass to pass on the GPU through indirect dispatch. A wave holds
+// whole samples of every pixel, or one sample of a range of pixels when a whole sample would
+// overrun the submit budget; its size follows the measured time of the previous waves.
 #pragma once
 #include <cstdint>
 #include <functional>
@@ -31,6 +33,10 @@ class ShadePass;
 class QueuePass;
 class ShadowPass;
 class AccumulatePass;
+class MegakernelPass;
+namespace gpu_types {
+struct PassConstants;
+}
 
 struct RenderSettings {
     uint32_t width = 512;
@@ -40,11 +46,23 @@ struct RenderSettings {
     uint32_t rrDepth = 3;
     uint32_t seed = 0;
     uint32_t maxPathsPerWave = 1u << 20; // bounds buffer sizes and the length of one submit
+    // Waves are sized so that one submit takes about this long or less, so that a long render
+    // never trips a GPU watchdog (0: waves of maxPathsPerWave regardless of time).
+    double submitBudgetSeconds = 0.25;
+    // Trace whole paths in one dispatch (shaders/megakernel.comp) instead of the wavefront's
+    // passes: the baseline `wavefront bench` compares against. Same samples, same image.
+    bool megakernel = false;
     LightSampling lightSampling = LightSampling::Mis;
     bool triangleSolidAngle = true; // --triangle-sampling solid-angle (else area)
     bool sphereSolidAngle = true;   // --sphere-sampling solid-angle (else area)
     float minThroughput = 0.0f;     // --min-throughput: biased termination, 0 = off
     float clampRadiance = 0.0f;     // --clamp: biased firefly clamp, 0 = off
+    SamplerKind sampler = kDefaultSampler; // --sampler
+    bool randomizeSamples = true;   // --no-randomize turns it off
+    uint32_t sppOffset = 0;         // --spp-offset: index of the first sample per pixel
+    // Finite-set samplers (stratified, multijitter, hammersley): samples in one set, 0 =
+    // sppOffset + samplesPerPixel (--spp-total). Parts of one render must agree on it.
+    uint32_t sampleSetSize = 0;
 };
 
 struct RenderStats {
@@ -56,7 +74,12 @@ struct RenderStats {
     uint64_t shadowRays = 0;
     uint64_t nonFiniteSamples = 0;
     uint32_t waves = 0;
+    double longestSubmitSeconds = 0.0; // wall time of the longest wave (one submit each)
     std::map<std::string, double> passMilliseconds; // GPU time per pass, summed over waves
+    // Queue occupancy: rays traced at each depth (0: camera rays) and NEE connections made at
+    // each depth; the last entry also counts every deeper bounce (WF_TRACKED_DEPTHS entries).
+    std::vector<uint64_t> depthRays;
+    std::vector<uint64_t> depthShadowRays;
 };
 
 struct WaveProgress {
@@ -77,8 +100,11 @@ public:
     // Progressive use (the viewer): adds `samples` more samples per pixel, in as many waves as
     // needed, and returns the total so far.
     uint32_t renderSamples(uint32_t samples);
-    // Clears the film and the statistics; the next sample is sample 0 again.
+    // Clears the film and the statistics; the next sample is sample sppOffset again.
     void reset();
+    // Starts over like reset() with another seed, first sample index and (finite-set samplers)
+    // set size, 0 = sppOffset + samplesPerPixel; pipelines and scene buffers are kept.
+    void restart(uint32_t seed, uint32_t sppOffset, uint32_t sampleSetSize = 0);
     // Moves the camera (and resets).
     void setCamera(const Camera& camera);
     uint32_t samplesDone() const { return samplesDone_; }
@@ -90,19 +116,25 @@ public:
     const RenderStats& stats() const { return stats_; }
     const ShaderDefines& shaderDefines() const { return defines_; }
     const ShaderVariant& variant() const { return variant_; }
-    uint32_t samplesPerWave() const { return samplesPerWave_; }
+    // Starts the longest-submit record afresh (the bench, after its warm-up frames).
+    void resetLongestSubmit() { stats_.longestSubmitSeconds = 0.0; }
+    uint32_t pathCapacity() const { return pathCapacity_; } // most paths in one wave
+    uint32_t pathsPerWave() const { return wavePaths_; }    // the current target
     std::vector<std::pair<std::string, uint64_t>> memoryReport() const;
 
 private:
     void uploadParams();
-    void recordWave(VkCommandBuffer cmd, uint32_t sampleBase, uint32_t samples);
-    void runWave(uint32_t samples);
+    uint32_t advance(uint32_t maxSamples);
+    void recordWave(VkCommandBuffer cmd, const gpu_types::PassConstants& wave);
+    void runWave(uint32_t pixelBase, uint32_t pixels, uint32_t samples);
+    void adaptWaveSize(uint32_t paths, double seconds);
+    uint32_t setSize() const; // of the finite-set samplers
 
     const Context& context_;
     RenderSettings settings_;
     uint32_t pixelCount_;
-    uint32_t samplesPerWave_;
     uint32_t pathCapacity_;
+    uint32_t wavePaths_;
     ShaderVariant variant_;
     const PreparedScene& scene_;
     uint32_t samplesDone_ = 0;
@@ -119,6 +151,8 @@ private:
     std::unique_ptr<QueuePass> queue_;
     std::unique_ptr<ShadowPass> shadow_;
     std::unique_ptr<AccumulatePass> accumulate_;
+    std::unique_ptr<MegakernelPass> megakernel_;
+    std::unique_ptr<Buffer> samplerTable_; // only for samplers that read it
 };
 
 // The camera looking at the scene: the file's, with the image's aspect.

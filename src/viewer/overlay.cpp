@@ -11,6 +11,7 @@
 
 #include "gpu/context.h"
 #include "gpu/vk_check.h"
+#include "render/samplers.h"
 #include "render/wavefront_renderer.h"
 
 namespace wf {
@@ -84,6 +85,16 @@ void statsSection(const OverlayFacts& facts) {
 
 // The estimator's settings, as render's flags name them.
 void samplingRows(RenderSettings& render, OverlayActions& actions) {
+    int sampler = 0;
+    std::string choices;
+    for (size_t i = 0; i < allSamplers().size(); ++i) {
+        sampler = allSamplers()[i] == render.sampler ? int(i) : sampler;
+        choices += std::string(samplerName(allSamplers()[i])) + '\0';
+    }
+    if (ImGui::Combo("--sampler", &sampler, choices.c_str())) {
+        render.sampler = allSamplers()[size_t(sampler)];
+        actions.renderChanged = true;
+    }
     int lightSampling = int(render.lightSampling);
     if (ImGui::Combo("--light-sampling", &lightSampling, "bsdf\0nee\0mis\0")) {
         render.lightSampling = LightSampling(lightSampling);
@@ -131,9 +142,12 @@ void renderSection(ViewSettings& settings, OverlayActions& actions) {
         render.seed = uint32_t(seed);
         actions.renderChanged = true;
     }
-    if (ImGui::InputInt("--spp (0: none)", &spp, 16) && spp >= 0)
+    if (ImGui::InputInt("--spp (0: none)", &spp, 16) && spp >= 0) {
         settings.sppLimit = uint32_t(spp);
-    if (ImGui::TreeNode("Light sampling")) {
+        // A finite-set sampler's set is the limit: a new limit is a new set.
+        actions.renderChanged |= samplerIsFiniteSet(render.sampler);
+    }
+    if (ImGui::TreeNode("Sampling")) {
         samplingRows(render, actions);
         ImGui::TreePop();
     }

@@ -4,18 +4,13 @@
 
 #include <signal.h>
 
-#include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
 #include "errors.h"
 #include "gpu/context.h"
-#include "render/scene_buffers.h"
-#include "scene/default_camera.h"
-#include "scene/environment_map.h"
-#include "scene/gltf_loader.h"
+#include "render/samplers.h"
 #include "viewer/camera_controller.h"
 #include "viewer/camera_list.h"
 #include "viewer/frame_presenter.h"
@@ -23,6 +18,7 @@
 #include "viewer/render_targets.h"
 #include "viewer/screenshot.h"
 #include "viewer/viewer_input.h"
+#include "viewer/viewer_setup.h"
 #include "viewer/window.h"
 
 namespace wf {
@@ -43,67 +39,24 @@ double secondsSince(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-PreparedScene loadScene(const ViewerOptions& options, CameraList& cameras, ViewBounds& bounds) {
-    std::vector<std::string> warnings;
-    Scene scene = loadGltf(options.scenePath, &warnings);
-    if (!options.environmentPath.empty())
-        scene.environment = loadEnvironmentExr(options.environmentPath);
-    for (const std::string& line : warnings)
-        if (!options.quiet)
-            std::fprintf(stderr, "%s\n", line.c_str());
-    if (!scene.hasCamera)
-        scene.camera = frameBounds(scene); // as `wavefront render` does
-    cameras = viewerCameras(scene);
-    bounds = viewBounds(scene);
-    return prepareScene(std::move(scene));
-}
-
-// --width/--height as `wavefront render` reads them: a missing one follows the camera's aspect.
-WindowSize windowSize(const ViewerOptions& options, const Camera& camera) {
-    const double aspect = camera.aspect > 0.0f ? camera.aspect : 1.0;
-    int width = options.windowWidth, height = options.windowHeight;
-    if (width <= 0 && height <= 0)
-        width = 512;
-    if (height <= 0)
-        height = std::max(1, int(std::lround(width / aspect)));
-    else if (width <= 0)
-        width = std::max(1, int(std::lround(height * aspect)));
-    return {width, height};
-}
-
 uint32_t startCamera(const ViewerOptions& options, const CameraList& cameras) {
     return options.camera ? findCamera(cameras, *options.camera) : cameras.renderDefault;
-}
-
-std::string windowTitle(const std::string& scenePath) {
-    return "Wavefront - " + std::filesystem::path(scenePath).filename().string();
-}
-
-ContextOptions presentingContext(const ViewerOptions& options, const Window& window) {
-    ContextOptions context;
-    context.deviceIndex = options.device;
-    context.quiet = options.quiet;
-    context.instanceExtensions = window.instanceExtensions();
-    context.createSurface = [&window](VkInstance instance) {
-        return window.createSurface(instance);
-    };
-    return context;
 }
 
 class Viewer {
 public:
     explicit Viewer(const ViewerOptions& options)
         : options_(options), settings_(options.settings),
-          scene_(loadScene(options, cameras_, bounds_)),
-          cameraIndex_(startCamera(options, cameras_)),
+          scene_(loadViewerScene(options)), cameraIndex_(startCamera(options, scene_.cameras)),
           window_(windowTitle(options.scenePath),
-                  windowSize(options, cameras_.cameras[cameraIndex_].camera)),
+                  initialWindowSize(options, scene_.cameras.cameras[cameraIndex_].camera)),
           context_(presentingContext(options, window_)),
-          controller_(cameras_.cameras[cameraIndex_].camera, bounds_.center, bounds_.radius),
+          controller_(scene_.cameras.cameras[cameraIndex_].camera, scene_.bounds.center,
+                      scene_.bounds.radius),
           presenter_(context_, waitForFramebuffer()),
           overlay_(context_, window_.handle(), presenter_.overlayRenderPass(),
                    window_.contentScale()),
-          targets_(context_, compiler_, scene_), input_(window_, overlay_),
+          targets_(context_, compiler_, scene_.prepared), input_(window_, overlay_),
           overlayVisible_(options.overlay) {
         framebuffer_ = window_.framebufferSize();
         targets_.setTargetSeconds(settings_.targetMs / 1000.0);
@@ -130,14 +83,13 @@ private:
     void captureScreenshot(const std::string& exrPath);
     bool refining() const {
         const uint32_t spp = targets_.fullSpp();
-        return !paused_ && (settings_.sppLimit == 0 || spp < settings_.sppLimit);
+        const uint32_t limit = settings_.effectiveSppLimit();
+        return !paused_ && (limit == 0 || spp < limit);
     }
 
     ViewerOptions options_;
     ViewSettings settings_;
-    CameraList cameras_;
-    ViewBounds bounds_;
-    PreparedScene scene_;
+    ViewerScene scene_;
     uint32_t cameraIndex_;
     Window window_; // outlives the context, which owns the window's surface
     Context context_;
@@ -188,14 +140,17 @@ bool Viewer::fitWindow(bool force) {
 }
 
 void Viewer::rebuildTargets() {
-    targets_.rebuild(presenter_.extent(), settings_.render, presenter_.displayBuffer());
+    RenderSettings render = settings_.render;
+    if (samplerIsFiniteSet(render.sampler)) // the set is what the viewer will accumulate
+        render.sampleSetSize = settings_.effectiveSppLimit();
+    targets_.rebuild(presenter_.extent(), render, presenter_.displayBuffer());
 }
 
 void Viewer::selectCamera(uint32_t index) {
-    if (index >= cameras_.cameras.size())
+    if (index >= scene_.cameras.cameras.size())
         return;
     cameraIndex_ = index;
-    controller_.setCamera(cameras_.cameras[index].camera);
+    controller_.setCamera(scene_.cameras.cameras[index].camera);
     ++cameraVersion_; // a jump, not a drag: the next frame renders at full resolution
 }
 
@@ -215,7 +170,7 @@ void Viewer::applyKeys(const WindowEvents& events) {
         else if (key == GLFW_KEY_H)
             overlayVisible_ = !overlayVisible_;
         else if (key == GLFW_KEY_C)
-            selectCamera((cameraIndex_ + 1) % cameras_.cameras.size());
+            selectCamera((cameraIndex_ + 1) % scene_.cameras.cameras.size());
         else if (key >= GLFW_KEY_1 && key <= GLFW_KEY_9)
             selectCamera(static_cast<uint32_t>(key - GLFW_KEY_1));
     }
@@ -256,7 +211,7 @@ OverlayFacts Viewer::facts() const {
     facts.frameMs = frameMs_;
     facts.stats = &shownStats_;
     facts.paused = paused_;
-    for (const NamedCamera& camera : cameras_.cameras)
+    for (const NamedCamera& camera : scene_.cameras.cameras)
         facts.cameraNames.push_back(camera.name);
     facts.camera = cameraIndex_;
     return facts;
@@ -342,7 +297,8 @@ int Viewer::run() {
         // Paused or at the limit, a moved camera still gets one sample to show.
         uint32_t samples = 0;
         if (refining() || target.renderer->samplesDone() == 0)
-            samples = targets_.render(target, target.divisor == 1 ? settings_.sppLimit : 0);
+            samples = targets_.render(target,
+                                      target.divisor == 1 ? settings_.effectiveSppLimit() : 0);
         if (target.divisor == 1)
             fullSamples_ += samples;
         else

@@ -19,8 +19,11 @@ struct ViewSettings {
     // gains): a change rebuilds the renderers and restarts the accumulation. Width, height and
     // spp are the viewer's business and ignored here.
     RenderSettings render;
-    // Refinement stops at this many samples per pixel; 0: never.
+    // Refinement stops at this many samples per pixel; 0: never, except for the finite-set
+    // samplers, whose set must be known up front: they stop at kFiniteSetSpp.
     uint32_t sppLimit = 0;
+    static constexpr uint32_t kFiniteSetSpp = 256;
+    uint32_t effectiveSppLimit() const;
     // Display only.
     float exposure = 0.0f; // stops (EV)
     Tonemap tonemap = Tonemap::Linear;

@@ -12,6 +12,7 @@
 #include "shaders/shared/render_types.h"
 #include "shaders/shared/light_types.h"
 #include "shaders/shared/scene_types.h"
+#include "shaders/shared/texture_types.h"
 
 namespace wf {
 namespace {
@@ -23,10 +24,13 @@ std::map<std::string, int> reflectedOffsets() {
 #include "scene_types.h"
 #include "render_types.h"
 #include "light_types.h"
+#include "texture_types.h"
 layout(local_size_x = 1) in;
 layout(std430, binding = 0) buffer B0 { Triangle tri; BvhNode node; Material mat; Emitter em; };
 layout(std430, binding = 1) buffer B1 { RenderParams params; QueueCounters counters; };
 layout(std430, binding = 2) buffer B2 { PunctualLight light; };
+layout(std430, binding = 3) buffer B3 {
+    TextureRef tref; TriangleNormals tnorm; TriangleTangents ttan; TriangleUvs tuv[2]; };
 void main() {
     tri.pad = tri.material + tri.emitter + uint(tri.p0.x + tri.p1.x + tri.p2.x);
     node.count = node.rightOrFirst + uint(node.lo.x + node.hi.x);
@@ -43,9 +47,13 @@ void main() {
         params.sphereLightCount + params.environmentEmitter + params.environmentWidth;
     counters.pad2 = counters.rayCount + counters.shadowCount + counters.rayArgs.count +
         counters.rayArgs.groupsX + counters.shadowArgs.groupsX + counters.shadowArgs.count +
-        counters.extensionRays + counters.shadowRays + counters.nonFiniteSamples;
+        counters.extensionRays + counters.shadowRays + counters.nonFiniteSamples +
+        counters.depthRays[3] + counters.depthShadowRays[2];
     light.emitter = light.type + uint(light.position.x + light.direction.x + light.radius +
         light.intensity.x + light.cosInner + light.cosOuter + light.pad1 + light.pad2);
+    tref.pad = tref.page + tref.offset + tref.width + tref.height + tref.flags +
+        uint(tref.uRow.x + tref.vRow.x) + tnorm.n0 + tnorm.n1 + tnorm.n2 + tnorm.pad +
+        ttan.t0 + ttan.t1 + ttan.t2 + ttan.signs + uint(tuv[1].uv0.x + tuv[1].uv1.x + tuv[1].uv2.x);
 }
 )";
     glslang::InitializeProcess();
@@ -129,12 +137,26 @@ TEST(SharedLayout, GlslOffsetsMatchCpp) {
     expectOffset("light.intensity", 0, offsetof(PunctualLight, intensity));
     expectOffset("light.emitter", 0, offsetof(PunctualLight, emitter));
     expectOffset("light.pad2", 0, offsetof(PunctualLight, pad2));
+    // B3: texture references and per-triangle vertex data (texture_types.h).
+    expectOffset("tref.page", 0, offsetof(TextureRef, page));
+    expectOffset("tref.vRow", 0, offsetof(TextureRef, vRow));
+    expectOffset("tref.offset", 0, offsetof(TextureRef, offset));
+    expectOffset("tref.flags", 0, offsetof(TextureRef, flags));
+    expectOffset("tnorm.n2", sizeof(TextureRef), offsetof(TriangleNormals, n2));
+    const size_t tangentBase = sizeof(TextureRef) + sizeof(TriangleNormals);
+    expectOffset("ttan.signs", tangentBase, offsetof(TriangleTangents, signs));
+    // An array of TriangleUvs: the std430 stride must equal sizeof (24, no padding to 16).
+    const size_t uvBase = tangentBase + sizeof(TriangleTangents);
+    expectOffset("tuv[1].uv2", uvBase, sizeof(TriangleUvs) + offsetof(TriangleUvs, uv2));
     const size_t countersBase = sizeof(RenderParams);
     expectOffset("counters.rayArgs.count", countersBase,
                  offsetof(QueueCounters, rayArgs) + offsetof(DispatchArgs, count));
     expectOffset("counters.shadowArgs.groupsX", countersBase, offsetof(QueueCounters, shadowArgs));
     expectOffset("counters.nonFiniteSamples", countersBase,
                  offsetof(QueueCounters, nonFiniteSamples));
+    expectOffset("counters.depthRays", countersBase, offsetof(QueueCounters, depthRays));
+    expectOffset("counters.depthShadowRays", countersBase,
+                 offsetof(QueueCounters, depthShadowRays));
 }
 
 } // namespace

@@ -7,13 +7,15 @@
 #  - after a resize the viewer re-renders at the new size and matches a render of that size;
 #  - the moving-camera preview path runs (orbit every frame, a 1 ms frame target);
 #  - SIGTERM quits cleanly: exit 0, screenshot written, no temporary file left;
+#  - keys and a mouse drag (xdotool) do what --help says;
 #  - --help lists every flag and key; no display or bad flags give one-line errors.
-# Without Xvfb this fails (scripts/setup.sh --with-tests installs it); it never skips.
+# Without Xvfb or xdotool this fails (scripts/setup.sh --with-tests installs them); it never
+# skips.
 # Usage: test_viewer.sh PATH/TO/wavefront PATH/TO/wf_compare_images PATH/TO/scenes
 set -u
-wavefront=$1
-compare=$2
-scenes=$3
+wavefront=$(realpath "$1")
+compare=$(realpath "$2")
+scenes=$(realpath "$3")
 work=$(mktemp -d)
 xvfb_pid=""
 cleanup() {
@@ -36,7 +38,11 @@ run() { # run NAME EXPECTED_CODE COMMAND...; output in $work/NAME.log
     shift 2
     "$@" >"$work/$name.log" 2>&1
     local code=$?
-    if [ "$code" -ne "$expected" ]; then failed "$name: exit $code, expected $expected" "$work/$name.log"; else pass; fi
+    if [ "$code" -eq "$expected" ]; then
+        pass
+    else
+        failed "$name: exit $code, expected $expected" "$work/$name.log"
+    fi
 }
 check() { # check NAME COMMAND...
     local name=$1
@@ -49,10 +55,13 @@ check() { # check NAME COMMAND...
     fi
 }
 
-if ! command -v Xvfb >/dev/null; then
-    echo "FAIL Xvfb is not installed: the viewer test needs it (bash scripts/setup.sh --with-tests)"
-    exit 1
-fi
+for tool in Xvfb xdotool; do
+    if ! command -v "$tool" >/dev/null; then
+        echo "FAIL $tool is not installed; the viewer test needs it:" \
+            "bash scripts/setup.sh --with-tests installs it"
+        exit 1
+    fi
+done
 # -displayfd picks a free display number and reports it once the server accepts clients.
 Xvfb -displayfd 3 -screen 0 1024x768x24 -nolisten tcp 3>"$work/display" 2>"$work/xvfb.log" &
 xvfb_pid=$!
@@ -76,6 +85,14 @@ run "render" 0 "$wavefront" render "$cornell" "${common[@]}" --width 128 --heigh
     -o "$work/render.exr" --quiet
 check "view matches render" "$compare" "$work/view.exr" "$work/render.exr" --spp 8 \
     --shown "$work/view.png"
+
+# A finite-set sampler: the viewer's set is its --spp, as render's is.
+run "view-stratified" 0 "$wavefront" view "$cornell" "${common[@]}" --sampler stratified \
+    --width 128 --height 96 --frames 12 --screenshot "$work/stratified.exr"
+run "render-stratified" 0 "$wavefront" render "$cornell" "${common[@]}" --sampler stratified \
+    --width 128 --height 96 -o "$work/render-stratified.exr" --quiet
+check "stratified view matches render" "$compare" "$work/stratified.exr" \
+    "$work/render-stratified.exr" --spp 8
 
 # 2. Resize after frame 3: the accumulation restarts at the new size and reaches 8 spp again.
 run "resize" 0 "$wavefront" view "$cornell" "${common[@]}" --width 128 --height 96 \
@@ -106,12 +123,58 @@ if [ "$code" -eq 0 ]; then pass; else failed "SIGTERM: exit $code, expected 0" "
 check "SIGTERM screenshot written" test -s "$work/term.exr" -a -s "$work/term.png"
 check "no temporary files left" bash -c "! ls '$work' | grep -q tmp"
 
-# 5. Command-line contract.
+# 5. Keys and mouse as a person uses them (xdotool): P and F12 save numbered screenshots, a
+#    left drag orbits (the image changes), R returns to the starting view (the same image
+#    again, bit for bit), Esc quits with 0.
+(
+    cd "$work" || exit 1
+    "$wavefront" view "$cornell" "${common[@]}" --spp 4 --width 128 --height 96 --no-overlay \
+        >"$work/keys.log" 2>&1 &
+    viewer=$!
+    for _ in $(seq 300); do
+        grep -q "viewing" "$work/keys.log" && break
+        sleep 0.1
+    done
+    window=$(xdotool search --name "Wavefront - cornell_box.gltf" | head -n1)
+    if [ -z "$window" ]; then
+        kill "$viewer"
+        exit 1
+    fi
+    xdotool windowfocus --sync "$window"
+    sleep 2 # 4 spp at 128x96 take a fraction of that, even on a loaded machine
+    xdotool key --window "$window" p
+    sleep 0.5
+    # Drags are polled once a frame: hold each step long enough to be seen.
+    xdotool mousemove --window "$window" 40 48 mousedown 1
+    sleep 0.5
+    xdotool mousemove --window "$window" 90 40
+    sleep 0.5
+    xdotool mouseup 1
+    sleep 2
+    xdotool key --window "$window" F12
+    sleep 0.5
+    xdotool key --window "$window" r
+    sleep 2
+    xdotool key --window "$window" p
+    sleep 0.5
+    xdotool key --window "$window" Escape
+    wait "$viewer"
+) >"$work/xdotool.log" 2>&1
+code=$?
+if [ "$code" -eq 0 ]; then pass; else failed "keys: exit $code" "$work/keys.log"; fi
+shots="$work/cornell_box"
+check "keys: three screenshots" \
+    test -s "$shots-001.png" -a -s "$shots-002.exr" -a -s "$shots-003.exr"
+check "keys: R returns to the start view" "$compare" "$shots-003.exr" "$shots-001.exr" --spp 4
+check "keys: after the drag, 4 spp again" "$compare" "$shots-002.exr" "$shots-002.exr" --spp 4
+check "keys: the drag moved the camera" bash -c "! '$compare' '$shots-002.exr' '$shots-001.exr'"
+
+# 6. Command-line contract.
 run "help" 0 "$wavefront" view --help
 for word in --width --height --spp --max-depth --rr-depth --light-sampling \
-    --triangle-sampling --sphere-sampling --min-throughput --clamp --env --seed --exposure \
-    --tonemap --target-ms --camera --no-overlay --device --frames --screenshot --resize-at \
-    --orbit --quiet F12 Space Esc orbit pan dolly fly; do
+    --triangle-sampling --sphere-sampling --min-throughput --clamp --env --seed --sampler \
+    --exposure --tonemap --target-ms --camera --no-overlay --device --frames --screenshot \
+    --resize-at --orbit --quiet F12 Space Esc orbit pan dolly fly; do
     check "view help lists $word" grep -q -- "$word" "$work/help.log"
 done
 run "no display" 1 env -u DISPLAY -u WAYLAND_DISPLAY "$wavefront" view "$cornell" --frames 1
@@ -120,6 +183,7 @@ check "no display: one line naming xvfb-run" \
 run "bad tonemap" 2 "$wavefront" view "$cornell" --tonemap filmic
 run "bad resize" 2 "$wavefront" view "$cornell" --resize-at 3x4
 run "bad camera" 2 "$wavefront" view "$cornell" --camera 7 --frames 1
+run "framing camera" 0 "$wavefront" view "$cornell" --camera 1 --frames 2 --width 64 --quiet
 
 echo "$passes passed, $failures failed"
 [ "$failures" -eq 0 ]

@@ -1,0 +1,188 @@
+#!/usr/bin/env python3
+"""A peer on the same machine: renders the project's Cornell box with Mitsuba 3 (scalar_rgb,
+path tracer) and with Wavefront at the same resolution, max depth and samples per pixel, and
+prints paths/s and relMSE x time of both, plus the wavefront/megakernel ratio from a
+`wavefront bench --compare-megakernel` in the same run. A manual benchmark, not a test: it
+needs `pip install mitsuba` (into a virtual environment of your own, not the project's CI).
+
+    python3 -m venv /tmp/mi && /tmp/mi/bin/pip install mitsuba
+    /tmp/mi/bin/python bench/mitsuba_peer.py [--wavefront build/wavefront] [--width 256]
+        [--spp 64] [--max-depth 8] [--reference-spp 512] [--json bench/results/peer.json]
+
+The Mitsuba scene is built from scenes/make_cornell_box.py, the generator of
+scenes/cornell_box.gltf: the same quads, node transforms, Lambert albedos, the light's
+emission (front face only) and albedo, the same camera (yfov, position, looking along +z) and a
+box pixel filter. Each renderer's relMSE is measured against its own high-spp reference (so a
+small systematic difference between the two does not count as noise); the two references'
+relMSE against each other is printed as a check that the scenes match.
+"""
+import argparse
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+sys.path.insert(0, os.path.join(ROOT, "scenes"))
+import make_cornell_box as cornell  # noqa: E402
+
+
+def rotate_y(p, degrees):
+    a = math.radians(degrees)
+    return (math.cos(a) * p[0] + math.sin(a) * p[2], p[1], -math.sin(a) * p[0] + math.cos(a) * p[2])
+
+
+def transformed(quads, translation, degrees, scale):
+    out = []
+    for q in quads:
+        out.append([tuple(t + c for t, c in zip(translation, rotate_y(
+            tuple(s * c for s, c in zip(scale, p)), degrees))) for p in q])
+    return out
+
+
+def write_obj(path, quads):
+    with open(path, "w") as f:
+        for q in quads:
+            for p in q:
+                f.write("v %.9g %.9g %.9g\n" % p)
+        for i in range(len(quads)):
+            b = 4 * i + 1  # counter-clockwise as in the glTF: the same front faces
+            f.write("f %d %d %d\nf %d %d %d\n" % (b, b + 1, b + 2, b, b + 2, b + 3))
+
+
+def mitsuba_scene(mi, folder, width, height, spp, max_depth, rr_depth):
+    white_q, red_q, green_q = cornell.room_quads()
+    block = cornell.unit_block_quads()
+    # The node transforms of make_cornell_box.build(): glTF applies scale, then rotation.
+    white_q = white_q + transformed(block, (1.855, 0.0, 1.69), -17.0, (1.65, 1.65, 1.65))
+    white_q = white_q + transformed(block, (3.685, 0.0, 3.5125), 17.0, (1.65, 3.30, 1.65))
+    groups = {"white": (white_q, cornell.WHITE, None), "red": (red_q, cornell.RED, None),
+              "green": (green_q, cornell.GREEN, None),
+              "light": (cornell.light_quad(), (0.78, 0.78, 0.78), cornell.EMISSION)}
+    yfov = math.degrees(2 * math.atan(12.5 / 35.0))
+    origin = [2.775, 2.73, -8.0]
+    scene = {
+        "type": "scene",
+        "integrator": {"type": "path", "max_depth": max_depth, "rr_depth": rr_depth},
+        "sensor": {
+            "type": "perspective", "fov": yfov, "fov_axis": "y",
+            "to_world": mi.ScalarTransform4f().look_at(
+                origin=origin, target=[origin[0], origin[1], 0.0], up=[0, 1, 0]),
+            "sampler": {"type": "independent", "sample_count": spp},
+            "film": {"type": "hdrfilm", "width": width, "height": height,
+                     "rfilter": {"type": "box"}, "pixel_format": "rgb"},
+        },
+    }
+    for name, (quads, albedo, emission) in groups.items():
+        path = os.path.join(folder, name + ".obj")
+        write_obj(path, quads)
+        shape = {"type": "obj", "filename": path, "face_normals": True,
+                 "bsdf": {"type": "twosided", "bsdf": {  # Wavefront shades two-sided
+                     "type": "diffuse", "reflectance": {"type": "rgb", "value": list(albedo)}}}}
+        if emission:
+            shape["emitter"] = {"type": "area",
+                                "radiance": {"type": "rgb", "value": list(emission)}}
+        scene[name] = shape
+    return scene
+
+
+def render_mitsuba(mi, folder, width, height, spp, max_depth, rr_depth):
+    scene = mi.load_dict(mitsuba_scene(mi, folder, width, height, spp, max_depth, rr_depth))
+    start = time.perf_counter()
+    image = np.array(mi.render(scene, spp=spp), dtype=np.float64)[:, :, :3]
+    return image, time.perf_counter() - start
+
+
+def render_wavefront(mi, exe, folder, width, height, spp, max_depth, rr_depth, tag):
+    out = os.path.join(folder, "wavefront_%s.exr" % tag)
+    stats = os.path.join(folder, "wavefront_%s.json" % tag)
+    subprocess.run([exe, "render", os.path.join(ROOT, "scenes", "cornell_box.gltf"), "-o", out,
+                    "--width", str(width), "--height", str(height), "--spp", str(spp),
+                    "--max-depth", str(max_depth), "--rr-depth", str(rr_depth), "--json", stats,
+                    "--quiet"], check=True)
+    image = np.array(mi.Bitmap(out), dtype=np.float64)[:, :, :3]
+    return image, json.load(open(stats))["seconds"]
+
+
+def rel_mse(image, reference):
+    return float(np.mean((image - reference) ** 2 / (reference ** 2 + 1e-2)))
+
+
+def bench_ratio(exe, folder, width, height, spp, max_depth):
+    out = os.path.join(folder, "bench.json")
+    subprocess.run([exe, "bench", os.path.join(ROOT, "scenes", "cornell_box.gltf"), "--width",
+                    str(width), "--height", str(height), "--max-depth", str(max_depth),
+                    "--frames", "4", "--warmup", "1", "--spp", str(max(1, spp // 4)),
+                    "--compare-megakernel", "--json", out, "--quiet"], check=True,
+                   stdout=subprocess.DEVNULL)
+    return json.load(open(out))
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--wavefront", default=os.path.join(ROOT, "build", "wavefront"))
+    parser.add_argument("--width", type=int, default=256)
+    parser.add_argument("--height", type=int, default=256)
+    parser.add_argument("--spp", type=int, default=64)
+    parser.add_argument("--max-depth", type=int, default=8)
+    parser.add_argument("--rr-depth", type=int, default=3,
+                        help="Wavefront's --rr-depth (bounce index); Mitsuba gets one more, as "
+                             "its depth counts from 1")
+    parser.add_argument("--reference-spp", type=int, default=512)
+    parser.add_argument("--json", help="write the numbers here")
+    args = parser.parse_args()
+
+    import mitsuba as mi
+    mi.set_variant("scalar_rgb")
+    w, h, spp, depth = args.width, args.height, args.spp, args.max_depth
+    with tempfile.TemporaryDirectory() as folder:
+        mi_ref, mi_ref_s = render_mitsuba(mi, folder, w, h, args.reference_spp, depth,
+                                          args.rr_depth + 1)
+        wf_ref, wf_ref_s = render_wavefront(mi, args.wavefront, folder, w, h, args.reference_spp,
+                                            depth, args.rr_depth, "reference")
+        mi_img, mi_s = render_mitsuba(mi, folder, w, h, spp, depth, args.rr_depth + 1)
+        wf_img, wf_s = render_wavefront(mi, args.wavefront, folder, w, h, spp, depth,
+                                        args.rr_depth, "test")
+        bench = bench_ratio(args.wavefront, folder, w, h, spp, depth)
+    paths = w * h * spp
+    rows = {}
+    for name, image, ref, seconds in (("Mitsuba 3 scalar_rgb", mi_img, mi_ref, mi_s),
+                                      ("Wavefront", wf_img, wf_ref, wf_s)):
+        err = rel_mse(image, ref)
+        rows[name] = {"seconds": seconds, "pathsPerSecond": paths / seconds, "relMSE": err,
+                      "relMSETimesSeconds": err * seconds, "imageMean": float(image.mean())}
+    ratio = rows["Wavefront"]["pathsPerSecond"] / rows["Mitsuba 3 scalar_rgb"]["pathsPerSecond"]
+    efficiency = (rows["Mitsuba 3 scalar_rgb"]["relMSETimesSeconds"] /
+                  rows["Wavefront"]["relMSETimesSeconds"])
+    print("Cornell box %dx%d, %d spp, max depth %d; references %d spp" % (
+        w, h, spp, depth, args.reference_spp))
+    print("| renderer | seconds | paths/s | relMSE | relMSE x seconds | image mean |")
+    print("|---|---|---|---|---|---|")
+    for name, r in rows.items():
+        print("| %s | %.2f | %.3f M | %.4g | %.4g | %.4f |" % (
+            name, r["seconds"], r["pathsPerSecond"] / 1e6, r["relMSE"],
+            r["relMSETimesSeconds"], r["imageMean"]))
+    check = rel_mse(wf_ref, mi_ref)
+    print("references: relMSE of Wavefront's against Mitsuba's %.4g (means %.4f vs %.4f)" % (
+        check, wf_ref.mean(), mi_ref.mean()))
+    print("Wavefront / Mitsuba: %.3f paths/s, %.3f efficiency (1 / relMSE x time)" % (
+        ratio, efficiency))
+    print("wavefront / megakernel (bench, same run): %.3f" % bench["wavefrontOverMegakernel"])
+    if args.json:
+        with open(args.json, "w") as f:
+            json.dump({"width": w, "height": h, "spp": spp, "maxDepth": depth,
+                       "referenceSpp": args.reference_spp, "renderers": rows,
+                       "referencesRelMSE": check, "wavefrontOverMitsubaPathsPerSecond": ratio,
+                       "wavefrontOverMitsubaEfficiency": efficiency,
+                       "wavefrontOverMegakernel": bench["wavefrontOverMegakernel"],
+                       "device": bench["device"], "bench": bench}, f, indent=1)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# The scaling tables of the README: paths/s against resolution (the Cornell box, 256^2 to
+# 1920x1080) and against scene size (bench/make_scaling_scene.py, 10^2 to 10^6 triangles, four
+# materials, wavefront and megakernel in one run), one `wavefront bench` per row. Raw JSON goes
+# to bench/results/<label>_*.json; the tables go to stdout as Markdown.
+#
+#   bash bench/scaling.sh [path/to/wavefront] [label]     (label default: lavapipe)
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(dirname "$here")
+wavefront=${1:-$root/build/wavefront}
+label=${2:-lavapipe}
+results=$here/results
+scenes=$(mktemp -d)
+trap 'rm -rf "$scenes"' EXIT
+mkdir -p "$results"
+common=(--max-depth 8 --warmup 1 -q)
+
+for size in 256x256 512x512 1024x1024 1920x1080; do
+    w=${size%x*}; h=${size#*x}
+    frames=$(( w * h > 600000 ? 3 : 6 ))
+    "$wavefront" bench "$root/scenes/cornell_box.gltf" --width "$w" --height "$h" \
+        --frames "$frames" "${common[@]}" --json "$results/${label}_resolution_${size}.json" \
+        > /dev/null
+done
+for tris in 100 1000 10000 100000 1000000; do
+    python3 "$here/make_scaling_scene.py" "$scenes/scene_$tris.gltf" --triangles "$tris" > /dev/null
+    "$wavefront" bench "$scenes/scene_$tris.gltf" --width 256 --frames 4 "${common[@]}" \
+        --compare-megakernel --json "$results/${label}_scene_${tris}.json" > /dev/null
+done
+
+python3 - "$results" "$label" <<'PY'
+import glob, json, os, sys
+results, label = sys.argv[1], sys.argv[2]
+def load(pattern):
+    runs = [json.load(open(f)) for f in glob.glob(os.path.join(results, pattern))]
+    return sorted(runs, key=lambda d: (d["triangles"], d["width"] * d["height"]))
+rows = load(label + "_resolution_*.json")
+print("| resolution | paths/frame | wavefront paths/s | frame ms (median) | longest submit ms |")
+print("|---|---|---|---|---|")
+for d in rows:
+    r = d["runs"]["wavefront"]
+    print("| %dx%d | %d | %.3f M | %.0f | %.0f |" % (
+        d["width"], d["height"], d["width"] * d["height"] * d["sppPerFrame"],
+        r["pathsPerSecond"] / 1e6, r["frameMilliseconds"]["median"],
+        r["longestSubmitSeconds"] * 1e3))
+print()
+print("| triangles | BVH SAH cost | build ms | wavefront paths/s | megakernel paths/s | "
+      "wavefront / megakernel | rays/s (wavefront) |")
+print("|---|---|---|---|---|---|---|")
+for d in load(label + "_scene_*.json"):
+    w, m = d["runs"]["wavefront"], d["runs"]["megakernel"]
+    print("| %d | %.1f | %.0f | %.3f M | %.3f M | %.2f | %.2f M |" % (
+        d["triangles"], d["bvh"]["sahCost"], d["bvh"]["buildSeconds"] * 1e3,
+        w["pathsPerSecond"] / 1e6, m["pathsPerSecond"] / 1e6, d["wavefrontOverMegakernel"],
+        w["raysPerSecond"]["total"] / 1e6))
+print()
+print("device: %s" % rows[0]["device"] if rows else "")
+PY

@@ -1,0 +1,90 @@
+#version 460
+// megakernel: the baseline the wavefront must beat. One invocation traces a whole path with the
+// very functions the passes call (cameraRay, intersectClosest, shadePathVertex,
+// segmentOccluded), so both trace the same samples; only the schedule differs.
+// In: params, scene, lights, push constants (the wave). Out: radiance[path] (then the
+// accumulate pass), counters' ray statistics as the queue pass would have kept them.
+#extension GL_GOOGLE_include_directive : require
+layout(local_size_x = WF_WORKGROUP_SIZE) in;
+#include "bindings.glsl"
+#include "geometry.h"
+#include "rng.h"
+#include "sampling.h"
+#include "light_sampling.h"
+#include "bsdf.h"
+#include "surface.glsl"
+#include "lights.glsl"
+#include "path_vertex.glsl"
+#include "scene_intersect.glsl"
+#include "wave_paths.glsl"
+#include "camera_ray.glsl"
+#extension GL_KHR_shader_subgroup_arithmetic : require
+
+layout(push_constant) uniform Push { PassConstants pass; };
+
+// One atomicAdd per subgroup, in uniform control flow.
+void addCount(uint n, uint field) {
+    uint total = subgroupAdd(n);
+    if (total > 0u && subgroupElect()) {
+        if (field < WF_TRACKED_DEPTHS)
+            atomicAdd(counters.depthRays[field], total);
+        else
+            atomicAdd(counters.depthShadowRays[field - WF_TRACKED_DEPTHS], total);
+    }
+}
+
+void main() {
+    uint path = gl_GlobalInvocationID.x;
+    bool live = path < pass.pathCount;
+    uint lastDepth = 0u;   // the deepest bounce whose ray was traced
+    uint shadowBits = 0u;  // bit d: a connection at depth d < WF_TRACKED_DEPTHS - 1
+    uint deepShadows = 0u; // connections at deeper bounces
+    if (live) {
+        PathVertex v;
+        v.pixel = wavePathPixel(pass, path);
+        v.sampleIndex = wavePathSample(pass, path);
+        cameraRay(v.pixel, v.sampleIndex, v.origin, v.direction);
+        v.previousPdf = 0.0;
+        v.beta = vec3(1.0);
+        v.etaScale = 1.0;
+        vec3 total = vec3(0.0);
+        // Same order of additions as shade then shadow, so sums round alike.
+        for (uint depth = 0u; depth < params.maxDepth; ++depth) {
+            lastDepth = depth;
+            v.depth = depth;
+            v.hit = intersectClosest(v.origin, v.direction);
+            shadePathVertex(v);
+            total += v.radiance;
+#if WF_HAS_EMITTERS
+            if (v.connects) {
+                if (depth < WF_TRACKED_DEPTHS - 1u)
+                    shadowBits |= 1u << depth;
+                else
+                    ++deepShadows;
+                if (!segmentOccluded(v.shadowOrigin, v.shadowSegment))
+                    total += v.shadowRadiance;
+            }
+#endif
+            if (!v.continues)
+                break;
+        }
+        radiance[path] = vec4(total, 0.0);
+    }
+
+    // Statistics as the wavefront keeps them: rays traced per depth, connections per depth.
+    uint extension = live ? lastDepth : 0u;
+    uint shadows = bitCount(shadowBits) + deepShadows;
+    uint extensionTotal = subgroupAdd(extension);
+    uint shadowTotal = subgroupAdd(shadows);
+    if (subgroupElect()) {
+        atomicAdd(counters.extensionRays, extensionTotal);
+        atomicAdd(counters.shadowRays, shadowTotal);
+    }
+    const uint last = WF_TRACKED_DEPTHS - 1u;
+    for (uint d = 1u; d < WF_TRACKED_DEPTHS; ++d) {
+        uint alive = !live || lastDepth < d ? 0u : (d < last ? 1u : lastDepth - last + 1u);
+        addCount(alive, d);
+        addCount(d - 1u < last ? (shadowBits >> (d - 1u)) & 1u : 0u, WF_TRACKED_DEPTHS + d - 1u);
+    }
+    addCount(deepShadows, WF_TRACKED_DEPTHS + last);
+}

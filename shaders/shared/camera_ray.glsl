@@ -1,0 +1,19 @@
+// The camera ray of one pixel sample, shared by the raygen pass and the megakernel.
+// Needs bindings.glsl (params) and rng.h.
+#ifndef WF_CAMERA_RAY_GLSL
+#define WF_CAMERA_RAY_GLSL
+
+void cameraRay(uint pixel, uint sampleIndex, out vec3 origin, out vec3 direction) {
+    uint x = pixel % params.width;
+    uint y = pixel / params.width;
+    // Box filter: a uniform point inside the pixel; row 0 is the top of the image.
+    vec2 jitter = sample2D(pixel, sampleIndex, WF_DIM_PIXEL, params.seed);
+    vec2 ndc = (vec2(x, y) + jitter) / vec2(params.width, params.height) * 2.0 - 1.0;
+    vec3 d = params.cameraForward +
+             params.cameraRight * (ndc.x * params.tanHalfFovY * params.aspect) -
+             params.cameraUp * (ndc.y * params.tanHalfFovY);
+    origin = params.cameraPosition;
+    direction = normalize(d);
+}
+
+#endif

@@ -1,0 +1,197 @@
+// wavefront bench: warm-up frames, then timed frames of the wavefront (and, on request, of the
+// megakernel built from the same GLSL, frames interleaved so both see the same machine load);
+// per-pass GPU times, throughput, queue occupancy, memory, as a table and as JSON.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+
+#include "app/bench_report.h"
+#include "app/cli.h"
+#include "app/commands.h"
+#include "errors.h"
+#include "gpu/context.h"
+#include "image/atomic_file.h"
+#include "render/scene_buffers.h"
+#include "render/wavefront_renderer.h"
+#include "scene/default_camera.h"
+#include "scene/gltf_loader.h"
+
+namespace wf {
+namespace {
+
+const CommandSpec& benchSpec() {
+    static const CommandSpec spec{
+        "bench",
+        "wavefront bench SCENE.gltf [options]",
+        "Times frames of SCENE: per-pass GPU time (min/median/max over frames), frame time,\n"
+        "rays/s per kind, paths/s, queue occupancy per bounce, device memory per buffer. With\n"
+        "--megakernel or --compare-megakernel the same samples are also traced by the\n"
+        "megakernel baseline in the same run and the ratio is reported.",
+        {
+            {"--width", "", "W", "image width in pixels (default 256)"},
+            {"--height", "", "H", "image height (default: width / the camera's aspect ratio)"},
+            {"--frames", "", "N", "timed frames (default 10)"},
+            {"--warmup", "", "N", "untimed frames first (default 2)"},
+            {"--spp", "", "N", "samples per pixel in one frame (default 1)"},
+            {"--max-depth", "", "D", "path segments from the camera (default 8)"},
+            {"--rr-depth", "", "N", "Russian roulette from bounce N on (default 3)"},
+            {"--seed", "", "S", "random seed (default 0); same inputs, same ray counts"},
+            {"--light-sampling", "", "MODE", "bsdf, nee or mis (default)"},
+            {"--megakernel", "", "", "time the megakernel baseline too; print its table and "
+                                     "the ratio"},
+            {"--compare-megakernel", "", "", "time both; print both tables and the ratio"},
+            {"--budget-ms", "", "MS", "longest time one submit should take (default 250; 0: "
+                                      "waves of --wave-paths regardless of time)"},
+            {"--wave-paths", "", "N", "most paths in one wave (default 1048576)"},
+            {"--json", "", "OUT.json", "write the same report as JSON"},
+            {"--device", "", "N", "Vulkan device index (default: WAVEFRONT_DEVICE, else the "
+                                  "first GPU)"},
+            {"--quiet", "-q", "", "no progress lines on stderr"},
+        },
+        "Exit codes: 0 done, 2 bad usage or bad input, 1 internal or device failure.\n"};
+    return spec;
+}
+
+struct Timed {
+    std::unique_ptr<WavefrontRenderer> renderer;
+    BenchRun run;
+};
+
+void renderFrame(Timed& timed, uint32_t spp, bool record) {
+    WavefrontRenderer& renderer = *timed.renderer;
+    const RenderStats before = renderer.stats();
+    const auto start = std::chrono::steady_clock::now();
+    renderer.renderSamples(spp);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (!record)
+        return;
+    RenderStats frame = statsBetween(before, renderer.stats());
+    timed.run.frames.push_back({seconds, frame.passMilliseconds});
+    addStats(timed.run.timed, frame);
+}
+
+} // namespace
+
+std::string benchHelp() { return helpText(benchSpec()); }
+
+int runBenchCommand(const std::vector<std::string>& args) {
+    ParsedArgs parsed = parseArgs(benchSpec(), args);
+    if (parsed.has("--help")) {
+        std::fputs(benchHelp().c_str(), stdout);
+        return 0;
+    }
+    if (parsed.positional.size() != 1)
+        throw UsageError("bench needs exactly one scene file (see wavefront bench --help)");
+    const uint32_t frames = parsed.uintValue("--frames", 10, 1, 100000);
+    const uint32_t warmup = parsed.uintValue("--warmup", 2, 0, 100000);
+    const uint32_t spp = parsed.uintValue("--spp", 1, 1, 1u << 16);
+    RenderSettings settings;
+    settings.maxDepth = parsed.uintValue("--max-depth", 8, 1, 1024);
+    settings.rrDepth = parsed.uintValue("--rr-depth", 3, 0, 1024);
+    settings.seed = parsed.uintValue("--seed", 0, 0, 0xffffffffu);
+    settings.lightSampling =
+        parseLightSampling(parsed.choiceValue("--light-sampling", "mis", {"bsdf", "nee", "mis"}));
+    settings.submitBudgetSeconds = parsed.uintValue("--budget-ms", 250, 0, 600000) * 1e-3;
+    settings.maxPathsPerWave = parsed.uintValue("--wave-paths", 1u << 20, 1024, 1u << 26);
+    if (uint64_t(frames + warmup) * spp > (1u << 24))
+        throw UsageError("(--frames + --warmup) x --spp must stay under 16777216 samples");
+    settings.samplesPerPixel = (frames + warmup) * spp;
+    const bool compare = parsed.has("--compare-megakernel");
+    const bool withMegakernel = compare || parsed.has("--megakernel");
+    const bool quiet = parsed.has("--quiet");
+
+    const std::string scenePath = parsed.positional.front();
+    Scene scene = loadGltf(scenePath);
+    if (!scene.hasCamera)
+        scene.camera = frameBounds(scene);
+    const float aspect = scene.camera.aspect > 0.0f ? scene.camera.aspect : 1.0f;
+    settings.width = parsed.uintValue("--width", 256, 1, 16384);
+    settings.height = parsed.has("--height")
+                          ? parsed.uintValue("--height", 0, 1, 16384)
+                          : std::max(1u, static_cast<uint32_t>(std::lround(settings.width / aspect)));
+
+    ContextOptions contextOptions;
+    if (parsed.has("--device"))
+        contextOptions.deviceIndex = static_cast<int>(parsed.uintValue("--device", 0, 0, 64));
+    contextOptions.quiet = quiet;
+    Context context(contextOptions);
+    ShaderCompiler compiler;
+    const PreparedScene prepared = prepareScene(std::move(scene));
+
+    std::vector<Timed> kernels(withMegakernel ? 2 : 1);
+    kernels[0].renderer = std::make_unique<WavefrontRenderer>(context, prepared, settings, compiler);
+    kernels[0].run.kernel = "wavefront";
+    if (withMegakernel) {
+        RenderSettings mega = settings;
+        mega.megakernel = true;
+        kernels[1].renderer = std::make_unique<WavefrontRenderer>(context, prepared, mega, compiler);
+        kernels[1].run.kernel = "megakernel";
+    }
+    for (Timed& k : kernels)
+        k.run.memory = k.renderer->memoryReport();
+
+    BenchSetup setup{scenePath, context.deviceName(), context.driverInfo(),
+                     kernels[0].renderer->variant().describe(), settings.width, settings.height,
+                     spp, settings.maxDepth, settings.seed, warmup, frames,
+                     settings.submitBudgetSeconds, prepared.triangles.size(),
+                     prepared.materials.size(), prepared.bvhStats};
+    // Frames alternate between the kernels so a change in machine load hits both alike.
+    for (uint32_t f = 0; f < warmup + frames; ++f) {
+        for (Timed& k : kernels) {
+            if (f == warmup)
+                k.renderer->resetLongestSubmit();
+            renderFrame(k, spp, f >= warmup);
+        }
+        if (!quiet)
+            std::fprintf(stderr, "wavefront: bench frame %u/%u%s\n", f + 1, warmup + frames,
+                         f < warmup ? " (warm-up)" : "");
+    }
+
+    std::printf("Wavefront bench: %s, %ux%u, %u spp per frame, max depth %u, seed %u; %u frames "
+                "after %u warm-up\n",
+                scenePath.c_str(), settings.width, settings.height, spp, settings.maxDepth,
+                settings.seed, frames, warmup);
+    std::printf("device: %s (%s)\nshader variant: %s\n", setup.device.c_str(),
+                setup.driver.c_str(), setup.variant.c_str());
+    std::printf("scene: %llu triangles, %llu materials; BVH %u nodes, %u leaves, depth %u, SAH "
+                "cost %.2f, built in %.1f ms\n\n",
+                static_cast<unsigned long long>(setup.triangles),
+                static_cast<unsigned long long>(setup.materials), setup.bvh.nodeCount,
+                setup.bvh.leafCount, setup.bvh.maxDepth, setup.bvh.sahCost,
+                setup.bvh.buildSeconds * 1e3);
+    // --megakernel shows the megakernel's table, --compare-megakernel both.
+    if (!withMegakernel || compare)
+        std::fputs(benchTable(setup, kernels[0].run).c_str(), stdout);
+    if (withMegakernel) {
+        if (compare)
+            std::fputs("\n", stdout);
+        std::fputs(benchTable(setup, kernels[1].run).c_str(), stdout);
+        std::fputs(("\n" + benchRatioLine(kernels[0].run, kernels[1].run)).c_str(), stdout);
+    }
+    std::fflush(stdout);
+
+    if (auto json = parsed.value("--json")) {
+        std::vector<BenchRun> runs;
+        for (const Timed& k : kernels)
+            runs.push_back(k.run);
+        const std::string text = benchJson(setup, runs);
+        writeFileAtomically(*json, [&](const std::string& tmp) {
+            std::ofstream out(tmp, std::ios::binary);
+            out << text;
+            if (!out)
+                throw InputError("cannot write " + *json);
+        });
+    }
+    if (context.validationMessageCount() > 0) {
+        std::fprintf(stderr, "wavefront: %u validation message(s)\n",
+                     context.validationMessageCount());
+        return 1;
+    }
+    return 0;
+}
+
+} // namespace wf

@@ -1,0 +1,64 @@
+// What `wavefront bench` measures and how it reports it: per-frame samples of one kernel
+// (wavefront or megakernel), summarised as min/median/max, printed as a table and as JSON.
+#pragma once
+#include <cstdint>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "render/wavefront_renderer.h"
+#include "scene/bvh_builder.h"
+
+namespace wf {
+
+struct FrameSample {
+    double seconds = 0.0;                        // wall time of the frame, submits included
+    std::map<std::string, double> passMilliseconds; // GPU time per pass within the frame
+};
+
+struct BenchRun {
+    std::string kernel;               // "wavefront" or "megakernel"
+    std::vector<FrameSample> frames;  // timed frames only
+    RenderStats timed;                // rays, occupancy, waves of the timed frames
+    std::vector<std::pair<std::string, uint64_t>> memory; // device memory per buffer
+
+    double seconds() const;           // sum of the timed frames' wall times
+    double pathsPerSecond() const;
+};
+
+struct BenchSetup {
+    std::string scene;
+    std::string device;
+    std::string driver;
+    std::string variant;
+    uint32_t width = 0;
+    uint32_t height = 0;
+    uint32_t samplesPerFrame = 0;
+    uint32_t maxDepth = 0;
+    uint32_t seed = 0;
+    uint32_t warmupFrames = 0;
+    uint32_t frames = 0;
+    double submitBudgetSeconds = 0.0;
+    uint64_t triangles = 0;
+    uint64_t materials = 0;
+    BvhBuildStats bvh;
+};
+
+struct Spread {
+    double min = 0.0;
+    double median = 0.0;
+    double max = 0.0;
+};
+Spread spreadOf(std::vector<double> values);
+
+// Per-frame difference of two cumulative renderer statistics (after - before).
+RenderStats statsBetween(const RenderStats& before, const RenderStats& after);
+void addStats(RenderStats& total, const RenderStats& frame);
+
+std::string benchTable(const BenchSetup& setup, const BenchRun& run);
+// "wavefront / megakernel: 1.23x paths/s" and the like, for runs of both kernels.
+std::string benchRatioLine(const BenchRun& wavefront, const BenchRun& megakernel);
+std::string benchJson(const BenchSetup& setup, const std::vector<BenchRun>& runs);
+
+} // namespace wf

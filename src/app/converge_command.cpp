@@ -1,0 +1,250 @@
+// wavefront converge: error against time and samples for several methods (sampler x estimator
+// x switches), several seeds each; CSV, JSON, equal-time crops, a printed ranking, and charts
+// drawn by scripts/plot_convergence.py (matplotlib).
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include "app/cli.h"
+#include "app/commands.h"
+#include "app/convergence_report.h"
+#include "errors.h"
+#include "gpu/context.h"
+#include "image/exr_io.h"
+#include "render/convergence_summary.h"
+#include "render/scene_buffers.h"
+#include "scene/default_camera.h"
+#include "scene/gltf_loader.h"
+
+extern char** environ;
+
+namespace fs = std::filesystem;
+
+namespace wf {
+namespace {
+
+const CommandSpec& convergeSpec() {
+    static const CommandSpec spec{
+        "converge",
+        "wavefront converge SCENE.gltf -o DIR [--reference REF.exr] [--time T] [--methods LIST]",
+        "Renders SCENE with each method and several seeds, progressively, and records at\n"
+        "log-spaced sample counts the GPU time, wall time, relMSE, MSE and bias against a\n"
+        "reference. Writes DIR/convergence.csv, DIR/convergence.json, DIR/crops/ (equal-time\n"
+        "crops), and the charts DIR/error_vs_time.png, DIR/error_vs_spp.png and\n"
+        "DIR/equal_time.png (python3 + matplotlib); prints the time each method takes to reach\n"
+        "a target relMSE, and its fitted slope.",
+        {
+            {"--output", "-o", "DIR", "output folder (required; created if missing)"},
+            {"--reference", "", "REF.exr", "reference image (default: rendered first with the "
+                                           "default method, saved as DIR/reference.exr)"},
+            {"--reference-spp", "", "N", "samples per pixel of that reference (default 4096)"},
+            {"--time", "", "T", "render seconds per method and seed: samples double until a "
+                                "checkpoint passes T (default 4)"},
+            {"--methods", "", "LIST", "comma-separated methods, each words joined by '+': a "
+                                      "sampler, bsdf|nee|mis, no-randomize, triangle-area, "
+                                      "sphere-area (default: every sampler with mis, then "
+                                      "sobol+bsdf, sobol+nee)"},
+            {"--seeds", "", "N", "seeds per method, at least 5 (default 5)"},
+            {"--max-spp", "", "N", "stop doubling here (default 65536)"},
+            {"--target", "", "R", "relMSE of the ranking (default: the median of the methods' "
+                                  "final relMSE)"},
+            {"--width", "", "W", "image width (default: the reference's, else 128)"},
+            {"--height", "", "H", "image height (default: the reference's, else width / the "
+                                  "camera's aspect)"},
+            {"--max-depth", "", "D", "path segments from the camera (default 16)"},
+            {"--rr-depth", "", "N", "Russian roulette from bounce N on (default 3)"},
+            {"--crop", "", "X,Y,W,H", "region of the equal-time crops (default: the central "
+                                      "half of the image)"},
+            {"--no-plot", "", "", "write CSV and JSON only, no charts"},
+            {"--device", "", "N", "Vulkan device index (default: WAVEFRONT_DEVICE, else the "
+                                  "first GPU)"},
+            {"--quiet", "-q", "", "no progress lines on stderr"},
+        },
+        "Charts: scripts/plot_convergence.py DIR, run with WAVEFRONT_PYTHON, else /usr/bin/python3\n"
+        "(Debian's python3-matplotlib), else python3.\n"
+        "\n"
+        "Exit codes: 0 done, 2 bad usage or bad input, 1 internal or device failure.\n"};
+    return spec;
+}
+
+std::string scriptPath() {
+    if (const char* dir = std::getenv("WAVEFRONT_SCRIPT_DIR"); dir && *dir)
+        return (fs::path(dir) / "plot_convergence.py").string();
+    return (fs::path(WF_SOURCE_SCRIPT_DIR) / "plot_convergence.py").string();
+}
+
+// Runs the plotting script; false (and a reason on stderr) when it cannot.
+bool plotCharts(const std::string& dir) {
+    std::string python = "python3";
+    if (const char* env = std::getenv("WAVEFRONT_PYTHON"); env && *env)
+        python = env;
+    else if (fs::exists("/usr/bin/python3"))
+        python = "/usr/bin/python3";
+    const std::string script = scriptPath();
+    std::vector<std::string> args = {python, script, dir};
+    std::vector<char*> argv;
+    for (std::string& a : args)
+        argv.push_back(a.data());
+    argv.push_back(nullptr);
+    pid_t pid = 0;
+    if (posix_spawnp(&pid, python.c_str(), nullptr, nullptr, argv.data(), environ) != 0) {
+        std::fprintf(stderr, "wavefront: charts skipped: cannot run %s\n", python.c_str());
+        return false;
+    }
+    int status = 0;
+    waitpid(pid, &status, 0);
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+        std::fprintf(stderr, "wavefront: charts skipped: %s %s %s failed (needs "
+                     "python3-matplotlib)\n", python.c_str(), script.c_str(), dir.c_str());
+        return false;
+    }
+    return true;
+}
+
+void parseCrop(const ParsedArgs& parsed, ConvergenceInfo& info) {
+    const int w = int(info.width), h = int(info.height);
+    int crop[4] = {w / 4, h / 4, std::max(1, w / 2), std::max(1, h / 2)};
+    if (auto text = parsed.value("--crop")) {
+        if (std::sscanf(text->c_str(), "%d,%d,%d,%d", &crop[0], &crop[1], &crop[2], &crop[3]) !=
+                4 ||
+            crop[0] < 0 || crop[1] < 0 || crop[2] < 1 || crop[3] < 1 || crop[0] + crop[2] > w ||
+            crop[1] + crop[3] > h)
+            throw UsageError("--crop expects X,Y,W,H inside the " + std::to_string(w) + "x" +
+                             std::to_string(h) + " image, got '" + *text + "'");
+    }
+    std::copy(crop, crop + 4, info.crop);
+}
+
+} // namespace
+
+std::string convergeHelp() { return helpText(convergeSpec()); }
+
+int runConvergeCommand(const std::vector<std::string>& args) {
+    ParsedArgs parsed = parseArgs(convergeSpec(), args);
+    if (parsed.has("--help")) {
+        std::fputs(convergeHelp().c_str(), stdout);
+        return 0;
+    }
+    if (parsed.positional.size() != 1)
+        throw UsageError("converge needs exactly one scene file (see wavefront converge --help)");
+    const auto dir = parsed.value("--output");
+    if (!dir || dir->empty())
+        throw UsageError("converge needs -o DIR (see wavefront converge --help)");
+    const std::vector<ConvergenceMethod> methods =
+        parsed.has("--methods") ? parseMethods(*parsed.value("--methods")) : defaultMethods();
+    ConvergenceOptions options;
+    const uint32_t seedCount = parsed.uintValue("--seeds", 5, 5, 1000);
+    for (uint32_t s = 1; s <= seedCount; ++s)
+        options.seeds.push_back(s);
+    options.timeBudget = parsed.floatValue("--time", 4.0f, 0.0f, 1e6f);
+    options.maxSpp = parsed.uintValue("--max-spp", 1u << 16, 1, 1u << 20);
+    const uint32_t referenceSpp = parsed.uintValue("--reference-spp", 4096, 1, 1u << 20);
+    const bool quiet = parsed.has("--quiet");
+
+    const std::string scenePath = parsed.positional.front();
+    std::vector<std::string> warnings;
+    Scene scene = loadGltf(scenePath, &warnings);
+    for (const std::string& line : warnings)
+        std::fprintf(stderr, "%s\n", line.c_str());
+    if (!scene.hasCamera)
+        scene.camera = frameBounds(scene);
+    std::vector<float> reference;
+    ExrImage given;
+    if (auto path = parsed.value("--reference"))
+        given = readExr(*path);
+    RenderSettings base;
+    const float aspect = scene.camera.aspect > 0.0f ? scene.camera.aspect : 1.0f;
+    base.width = parsed.uintValue("--width", given.width ? given.width : 128, 1, 16384);
+    const uint32_t autoHeight =
+        given.height && !parsed.has("--width")
+            ? uint32_t(given.height)
+            : std::max(1u, static_cast<uint32_t>(std::lround(base.width / aspect)));
+    base.height = parsed.uintValue("--height", autoHeight, 1, 16384);
+    base.maxDepth = parsed.uintValue("--max-depth", 16, 1, 1024);
+    base.rrDepth = parsed.uintValue("--rr-depth", 3, 0, 1024);
+    if (given.width && (uint32_t(given.width) != base.width ||
+                        uint32_t(given.height) != base.height))
+        throw InputError("reference " + *parsed.value("--reference") + " is " +
+                         std::to_string(given.width) + "x" + std::to_string(given.height) +
+                         ", converge renders " + std::to_string(base.width) + "x" +
+                         std::to_string(base.height) + " (match it with --width/--height)");
+    ConvergenceInfo info;
+    info.scene = scenePath;
+    info.width = base.width;
+    info.height = base.height;
+    info.maxDepth = base.maxDepth;
+    info.seeds = options.seeds;
+    info.timeBudget = options.timeBudget;
+    parseCrop(parsed, info);
+    fs::create_directories(*dir);
+
+    ContextOptions contextOptions;
+    if (parsed.has("--device"))
+        contextOptions.deviceIndex = static_cast<int>(parsed.uintValue("--device", 0, 0, 64));
+    contextOptions.quiet = quiet;
+    Context context(contextOptions);
+    info.device = context.deviceName();
+    ShaderCompiler compiler;
+    PreparedScene prepared = prepareScene(std::move(scene));
+
+    if (given.width) {
+        reference = std::move(given.rgb);
+        info.reference = *parsed.value("--reference");
+        info.referenceMethod = "given";
+    } else {
+        RenderSettings settings = base;
+        settings.samplesPerPixel = referenceSpp;
+        settings.seed = 1000003; // apart from the measured seeds 1..N
+        info.reference = (fs::path(*dir) / "reference.exr").string();
+        info.referenceMethod = std::string(samplerName(settings.sampler)) + "+" +
+                               lightSamplingName(settings.lightSampling);
+        info.referenceSpp = referenceSpp;
+        std::fprintf(stderr, "wavefront: no --reference: rendering one with Wavefront itself, "
+                     "%s at %u spp (seed %u), saved as %s\n", info.referenceMethod.c_str(),
+                     referenceSpp, settings.seed, info.reference.c_str());
+        WavefrontRenderer renderer(context, prepared, settings, compiler);
+        renderer.render();
+        reference = renderer.readImage();
+        writeExr(info.reference, int(base.width), int(base.height), reference,
+                 {{"software", "Wavefront"}, {"scene", scenePath},
+                  {"sampler", samplerName(settings.sampler)}},
+                 {}, {{"spp", int(referenceSpp)}, {"seed", int(settings.seed)}});
+    }
+
+    std::vector<MethodRun> runs;
+    std::vector<MethodSummary> summaries;
+    for (const ConvergenceMethod& method : methods) {
+        runs.push_back(runConvergence(
+            context, prepared, compiler, base, method, options, reference,
+            [&](uint32_t seed, const Checkpoint& c) {
+                if (!quiet)
+                    std::fprintf(stderr, "wavefront: %-28s seed %u %6u spp %8.3f s  relMSE %.4g\n",
+                                 method.name.c_str(), seed, c.spp, c.gpuSeconds, c.error.relMse);
+            }));
+        summaries.push_back(summarize(runs.back()));
+    }
+    info.target = parsed.has("--target") ? parsed.floatValue("--target", 0.0f, 1e-30f, 1e30f)
+                                         : defaultTarget(summaries);
+    for (MethodSummary& s : summaries)
+        setTimeToTarget(s, info.target);
+
+    const std::vector<EqualTimeCrop> crops =
+        writeEqualTimeCrops(*dir, runs, summaries, reference, info);
+    writeConvergenceCsv((fs::path(*dir) / "convergence.csv").string(), runs);
+    writeConvergenceJson((fs::path(*dir) / "convergence.json").string(), info, runs, summaries,
+                         crops);
+    std::fputs(rankingText(summaries, info.target).c_str(), stdout);
+    if (!parsed.has("--no-plot"))
+        plotCharts(*dir);
+    if (context.validationMessageCount() > 0) {
+        std::fprintf(stderr, "wavefront: %u validation message(s)\n",
+                     context.validationMessageCount());
+        return 1;
+    }
+    return 0;
+}
+
+} // namespace wf

@@ -1,0 +1,161 @@
+#include "render/convergence.h"
+
+#include <set>
+#include <sstream>
+
+#include "errors.h"
+
+namespace wf {
+
+void ConvergenceMethod::applyTo(RenderSettings& settings) const {
+    settings.sampler = sampler;
+    settings.lightSampling = lightSampling;
+    settings.randomizeSamples = randomize;
+    settings.triangleSolidAngle = triangleSolidAngle;
+    settings.sphereSolidAngle = sphereSolidAngle;
+}
+
+std::string methodWords() {
+    std::string words;
+    for (const std::string& name : samplerNames())
+        words += name + ", ";
+    return words + "bsdf, nee, mis, no-randomize, triangle-area, sphere-area";
+}
+
+ConvergenceMethod parseMethod(const std::string& text) {
+    ConvergenceMethod method;
+    std::set<std::string> seen;
+    bool samplerSet = false, estimatorSet = false;
+    std::stringstream words(text);
+    for (std::string word; std::getline(words, word, '+');) {
+        const bool isSampler = [&] {
+            for (const std::string& name : samplerNames())
+                if (word == name)
+                    return true;
+            return false;
+        }();
+        const bool isEstimator = word == "bsdf" || word == "nee" || word == "mis";
+        if (!seen.insert(word).second || (isSampler && samplerSet) ||
+            (isEstimator && estimatorSet))
+            throw UsageError("--methods: '" + text + "' names a sampler, an estimator or a "
+                             "switch twice");
+        if (isSampler) {
+            method.sampler = parseSampler(word, "--methods");
+            samplerSet = true;
+        } else if (isEstimator) {
+            method.lightSampling = parseLightSampling(word);
+            estimatorSet = true;
+        } else if (word == "no-randomize") {
+            method.randomize = false;
+        } else if (word == "triangle-area") {
+            method.triangleSolidAngle = false;
+        } else if (word == "sphere-area") {
+            method.sphereSolidAngle = false;
+        } else {
+            throw UsageError("--methods: unknown word '" + word + "' in '" + text +
+                             "' (words: " + methodWords() + ")");
+        }
+    }
+    if (!method.randomize && method.sampler == SamplerKind::Independent)
+        throw UsageError("--methods: independent has no randomization to remove ('" + text +
+                         "')");
+    method.name = std::string(samplerName(method.sampler)) + "+" +
+                  lightSamplingName(method.lightSampling) +
+                  (method.randomize ? "" : "+no-randomize") +
+                  (method.triangleSolidAngle ? "" : "+triangle-area") +
+                  (method.sphereSolidAngle ? "" : "+sphere-area");
+    return method;
+}
+
+std::vector<ConvergenceMethod> parseMethods(const std::string& list) {
+    std::vector<ConvergenceMethod> methods;
+    std::set<std::string> names;
+    std::stringstream items(list);
+    for (std::string item; std::getline(items, item, ',');) {
+        if (item.empty())
+            continue;
+        methods.push_back(parseMethod(item));
+        if (!names.insert(methods.back().name).second)
+            throw UsageError("--methods lists " + methods.back().name + " twice");
+    }
+    if (methods.empty())
+        throw UsageError("--methods needs at least one method (words: " + methodWords() + ")");
+    return methods;
+}
+
+std::vector<ConvergenceMethod> defaultMethods() {
+    std::string list;
+    for (SamplerKind kind : allSamplers())
+        list += std::string(samplerName(kind)) + ",";
+    const std::string fallback = samplerName(kDefaultSampler);
+    return parseMethods(list + fallback + "+bsdf," + fallback + "+nee");
+}
+
+namespace {
+
+Checkpoint measure(const WavefrontRenderer& renderer, const std::vector<float>& reference,
+                   std::vector<float>* keep) {
+    Checkpoint checkpoint;
+    checkpoint.spp = renderer.samplesDone();
+    for (const auto& [pass, ms] : renderer.stats().passMilliseconds)
+        checkpoint.gpuSeconds += ms / 1000.0;
+    checkpoint.wallSeconds = renderer.stats().seconds;
+    std::vector<float> image = renderer.readImage();
+    checkpoint.error = imageError(image, reference);
+    if (keep)
+        *keep = std::move(image);
+    return checkpoint;
+}
+
+} // namespace
+
+MethodRun runConvergence(const Context& context, const PreparedScene& scene,
+                         const ShaderCompiler& compiler, const RenderSettings& base,
+                         const ConvergenceMethod& method, const ConvergenceOptions& options,
+                         const std::vector<float>& reference,
+                         const std::function<void(uint32_t, const Checkpoint&)>& onCheckpoint) {
+    if (options.seeds.empty())
+        throw InternalError("convergence: no seeds");
+    RenderSettings settings = base;
+    method.applyTo(settings);
+    settings.samplesPerPixel = options.fixedCheckpoints.empty() ? options.maxSpp
+                                                                : options.fixedCheckpoints.back();
+    WavefrontRenderer renderer(context, scene, settings, compiler);
+    const bool finiteSet = samplerIsFiniteSet(method.sampler);
+
+    MethodRun run;
+    run.method = method;
+    run.defines = renderer.shaderDefines();
+    run.checkpoints = options.fixedCheckpoints;
+    for (size_t s = 0; s < options.seeds.size(); ++s) {
+        const uint32_t seed = options.seeds[s];
+        const bool decide = s == 0 && options.fixedCheckpoints.empty();
+        std::vector<Checkpoint> points;
+        renderer.restart(seed, 0, 0);
+        for (size_t c = 0;; ++c) {
+            // The first seed sets the checkpoints: doubling until the time budget is spent.
+            const uint32_t spp = decide ? (c == 0 ? 1u : run.checkpoints.back() * 2)
+                                        : run.checkpoints[c];
+            if (finiteSet)
+                renderer.restart(seed, 0, spp);
+            renderer.renderSamples(spp - renderer.samplesDone());
+            std::vector<float>* keep = nullptr;
+            if (s == 0 && options.keepFirstSeedImages)
+                keep = &run.firstSeedImages.emplace_back();
+            points.push_back(measure(renderer, reference, keep));
+            if (onCheckpoint)
+                onCheckpoint(seed, points.back());
+            if (decide) {
+                run.checkpoints.push_back(spp);
+                if (points.back().wallSeconds >= options.timeBudget || spp * 2 > options.maxSpp)
+                    break;
+            } else if (c + 1 == run.checkpoints.size()) {
+                break;
+            }
+        }
+        run.perSeed.push_back(std::move(points));
+    }
+    return run;
+}
+
+} // namespace wf

@@ -1,0 +1,33 @@
+// What the viewer sets up before its first frame, read as `wavefront render` reads it: the
+// scene with the same camera choice and environment, the window sized by the same rule, and a
+// Vulkan context that can present to that window.
+#pragma once
+#include <string>
+
+#include "gpu/context.h"
+#include "render/scene_buffers.h"
+#include "viewer/camera_list.h"
+#include "viewer/viewer.h"
+#include "viewer/window.h"
+
+namespace wf {
+
+struct ViewerScene {
+    PreparedScene prepared;
+    CameraList cameras;
+    ViewBounds bounds;
+};
+
+// Loads options.scenePath (and --env), printing the loader's warnings unless quiet.
+ViewerScene loadViewerScene(const ViewerOptions& options);
+
+// --width/--height as `wavefront render` reads them: a missing one follows the camera's aspect.
+WindowSize initialWindowSize(const ViewerOptions& options, const Camera& camera);
+
+std::string windowTitle(const std::string& scenePath);
+
+// Context options for `window`: its surface extensions, and its surface created with the
+// instance. The window must outlive the context.
+ContextOptions presentingContext(const ViewerOptions& options, const Window& window);
+
+} // namespace wf

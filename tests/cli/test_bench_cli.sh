@@ -1,0 +1,75 @@
+#!/usr/bin/env bash
+# The command-line contract of `wavefront bench`: help, the table, the JSON report, the
+# megakernel comparison, identical ray counts for identical inputs, and usage errors.
+# Usage: test_bench_cli.sh PATH/TO/wavefront PATH/TO/scenes
+set -u
+wavefront=$1
+scenes=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+passes=0
+
+check() { # check NAME EXPECTED_CODE COMMAND...
+    local name=$1 expected=$2
+    shift 2
+    "$@" >"$work/stdout" 2>"$work/stderr"
+    local code=$?
+    if [ "$code" -ne "$expected" ]; then
+        echo "FAIL $name: exit $code, expected $expected"; sed 's/^/  /' "$work/stderr" | head -5
+        failures=$((failures + 1))
+    else
+        passes=$((passes + 1))
+    fi
+}
+expect() { # expect NAME CONDITION...
+    local name=$1
+    shift
+    if "$@"; then passes=$((passes + 1)); else echo "FAIL $name"; failures=$((failures + 1)); fi
+}
+json_has() { # json_has FILE PYTHON-EXPRESSION-ON-d
+    python3 -c "import json,sys; d=json.load(open(sys.argv[1])); sys.exit(0 if ($2) else 1)" "$1"
+}
+
+check "top help" 0 "$wavefront" --help
+expect "top help lists bench" grep -q "bench SCENE" "$work/stdout"
+check "bench help" 0 "$wavefront" bench --help
+for flag in --width --height --frames --warmup --spp --max-depth --seed --megakernel \
+    --compare-megakernel --budget-ms --wave-paths --json --device; do
+    expect "bench help lists $flag" grep -q -- "$flag" "$work/stdout"
+done
+
+small=(--width 32 --height 32 --frames 3 --warmup 1 --max-depth 5 -q)
+check "bench" 0 "$wavefront" bench "$scenes/cornell_box.gltf" "${small[@]}" --json "$work/a.json"
+for word in raygen intersect shade queue shadow accumulate "frame (wall)" "paths/s" \
+    "longest" "depth" "device memory" "SAH cost" "shader variant"; do
+    expect "table shows $word" grep -q -- "$word" "$work/stdout"
+done
+expect "json has passes with min/median/max" json_has "$work/a.json" \
+    "all(k in d['runs']['wavefront']['passMilliseconds'] for k in ('raygen','intersect','shade','queue','shadow','accumulate')) and d['runs']['wavefront']['passMilliseconds']['intersect']['median'] >= 0"
+expect "json has occupancy and memory" json_has "$work/a.json" \
+    "d['runs']['wavefront']['occupancy'][0]['rays'] == 32*32*3 and d['runs']['wavefront']['memoryTotalBytes'] > 0 and d['bvh']['sahCost'] > 0"
+
+check "bench again" 0 "$wavefront" bench "$scenes/cornell_box.gltf" "${small[@]}" --json "$work/b.json" \
+    --budget-ms 1
+expect "same inputs, same ray counts (any wave size)" python3 -c "
+import json, sys
+a, b = (json.load(open(f))['runs']['wavefront'] for f in sys.argv[1:])
+sys.exit(0 if a['rays'] == b['rays'] and a['occupancy'] == b['occupancy'] else 1)" \
+    "$work/a.json" "$work/b.json"
+
+check "compare megakernel" 0 "$wavefront" bench "$scenes/cornell_box.gltf" "${small[@]}" \
+    --compare-megakernel --json "$work/m.json"
+expect "both tables and the ratio" grep -q "wavefront / megakernel" "$work/stdout"
+expect "megakernel table" grep -q "^megakernel:" "$work/stdout"
+expect "json ratio and equal workloads" json_has "$work/m.json" \
+    "d['wavefrontOverMegakernel'] > 0 and d['runs']['wavefront']['rays'] == d['runs']['megakernel']['rays']"
+check "megakernel" 0 "$wavefront" bench "$scenes/cornell_box.gltf" "${small[@]}" --megakernel
+expect "megakernel table only" bash -c "! grep -q '^wavefront:' '$work/stdout'"
+
+check "no scene" 2 "$wavefront" bench
+check "bad frames" 2 "$wavefront" bench "$scenes/cornell_box.gltf" --frames 0
+check "unknown flag" 2 "$wavefront" bench "$scenes/cornell_box.gltf" --bogus
+
+echo "$passes passed, $failures failed"
+[ "$failures" -eq 0 ]
