@@ -10,6 +10,7 @@
 #include <random>
 #include <vector>
 
+#include "chi_square.h"
 #include "shaders/shared/sampling.h"
 
 namespace {
@@ -18,70 +19,7 @@ using glm::vec2;
 using glm::vec3;
 using namespace wf::gpu_types;
 
-// Regularised upper incomplete gamma Q(a, x) (Numerical Recipes 6.2): series below a + 1,
-// Lentz's continued fraction above.
-double gammaQ(double a, double x) {
-    if (x <= 0.0) {
-        return 1.0;
-    }
-    double logPrefix = -x + a * std::log(x) - std::lgamma(a);
-    if (x < a + 1.0) {
-        double term = 1.0 / a, sum = term;
-        for (int n = 1; n < 10000 && std::abs(term) > std::abs(sum) * 1e-15; ++n) {
-            term *= x / (a + n);
-            sum += term;
-        }
-        return 1.0 - sum * std::exp(logPrefix);
-    }
-    const double tiny = 1e-300;
-    double b = x + 1.0 - a, c = 1.0 / tiny, d = 1.0 / b, h = d;
-    for (int i = 1; i < 10000; ++i) {
-        double an = -i * (i - a);
-        b += 2.0;
-        d = an * d + b;
-        d = std::abs(d) < tiny ? tiny : d;
-        c = b + an / c;
-        c = std::abs(c) < tiny ? tiny : c;
-        d = 1.0 / d;
-        double delta = d * c;
-        h *= delta;
-        if (std::abs(delta - 1.0) < 1e-15) {
-            break;
-        }
-    }
-    return std::exp(logPrefix) * h;
-}
-
-// Pearson's chi-square p-value. Cells expecting fewer than 5 samples are pooled (smallest
-// first) so the statistic's chi-square approximation holds; a sample in a cell expecting
-// none is an outright failure.
-double chiSquarePValue(const std::vector<double>& observed, const std::vector<double>& expected) {
-    std::vector<size_t> order(observed.size());
-    for (size_t i = 0; i < order.size(); ++i) {
-        order[i] = i;
-    }
-    std::sort(order.begin(), order.end(),
-              [&](size_t a, size_t b) { return expected[a] < expected[b]; });
-    double chi2 = 0.0, poolObs = 0.0, poolExp = 0.0;
-    int cells = 0;
-    for (size_t i : order) {
-        if (expected[i] <= 0.0 && observed[i] > 0.0) {
-            return 0.0;
-        }
-        poolObs += observed[i];
-        poolExp += expected[i];
-        if (poolExp >= 5.0) {
-            chi2 += (poolObs - poolExp) * (poolObs - poolExp) / poolExp;
-            ++cells;
-            poolObs = poolExp = 0.0;
-        }
-    }
-    if (poolExp > 0.0) { // leftovers too small to stand alone
-        chi2 += (poolObs - poolExp) * (poolObs - poolExp) / poolExp;
-        ++cells;
-    }
-    return gammaQ(0.5 * (cells - 1), 0.5 * chi2);
-}
+using wf::test::chiSquarePValue;
 
 constexpr int COS_BINS = 10;
 constexpr int PHI_BINS = 20;
