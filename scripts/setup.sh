@@ -10,6 +10,7 @@ packages=(
     libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers
     glslang-dev libglm-dev libtinygltf-dev libopenexr-dev libstb-dev
     libglfw3-dev libimgui-dev # wavefront view (WF_BUILD_VIEWER)
+    python3-matplotlib # wavefront converge's charts (scripts/plot_convergence.py)
 )
 tests=OFF
 if [ "${1:-}" = "--with-tests" ]; then

@@ -110,9 +110,9 @@ int runBenchCommand(const std::vector<std::string>& args) {
         scene.camera = frameBounds(scene);
     const float aspect = scene.camera.aspect > 0.0f ? scene.camera.aspect : 1.0f;
     settings.width = parsed.uintValue("--width", 256, 1, 16384);
-    settings.height = parsed.has("--height")
-                          ? parsed.uintValue("--height", 0, 1, 16384)
-                          : std::max(1u, static_cast<uint32_t>(std::lround(settings.width / aspect)));
+    const auto heightFromAspect = static_cast<uint32_t>(std::lround(settings.width / aspect));
+    settings.height = parsed.has("--height") ? parsed.uintValue("--height", 0, 1, 16384)
+                                             : std::max(1u, heightFromAspect);
 
     ContextOptions contextOptions;
     if (parsed.has("--device"))
@@ -123,12 +123,14 @@ int runBenchCommand(const std::vector<std::string>& args) {
     const PreparedScene prepared = prepareScene(std::move(scene));
 
     std::vector<Timed> kernels(withMegakernel ? 2 : 1);
-    kernels[0].renderer = std::make_unique<WavefrontRenderer>(context, prepared, settings, compiler);
+    kernels[0].renderer =
+        std::make_unique<WavefrontRenderer>(context, prepared, settings, compiler);
     kernels[0].run.kernel = "wavefront";
     if (withMegakernel) {
         RenderSettings mega = settings;
         mega.megakernel = true;
-        kernels[1].renderer = std::make_unique<WavefrontRenderer>(context, prepared, mega, compiler);
+        kernels[1].renderer =
+            std::make_unique<WavefrontRenderer>(context, prepared, mega, compiler);
         kernels[1].run.kernel = "megakernel";
     }
     for (Timed& k : kernels)

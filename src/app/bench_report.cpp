@@ -92,9 +92,10 @@ std::string runJson(const BenchRun& run) {
         << ",\n      \"longestSubmitSeconds\": " << jsonNumber(t.longestSubmitSeconds)
         << ",\n      \"nonFiniteSamples\": " << t.nonFiniteSamples
         << ",\n      \"occupancy\": [";
+    const double paths = double(std::max<uint64_t>(t.paths, 1));
     for (size_t d = 0; d < t.depthRays.size(); ++d)
         out << (d ? ", " : "") << "{\"depth\": " << d << ", \"rays\": " << t.depthRays[d]
-            << ", \"fraction\": " << jsonNumber(double(t.depthRays[d]) / std::max<uint64_t>(t.paths, 1))
+            << ", \"fraction\": " << jsonNumber(t.depthRays[d] / paths)
             << ", \"shadowRays\": " << t.depthShadowRays[d] << "}";
     out << "],\n      \"memoryBytes\": {";
     uint64_t total = 0;

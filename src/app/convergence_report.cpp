@@ -155,9 +155,9 @@ std::string rankingText(const std::vector<MethodSummary>& summaries, double targ
     for (size_t i = 0; i < order.size(); ++i) {
         const MethodSummary& s = summaries[order[i]];
         char line[160];
-        const std::string time = std::isfinite(s.timeToTarget)
-                                     ? (s.extrapolated ? "~" : "") + format("%.3g s", s.timeToTarget)
-                                     : "never (error not falling)";
+        std::string time = "never (error not falling)";
+        if (std::isfinite(s.timeToTarget))
+            time = format(s.extrapolated ? "~%.3g s" : "%.3g s", s.timeToTarget);
         std::snprintf(line, sizeof line, "%3zu  %-32s  %15s  %10.2f  %10.2f\n", i + 1,
                       s.name.c_str(), time.c_str(), s.slopeSpp, s.slopeTime);
         out << line;

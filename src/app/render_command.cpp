@@ -83,6 +83,9 @@ void applySamplerFlags(const ParsedArgs& parsed, RenderSettings& settings) {
     settings.sampler = parseSampler(
         parsed.choiceValue("--sampler", samplerName(kDefaultSampler), samplerNames()));
     settings.randomizeSamples = !parsed.has("--no-randomize");
+    if (!settings.randomizeSamples && settings.sampler == SamplerKind::Independent)
+        throw UsageError("--no-randomize: the independent sampler has no randomization to "
+                         "remove (pick another --sampler)");
     settings.sppOffset = parsed.uintValue("--spp-offset", 0, 0, 1u << 30);
     const uint32_t total = settings.sppOffset + settings.samplesPerPixel;
     settings.sampleSetSize = parsed.uintValue("--spp-total", total, 1, 1u << 31);

@@ -121,6 +121,9 @@ MethodRun runConvergence(const Context& context, const PreparedScene& scene,
     settings.samplesPerPixel = options.fixedCheckpoints.empty() ? options.maxSpp
                                                                 : options.fixedCheckpoints.back();
     WavefrontRenderer renderer(context, scene, settings, compiler);
+    // Warm-up: a device's first dispatches of fresh pipelines carry one-time costs (lavapipe
+    // finishes compiling them), which would land on the first checkpoint's time.
+    renderer.renderSamples(1);
     const bool finiteSet = samplerIsFiniteSet(method.sampler);
 
     MethodRun run;

@@ -135,6 +135,7 @@ private:
     uint32_t pixelCount_;
     uint32_t pathCapacity_;
     uint32_t wavePaths_;
+    double secondsPerPath_ = 0.0; // measured, for sizing waves to the submit budget
     ShaderVariant variant_;
     const PreparedScene& scene_;
     uint32_t samplesDone_ = 0;

@@ -1,0 +1,101 @@
+#!/usr/bin/env bash
+# The command line of the samplers and of `wavefront converge`: flags in --help, every sampler
+# renders, bad values give exit 2 with one line, converge writes its files and ranking.
+# Usage: test_sampler_cli.sh PATH/TO/wavefront PATH/TO/scenes
+set -u
+wavefront=$1
+scenes=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+passes=0
+
+check() { # check NAME EXPECTED_CODE COMMAND...
+    local name=$1 expected=$2
+    shift 2
+    "$@" >"$work/stdout" 2>"$work/stderr"
+    local code=$?
+    if [ "$code" -ne "$expected" ]; then
+        echo "FAIL $name: exit $code, expected $expected"; sed 's/^/  /' "$work/stderr" | head -5
+        failures=$((failures + 1))
+    else
+        passes=$((passes + 1))
+    fi
+}
+expect() { # expect NAME CONDITION...
+    local name=$1
+    shift
+    if "$@"; then passes=$((passes + 1)); else echo "FAIL $name"; failures=$((failures + 1)); fi
+}
+one_line_error() { [ "$(wc -l <"$work/stderr")" -eq 1 ] && grep -q . "$work/stderr"; }
+cornell="$scenes/cornell_box.gltf"
+
+check "render help" 0 "$wavefront" render --help
+for flag in --sampler --no-randomize --spp-offset --spp-total; do
+    expect "render help lists $flag" grep -q -- "$flag" "$work/stdout"
+done
+check "top help" 0 "$wavefront" --help
+expect "top help lists converge" grep -q "converge" "$work/stdout"
+check "converge help" 0 "$wavefront" converge --help
+for flag in --output --reference --reference-spp --time --methods --seeds --max-spp --target \
+    --width --height --max-depth --crop --no-plot; do
+    expect "converge help lists $flag" grep -q -- "$flag" "$work/stdout"
+done
+
+for sampler in independent stratified multijitter halton hammersley sobol bluenoise; do
+    check "render --sampler $sampler" 0 "$wavefront" render "$cornell" -o "$work/$sampler.exr" \
+        --spp 2 --width 8 --max-depth 3 --sampler "$sampler" -q
+    expect "$sampler: sampler in the EXR header" grep -qa "$sampler" "$work/$sampler.exr"
+done
+check "partial render" 0 "$wavefront" render "$cornell" -o "$work/part.exr" --spp 2 --width 8 \
+    --spp-offset 2 --spp-total 4 --sampler hammersley -q
+expect "partial render: offset in the EXR header" grep -qa "sppOffset" "$work/part.exr"
+check "no-randomize" 0 "$wavefront" render "$cornell" -o "$work/n.exr" --spp 1 --width 8 \
+    --no-randomize --sampler halton -q
+
+check "unknown sampler" 2 "$wavefront" render "$cornell" -o "$work/x.exr" --sampler pmj
+expect "unknown sampler: one line" one_line_error
+expect "unknown sampler: lists the samplers" grep -q "bluenoise" "$work/stderr"
+check "set smaller than the part" 2 "$wavefront" render "$cornell" -o "$work/x.exr" --spp 4 \
+    --spp-offset 1 --spp-total 4
+expect "set smaller: one line" one_line_error
+check "independent cannot un-randomize" 2 "$wavefront" render "$cornell" -o "$work/x.exr" \
+    --sampler independent --no-randomize
+expect "independent no-randomize: one line" one_line_error
+
+conv="$work/conv"
+check "converge" 0 "$wavefront" converge "$cornell" -o "$conv" --width 8 --time 0.01 \
+    --max-spp 4 --reference-spp 8 --methods independent,sobol+nee --max-depth 3 -q
+for file in convergence.csv convergence.json reference.exr crops/reference.png \
+    crops/sobol+nee.png crops/independent+mis.png; do
+    expect "converge wrote $file" test -s "$conv/$file"
+done
+expect "converge prints a ranking" grep -q "ranking by GPU time" "$work/stdout"
+expect "converge says it rendered the reference" grep -q "rendering one with Wavefront" \
+    "$work/stderr"
+expect "csv: 5 seeds" bash -c "cut -d, -f4 '$conv/convergence.csv' | sort -u | grep -c . | grep -q 6"
+if /usr/bin/python3 -c "import matplotlib" 2>/dev/null; then
+    for chart in error_vs_time.png error_vs_spp.png equal_time.png; do
+        expect "converge drew $chart" test -s "$conv/$chart"
+    done
+fi
+check "converge with a given reference" 0 "$wavefront" converge "$cornell" -o "$work/conv2" \
+    --reference "$conv/reference.exr" --time 0.01 --max-spp 2 --methods halton \
+    --max-depth 3 --no-plot -q
+expect "given reference: size adopted" grep -q '"width": 8' "$work/conv2/convergence.json"
+
+check "converge: too few seeds" 2 "$wavefront" converge "$cornell" -o "$work/c3" --seeds 2
+expect "too few seeds: one line" one_line_error
+check "converge: unknown method word" 2 "$wavefront" converge "$cornell" -o "$work/c3" \
+    --methods sobol+fast
+expect "unknown method word: one line" one_line_error
+check "converge: no output" 2 "$wavefront" converge "$cornell"
+check "converge: reference of another size" 2 "$wavefront" converge "$cornell" -o "$work/c3" \
+    --reference "$conv/reference.exr" --width 16
+expect "reference size: one line" one_line_error
+check "converge: bad crop" 2 "$wavefront" converge "$cornell" -o "$work/c3" --width 8 \
+    --crop 4,4,8,8
+expect "bad crop: one line" one_line_error
+
+echo "test_sampler_cli: $passes passed, $failures failed"
+[ "$failures" -eq 0 ]
