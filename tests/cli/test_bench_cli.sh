@@ -5,31 +5,7 @@
 set -u
 wavefront=$1
 scenes=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-passes=0
-
-check() { # check NAME EXPECTED_CODE COMMAND...
-    local name=$1 expected=$2
-    shift 2
-    "$@" >"$work/stdout" 2>"$work/stderr"
-    local code=$?
-    if [ "$code" -ne "$expected" ]; then
-        echo "FAIL $name: exit $code, expected $expected"; sed 's/^/  /' "$work/stderr" | head -5
-        failures=$((failures + 1))
-    else
-        passes=$((passes + 1))
-    fi
-}
-expect() { # expect NAME CONDITION...
-    local name=$1
-    shift
-    if "$@"; then passes=$((passes + 1)); else echo "FAIL $name"; failures=$((failures + 1)); fi
-}
-json_has() { # json_has FILE PYTHON-EXPRESSION-ON-d
-    python3 -c "import json,sys; d=json.load(open(sys.argv[1])); sys.exit(0 if ($2) else 1)" "$1"
-}
+source "$(dirname "$0")/harness.sh"
 
 check "top help" 0 "$wavefront" --help
 expect "top help lists bench" grep -q "bench SCENE" "$work/stdout"
@@ -77,5 +53,4 @@ check "no scene" 2 "$wavefront" bench
 check "bad frames" 2 "$wavefront" bench "$scenes/cornell_box.gltf" --frames 0
 check "unknown flag" 2 "$wavefront" bench "$scenes/cornell_box.gltf" --bogus
 
-echo "$passes passed, $failures failed"
-[ "$failures" -eq 0 ]
+finish

@@ -4,29 +4,7 @@
 set -u
 wavefront=$1
 scenes=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-passes=0
-
-check() { # check NAME EXPECTED_CODE COMMAND...
-    local name=$1 expected=$2
-    shift 2
-    "$@" >"$work/stdout" 2>"$work/stderr"
-    local code=$?
-    if [ "$code" -ne "$expected" ]; then
-        echo "FAIL $name: exit $code, expected $expected"; sed 's/^/  /' "$work/stderr" | head -5
-        failures=$((failures + 1))
-    else
-        passes=$((passes + 1))
-    fi
-}
-expect() { # expect NAME CONDITION...
-    local name=$1
-    shift
-    if "$@"; then passes=$((passes + 1)); else echo "FAIL $name"; failures=$((failures + 1)); fi
-}
-one_line_error() { [ "$(wc -l <"$work/stderr")" -eq 1 ] && grep -q . "$work/stderr"; }
+source "$(dirname "$0")/harness.sh"
 
 check "top help" 0 "$wavefront" --help
 expect "top help lists render" grep -q "render" "$work/stdout"
@@ -80,5 +58,4 @@ check "output folder missing" 2 "$wavefront" render "$scenes/cornell_box.gltf" \
 expect "nothing written on failure" test ! -e "$work/x.exr"
 check "bad device" 2 "$wavefront" render "$scenes/cornell_box.gltf" -o "$work/x.exr" --device 7
 
-echo "$passes passed, $failures failed"
-[ "$failures" -eq 0 ]
+finish

@@ -8,29 +8,7 @@ set -u
 wavefront=$1
 source_dir=$2
 corpus=$source_dir/tests/gltf_corpus
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-passes=0
-
-check() { # check NAME EXPECTED_CODE COMMAND...
-    local name=$1 expected=$2
-    shift 2
-    "$@" >"$work/stdout" 2>"$work/stderr"
-    local code=$?
-    if [ "$code" -ne "$expected" ]; then
-        echo "FAIL $name: exit $code, expected $expected"; sed 's/^/  /' "$work/stderr" | head -5
-        failures=$((failures + 1))
-    else
-        passes=$((passes + 1))
-    fi
-}
-expect() { # expect NAME CONDITION...
-    local name=$1
-    shift
-    if "$@"; then passes=$((passes + 1)); else echo "FAIL $name"; failures=$((failures + 1)); fi
-}
-one_line_error() { [ "$(wc -l <"$work/stderr")" -eq 1 ] && grep -q "^wavefront: " "$work/stderr"; }
+source "$(dirname "$0")/harness.sh"
 render() { "$wavefront" render "$@" --spp 1 --width 24 --max-depth 2 --quiet; }
 
 for file in "$corpus"/invalid/*.gl*; do
@@ -75,5 +53,4 @@ expect "big scene has >= 300k triangles ($triangles)" test "${triangles:-0}" -ge
 expect "big scene: BVH build time and SAH cost" grep -q "SAH cost .*built in" "$work/stderr"
 expect "big scene: vertex normals buffer" grep -q "vertex normals" "$work/stderr"
 
-echo "$passes passed, $failures failed"
-[ "$failures" -eq 0 ]
+finish
