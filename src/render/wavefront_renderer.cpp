@@ -195,6 +195,10 @@ void WavefrontRenderer::adaptWaveSize(uint32_t paths, double seconds) {
 // the wave size, one sample in pixel ranges. Either way each pixel receives its samples in
 // order, which is what makes the film independent of the wave sizes.
 uint32_t WavefrontRenderer::advance(uint32_t maxSamples) {
+    if (pixelCursor_ > 0) { // a sample left in progress by renderPixels comes first
+        finishSample();
+        return 1;
+    }
     uint32_t samples = 1;
     if (wavePaths_ >= pixelCount_) {
         samples = std::min(wavePaths_ / pixelCount_, maxSamples);
@@ -209,6 +213,24 @@ uint32_t WavefrontRenderer::advance(uint32_t maxSamples) {
     samplesDone_ += samples;
     stats_.samplesPerPixel = samplesDone_;
     return samples;
+}
+
+uint32_t WavefrontRenderer::renderPixels(uint32_t paths) {
+    const uint32_t left = std::min(pathCapacity_, pixelCount_ - pixelCursor_);
+    const uint32_t pixels = std::clamp(paths, 1u, left);
+    runWave(pixelCursor_, pixels, 1);
+    pixelCursor_ += pixels;
+    if (pixelCursor_ == pixelCount_) {
+        pixelCursor_ = 0;
+        ++samplesDone_;
+        stats_.samplesPerPixel = samplesDone_;
+    }
+    return pixels;
+}
+
+void WavefrontRenderer::finishSample() {
+    while (pixelCursor_ > 0)
+        renderPixels(wavePaths_);
 }
 
 uint32_t WavefrontRenderer::renderSamples(uint32_t samples) {
@@ -229,6 +251,7 @@ void WavefrontRenderer::reset() {
     std::vector<float> zeros(size_t(pixelCount_) * 4, 0.0f);
     pathBuffers_->film.upload(zeros);
     samplesDone_ = 0;
+    pixelCursor_ = 0;
     stats_ = {};
     stats_.depthRays.assign(WF_TRACKED_DEPTHS, 0);
     stats_.depthShadowRays.assign(WF_TRACKED_DEPTHS, 0);

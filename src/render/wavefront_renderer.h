@@ -100,6 +100,14 @@ public:
     // Progressive use (the viewer): adds `samples` more samples per pixel, in as many waves as
     // needed, and returns the total so far.
     uint32_t renderSamples(uint32_t samples);
+    // Finer than a sample, for a frame-time target: traces up to `paths` more pixels of the
+    // sample in progress (pixels in order, one wave), completing it at the last pixel, and
+    // returns the paths traced. Each pixel still receives its samples in order, so the film
+    // matches a render of the same sample count once the sample is complete.
+    uint32_t renderPixels(uint32_t paths);
+    // Completes the sample in progress, if renderPixels left one.
+    void finishSample();
+    uint32_t pixelsOfNextSample() const { return pixelCursor_; }
     // Clears the film and the statistics; the next sample is sample sppOffset again.
     void reset();
     // Starts over like reset() with another seed, first sample index and (finite-set samplers)
@@ -108,6 +116,7 @@ public:
     // Moves the camera (and resets).
     void setCamera(const Camera& camera);
     uint32_t samplesDone() const { return samplesDone_; }
+    uint32_t pixelCount() const { return pixelCount_; }
     // The film: per pixel, RGB radiance sum and sample count (vec4), for display passes.
     const Buffer& film() const;
 
@@ -136,6 +145,7 @@ private:
     uint32_t pathCapacity_;
     uint32_t wavePaths_;
     double secondsPerPath_ = 0.0; // measured, for sizing waves to the submit budget
+    uint32_t pixelCursor_ = 0;    // pixels of sample samplesDone_ already traced
     ShaderVariant variant_;
     const PreparedScene& scene_;
     uint32_t samplesDone_ = 0;

@@ -75,17 +75,30 @@ void RenderTargets::follow(RenderTarget& target, const Camera& camera, uint64_t 
 }
 
 uint32_t RenderTargets::render(RenderTarget& target, uint32_t sppLimit) {
-    uint32_t samples = target.budget.nextSamples();
-    const uint32_t done = target.renderer->samplesDone();
-    if (sppLimit > 0)
-        samples = std::min(samples, sppLimit > done ? sppLimit - done : 0u);
-    if (samples == 0)
+    WavefrontRenderer& renderer = *target.renderer;
+    const uint32_t done = renderer.samplesDone();
+    if (sppLimit > 0 && done >= sppLimit)
         return 0;
     const auto start = std::chrono::steady_clock::now();
-    target.renderer->renderSamples(samples);
-    target.budget.record(
-        samples,
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    auto elapsed = [&] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
+    const double perSample = target.budget.secondsPerSample();
+    const uint32_t pixels = renderer.pixelCount();
+    if (perSample > targetSeconds_ || renderer.pixelsOfNextSample() > 0) {
+        // One sample of the image is over the frame-time target: trace the part of it that
+        // fits, so the frame stays responsive; the sample completes over several frames.
+        const double fraction = perSample > 0.0 ? targetSeconds_ / perSample : 1.0;
+        const uint32_t paths = static_cast<uint32_t>(std::max(1.0, fraction * pixels));
+        const uint32_t traced = renderer.renderPixels(paths);
+        target.budget.record(double(traced) / pixels, elapsed());
+        return renderer.samplesDone() - done;
+    }
+    uint32_t samples = target.budget.nextSamples();
+    if (sppLimit > 0)
+        samples = std::min(samples, sppLimit - done);
+    renderer.renderSamples(samples);
+    target.budget.record(samples, elapsed());
     return samples;
 }
 

@@ -16,10 +16,10 @@ uint32_t SampleBudget::nextSamples() const {
     return static_cast<uint32_t>(std::clamp(fit, 1.0, cap));
 }
 
-void SampleBudget::record(uint32_t samples, double seconds) {
-    if (samples == 0)
+void SampleBudget::record(double samples, double seconds) {
+    if (!(samples > 0.0))
         return;
-    lastSamples_ = samples;
+    lastSamples_ = std::max(1u, static_cast<uint32_t>(samples));
     const double perSample = seconds / samples;
     // Smoothing over a few frames: one slow frame (the OS, a resize) must not halve the next.
     secondsPerSample_ =

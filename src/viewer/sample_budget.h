@@ -1,7 +1,7 @@
-// How much path tracing a viewer frame does. Each frame renders whole samples per pixel (the
-// renderer's unit), as many as fit the frame-time target by the measured cost of one; when
-// even one sample of the full image is over the target while the camera moves, the viewer
-// renders a preview at 1/d of the resolution instead (d = previewDivisor).
+// How much path tracing a viewer frame does. Each frame renders whole samples per pixel, as
+// many as fit the frame-time target by the measured cost of one; when one sample is over the
+// target, a still camera gets the part of a sample that fits (render_targets.cpp), and a
+// moving one a preview at 1/d of the resolution instead (d = previewDivisor).
 #pragma once
 #include <cstdint>
 
@@ -15,8 +15,8 @@ public:
     // Samples per pixel for the next frame: at least 1, at most double the last frame's (so a
     // noisy timing cannot overshoot by much) and at most maxSamplesPerFrame.
     uint32_t nextSamples() const;
-    // Reports a frame's samples and the seconds they took.
-    void record(uint32_t samples, double seconds);
+    // Reports a frame's samples (a fraction for part of one) and the seconds they took.
+    void record(double samples, double seconds);
     // Smoothed seconds per sample per pixel; 0 until the first record().
     double secondsPerSample() const { return secondsPerSample_; }
 

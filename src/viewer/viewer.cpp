@@ -247,6 +247,7 @@ void Viewer::saveScreenshot(const std::string& exrPath) {
 // At quit: shows the full-resolution image once more, reading it back, and saves it.
 void Viewer::captureScreenshot(const std::string& exrPath) {
     RenderTarget& target = chooseTarget(true);
+    target.renderer->finishSample();
     if (target.renderer->samplesDone() == 0)
         target.renderer->renderSamples(1);
     for (int attempt = 0; attempt < 2; ++attempt) {
@@ -294,6 +295,8 @@ int Viewer::run() {
 
         const bool screenshot = screenshotRequested_;
         RenderTarget& target = chooseTarget(screenshot);
+        if (screenshot)
+            target.renderer->finishSample(); // the EXR holds whole samples only
         // Paused or at the limit, a moved camera still gets one sample to show.
         uint32_t samples = 0;
         if (refining() || target.renderer->samplesDone() == 0)

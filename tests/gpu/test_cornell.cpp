@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "gpu_test_util.h"
+#include "render/scene_buffers.h"
 #include "scene/gltf_loader.h"
 
 namespace wf::test {
@@ -84,6 +85,30 @@ TEST(Cornell, QueuesConserveRays) {
     EXPECT_LE(result.stats.extensionRays, paths * 7);
     EXPECT_GT(result.stats.shadowRays, 0u);
     EXPECT_LE(result.stats.shadowRays, paths * 7);
+}
+
+} // namespace
+} // namespace wf::test
+
+namespace wf::test {
+namespace {
+
+TEST(Cornell, PartialSamplesGiveTheSameImage) {
+    // The viewer traces part of a sample per frame; once the samples are complete the film
+    // must equal whole-sample rendering bit for bit.
+    PreparedScene prepared = prepareScene(cornell());
+    RenderSettings settings = smallSettings(21);
+    ShaderCompiler compiler;
+    WavefrontRenderer whole(gpuContext(), prepared, settings, compiler);
+    whole.renderSamples(3);
+    WavefrontRenderer parts(gpuContext(), prepared, settings, compiler);
+    while (parts.samplesDone() < 3)
+        parts.renderPixels(700); // does not divide the 2304 pixels: ranges straddle rows
+    EXPECT_EQ(parts.pixelsOfNextSample(), 0u);
+    std::vector<float> a = whole.readImage(), b = parts.readImage();
+    ASSERT_EQ(a.size(), b.size());
+    EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(float)), 0);
+    EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
 }
 
 } // namespace
