@@ -26,8 +26,7 @@ namespace wf::gpu_types {
 
 // The mask's rank under `pixelXY`, with the mask shifted for this slot and seed offset.
 WF_INLINE uint blueNoiseRank(uvec2 pixelXY, uint slot, uint seedOffset) {
-    uint texels = WF_BLUE_NOISE_SIZE * WF_BLUE_NOISE_SIZE;
-    uint shift = (seedOffset + slot * WF_BLUE_NOISE_SLOT_STRIDE) & (texels - 1u);
+    uint shift = (seedOffset + slot * WF_BLUE_NOISE_SLOT_STRIDE) & (WF_BLUE_NOISE_TEXELS - 1u);
     uint x = (pixelXY.x + shift % WF_BLUE_NOISE_SIZE) % WF_BLUE_NOISE_SIZE;
     uint y = (pixelXY.y + shift / WF_BLUE_NOISE_SIZE) % WF_BLUE_NOISE_SIZE;
     return samplerTable(WF_SAMPLER_TABLE_BLUE_NOISE + y * WF_BLUE_NOISE_SIZE + x);

@@ -63,8 +63,8 @@ const CommandSpec& convergeSpec() {
                                   "first GPU)"},
             {"--quiet", "-q", "", "no progress lines on stderr"},
         },
-        "Charts: scripts/plot_convergence.py DIR, run with WAVEFRONT_PYTHON, else /usr/bin/python3\n"
-        "(Debian's python3-matplotlib), else python3.\n"
+        "Charts: scripts/plot_convergence.py DIR, run by WAVEFRONT_PYTHON, else\n"
+        "/usr/bin/python3 (Debian's python3-matplotlib), else python3.\n"
         "\n"
         "Exit codes: 0 done, 2 bad usage or bad input, 1 internal or device failure.\n"};
     return spec;

@@ -73,7 +73,8 @@ done
 expect "converge prints a ranking" grep -q "ranking by GPU time" "$work/stdout"
 expect "converge says it rendered the reference" grep -q "rendering one with Wavefront" \
     "$work/stderr"
-expect "csv: 5 seeds" bash -c "cut -d, -f4 '$conv/convergence.csv' | sort -u | grep -c . | grep -q 6"
+expect "csv: 5 seeds" bash -c \
+    "cut -d, -f4 '$conv/convergence.csv' | sort -u | grep -c . | grep -q 6"
 if /usr/bin/python3 -c "import matplotlib" 2>/dev/null; then
     for chart in error_vs_time.png error_vs_spp.png equal_time.png; do
         expect "converge drew $chart" test -s "$conv/$chart"

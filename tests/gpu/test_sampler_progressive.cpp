@@ -13,6 +13,11 @@
 #include "render/scene_buffers.h"
 #include "scene/gltf_loader.h"
 
+namespace wf {
+// Test names and failure messages show the sampler's name.
+void PrintTo(SamplerKind kind, std::ostream* os) { *os << samplerName(kind); }
+} // namespace wf
+
 namespace wf::test {
 namespace {
 
