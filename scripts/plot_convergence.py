@@ -34,7 +34,7 @@ def method_style(index, method):
 
 
 def error_chart(run, key, xlabel, path, title):
-    fig, ax = plt.subplots(figsize=(7.0, 4.6))
+    fig, ax = plt.subplots(figsize=(9.0, 4.4))
     all_x = []
     for i, m in enumerate(run["methods"]):
         x, y = m[key], m["relMse"]
@@ -64,7 +64,8 @@ def error_chart(run, key, xlabel, path, title):
     ax.set_ylabel("relMSE (median, IQR band)")
     ax.set_title(title, fontsize=10)
     ax.grid(True, which="both", alpha=0.25)
-    ax.legend(fontsize=7, loc="lower left")
+    # Outside the axes: inside, it hides the curves of some scenes.
+    ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))
     fig.tight_layout()
     fig.savefig(path, dpi=80)
     plt.close(fig)

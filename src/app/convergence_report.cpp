@@ -1,6 +1,7 @@
 #include "app/convergence_report.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -85,9 +86,12 @@ std::vector<EqualTimeCrop> writeEqualTimeCrops(const std::string& dir,
         const MethodRun& run = runs[m];
         if (run.firstSeedImages.empty())
             continue;
-        size_t pick = 0; // the last checkpoint the first seed reached within the budget
-        for (size_t c = 0; c < run.firstSeedImages.size(); ++c)
-            if (run.perSeed[0][c].gpuSeconds <= budget * 1.0001)
+        size_t pick = 0; // the first seed's checkpoint closest to the budget (in log time)
+        auto distance = [&](size_t c) {
+            return std::abs(std::log(std::max(run.perSeed[0][c].gpuSeconds, 1e-9) / budget));
+        };
+        for (size_t c = 1; c < run.firstSeedImages.size(); ++c)
+            if (distance(c) < distance(pick))
                 pick = c;
         const std::string file = "crops/" + run.method.name + ".png";
         writePngPreview((fs::path(dir) / file).string(), w, h, cropOf(run.firstSeedImages[pick]));

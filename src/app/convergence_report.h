@@ -33,8 +33,8 @@ struct EqualTimeCrop {
 
 void writeConvergenceCsv(const std::string& path, const std::vector<MethodRun>& runs);
 
-// Crops of the first seed's images, one per method, each at its last checkpoint whose GPU time
-// is within the budget every method reached (the smallest of the final medians), plus the
+// Crops of the first seed's images, one per method, each at its checkpoint closest (in log
+// time) to the GPU time every method reached (the smallest of the final medians), plus the
 // reference's: DIR/crops/<method>.png, tonemapped like render's PNG.
 std::vector<EqualTimeCrop> writeEqualTimeCrops(const std::string& dir,
                                                const std::vector<MethodRun>& runs,

@@ -11,14 +11,20 @@ namespace {
 // Binary pattern on a torus with the Gaussian-filtered "energy" of its minority pixels kept up
 // to date: the tightest cluster is the set pixel of highest energy, the largest void the empty
 // pixel of lowest. Energies are fixed-point integers so that the mask is the same everywhere.
+// Each row remembers its extremes, so a step rescans only the rows the filter touched (ties go
+// to the lowest index, as a full scan would give).
 class Pattern {
 public:
-    Pattern(uint32_t size, double sigma) : size_(size), set_(size * size, 0), energy_(size * size) {
+    Pattern(uint32_t size, double sigma)
+        : size_(size), set_(size * size, 0), energy_(size * size, 0), rowCluster_(size),
+          rowVoid_(size) {
         radius_ = std::min<int>(static_cast<int>(std::ceil(4.0 * sigma)), int(size) / 2);
         for (int dy = -radius_; dy <= radius_; ++dy)
             for (int dx = -radius_; dx <= radius_; ++dx)
                 kernel_.push_back(std::llround(
                     std::exp(-(dx * dx + dy * dy) / (2.0 * sigma * sigma)) * double(1 << 24)));
+        for (uint32_t y = 0; y < size_; ++y)
+            rescanRow(y);
     }
 
     bool isSet(uint32_t p) const { return set_[p] != 0; }
@@ -33,21 +39,38 @@ public:
             for (int dx = -radius_; dx <= radius_; ++dx, ++k)
                 energy_[size_t(y) * size_ + size_t((px + dx + n) % n)] += sign * kernel_[k];
         }
+        for (int dy = -radius_; dy <= radius_; ++dy)
+            rescanRow(uint32_t((py + dy + n) % n));
     }
 
-    uint32_t tightestCluster() const { return extreme(1, true); }
-    uint32_t largestVoid() const { return extreme(0, false); }
+    uint32_t tightestCluster() const { return extreme(rowCluster_, true); }
+    uint32_t largestVoid() const { return extreme(rowVoid_, false); }
 
 private:
-    uint32_t extreme(uint8_t state, bool highest) const {
-        uint32_t best = UINT32_MAX;
-        for (uint32_t p = 0; p < set_.size(); ++p) {
-            if (set_[p] != state)
-                continue;
-            if (best == UINT32_MAX || (highest ? energy_[p] > energy_[best]
-                                               : energy_[p] < energy_[best]))
-                best = p;
+    static constexpr uint32_t kNone = UINT32_MAX;
+
+    bool better(uint32_t candidate, uint32_t best, bool highest) const {
+        return best == kNone || (highest ? energy_[candidate] > energy_[best]
+                                         : energy_[candidate] < energy_[best]);
+    }
+
+    void rescanRow(uint32_t y) {
+        uint32_t cluster = kNone, hole = kNone;
+        for (uint32_t p = y * size_; p < (y + 1) * size_; ++p) {
+            if (set_[p] && better(p, cluster, true))
+                cluster = p;
+            if (!set_[p] && better(p, hole, false))
+                hole = p;
         }
+        rowCluster_[y] = cluster;
+        rowVoid_[y] = hole;
+    }
+
+    uint32_t extreme(const std::vector<uint32_t>& rows, bool highest) const {
+        uint32_t best = kNone;
+        for (uint32_t candidate : rows)
+            if (candidate != kNone && better(candidate, best, highest))
+                best = candidate;
         return best;
     }
 
@@ -56,6 +79,8 @@ private:
     std::vector<uint8_t> set_;
     std::vector<int64_t> energy_;
     std::vector<int64_t> kernel_;
+    std::vector<uint32_t> rowCluster_; // per row: the set pixel of highest energy, or kNone
+    std::vector<uint32_t> rowVoid_;    // per row: the empty pixel of lowest energy, or kNone
 };
 
 uint64_t splitMix64(uint64_t& state) {

@@ -5,29 +5,7 @@
 set -u
 wavefront=$1
 scenes=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-passes=0
-
-check() { # check NAME EXPECTED_CODE COMMAND...
-    local name=$1 expected=$2
-    shift 2
-    "$@" >"$work/stdout" 2>"$work/stderr"
-    local code=$?
-    if [ "$code" -ne "$expected" ]; then
-        echo "FAIL $name: exit $code, expected $expected"; sed 's/^/  /' "$work/stderr" | head -5
-        failures=$((failures + 1))
-    else
-        passes=$((passes + 1))
-    fi
-}
-expect() { # expect NAME CONDITION...
-    local name=$1
-    shift
-    if "$@"; then passes=$((passes + 1)); else echo "FAIL $name"; failures=$((failures + 1)); fi
-}
-one_line_error() { [ "$(wc -l <"$work/stderr")" -eq 1 ] && grep -q . "$work/stderr"; }
+source "$(dirname "$0")/harness.sh"
 cornell="$scenes/cornell_box.gltf"
 
 check "render help" 0 "$wavefront" render --help
@@ -83,7 +61,11 @@ fi
 check "converge with a given reference" 0 "$wavefront" converge "$cornell" -o "$work/conv2" \
     --reference "$conv/reference.exr" --time 0.01 --max-spp 2 --methods halton \
     --max-depth 3 --no-plot -q
-expect "given reference: size adopted" grep -q '"width": 8' "$work/conv2/convergence.json"
+expect "given reference: size adopted" json_has "$work/conv2/convergence.json" \
+    "d['width'] == 8 and d['reference']['method'] == 'given'"
+expect "json: medians, quartiles, slopes" json_has "$conv/convergence.json" \
+    "all(len(m['relMse']) == len(m['relMseQ1']) == len(m['spp']) and 'slopeSpp' in m
+         for m in d['methods']) and d['ranking'] and len(d['seeds']) == 5"
 
 check "converge: too few seeds" 2 "$wavefront" converge "$cornell" -o "$work/c3" --seeds 2
 expect "too few seeds: one line" one_line_error
@@ -98,5 +80,4 @@ check "converge: bad crop" 2 "$wavefront" converge "$cornell" -o "$work/c3" --wi
     --crop 4,4,8,8
 expect "bad crop: one line" one_line_error
 
-echo "test_sampler_cli: $passes passed, $failures failed"
-[ "$failures" -eq 0 ]
+finish

@@ -2,7 +2,7 @@
 // --spp-offset parts gives the image of one run of all the samples. Within one renderer the
 // film adds samples one at a time in sample order, so splits into calls and waves are exact to
 // the bit; parts rendered apart merge by their sample-weighted mean within float rounding, and
-// exactly when summed in sample order.
+// exactly when summed in sample order. The megakernel baseline draws the same samples.
 #include <cmath>
 #include <cstring>
 
@@ -76,6 +76,13 @@ TEST_P(SamplerProgressive, AnySplitGivesTheImageOfOneRun) {
     WavefrontRenderer ranged(gpuContext(), *scene_, narrow, compiler_);
     ranged.render();
     EXPECT_TRUE(sameBits(ranged.readImage(), whole)) << samplerName(kind) << ": pixel ranges";
+
+    // The megakernel baseline draws the same samples (same sampler code and tables).
+    RenderSettings mega = smallSettings(kind);
+    mega.megakernel = true;
+    WavefrontRenderer megakernel(gpuContext(), *scene_, mega, compiler_);
+    megakernel.render();
+    EXPECT_TRUE(sameBits(megakernel.readImage(), whole)) << samplerName(kind) << ": megakernel";
 
     // One-sample parts at every --spp-offset, summed in sample order like the film: exact.
     std::vector<float> sum(whole.size(), 0.0f);

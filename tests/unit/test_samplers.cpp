@@ -53,7 +53,7 @@ TEST(Samplers, SobolSecondDimensionMatchesItsGeneratorMatrix) {
 
 // Sobol and blue noise: in every pixel, every aligned block of 2^m consecutive samples (so
 // every power-of-two prefix, and what --spp-offset parts cover) is a (0, m, 2)-net, for the
-// pixel pair and for the pairs of later bounces.
+// pixel pair and for the pairs of later bounces. Checked on the first three blocks.
 TEST(Samplers, SobolPairsAreZeroTwoSequencesInEveryPixel) {
     for (SamplerKind kind : {SamplerKind::Sobol, SamplerKind::BlueNoise}) {
         for (bool randomize : {true, false}) {
