@@ -3,11 +3,14 @@
 # scene, then the charts copied to docs/images/convergence/<scene>_{error_vs_time,error_vs_spp,
 # equal_time}.png. Full results (CSV, JSON, crops, reference) stay in OUT (default
 # out/convergence). Takes about half an hour on 2 CPU cores with lavapipe.
-# Usage: scripts/make_convergence_charts.sh [build/wavefront] [OUT]
+# Usage: scripts/make_convergence_charts.sh [build/wavefront] [OUT] [SCENE...]
+# (with SCENE names, e.g. glass_caustic, only those are redone)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 wavefront=${1:-build/wavefront}
 out=${2:-out/convergence}
+shift $(($# < 2 ? $# : 2))
+only=" $* "
 docs=docs/images/convergence
 mkdir -p "$out" "$docs"
 
@@ -15,7 +18,11 @@ mkdir -p "$out" "$docs"
 # reference of 8192 spp rendered by Wavefront with the default method.
 converge() { # scene methods
     local scene=$1 methods=$2
+    if [ "$only" != "  " ] && [[ "$only" != *" $scene "* ]]; then
+        return
+    fi
     echo "converge: $scene" >&2
+    mkdir -p "$out/$scene"
     "$wavefront" converge "scenes/$scene.gltf" -o "$out/$scene" --width 64 --time 2 \
         --reference-spp 8192 --methods "$methods" --quiet | tee "$out/$scene/ranking.txt"
     for chart in error_vs_time error_vs_spp equal_time; do
@@ -25,8 +32,6 @@ converge() { # scene methods
 
 samplers=independent,stratified,multijitter,halton,hammersley,sobol,bluenoise
 estimators=independent+bsdf,independent+nee,independent+mis,sobol+bsdf,sobol+nee,sobol+mis
-mkdir -p "$out/cornell_box" "$out/tiny_light" "$out/veach_mis" "$out/glass_caustic" \
-    "$out/sphere_near_floor"
 converge cornell_box "$samplers,sobol+bsdf,sobol+nee"
 converge tiny_light "$estimators"
 converge veach_mis "$estimators"

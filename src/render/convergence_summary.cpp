@@ -88,11 +88,15 @@ void setTimeToTarget(MethodSummary& summary, double target) {
         summary.extrapolated = false;
         return;
     }
-    // Along the fitted power law from the nearest end (only if the error does fall).
-    const CheckpointSummary& from = p.front().relMse <= target ? p.front() : p.back();
+    // Along the fitted power law from the nearest end, if the error falls. Reached at the
+    // first checkpoint already but not falling: that checkpoint's time, an upper bound.
+    const bool early = p.front().relMse <= target;
+    const CheckpointSummary& from = early ? p.front() : p.back();
     if (summary.slopeTime < 0.0 && from.relMse > 0.0)
         summary.timeToTarget =
             from.gpuSeconds * std::pow(target / from.relMse, 1.0 / summary.slopeTime);
+    else if (early)
+        summary.timeToTarget = from.gpuSeconds;
 }
 
 double defaultTarget(const std::vector<MethodSummary>& summaries) {

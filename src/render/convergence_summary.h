@@ -39,7 +39,9 @@ double logLogSlope(const std::vector<double>& x, const std::vector<double>& y);
 // (fewer than 3 such: all of them), past the first samples' pre-asymptotic wobble.
 MethodSummary summarize(const MethodRun& run);
 // When the median relMSE first reaches `target`: interpolated in log-log between checkpoints,
-// or extrapolated along the fitted time slope past the last one (or before the first).
+// or extrapolated along the fitted time slope past the last one (or before the first; a
+// method below the target from the start but not improving gets its first checkpoint's time).
+// Infinite when the target lies ahead and the error does not fall.
 void setTimeToTarget(MethodSummary& summary, double target);
 // The default target: the median over methods of their final median relMSE, so that about
 // half the methods reach it within their budget.

@@ -72,6 +72,17 @@ TEST(ConvergenceSummary, TimeToTargetInterpolatesAndExtrapolates) {
     EXPECT_FALSE(fast.extrapolated);
     EXPECT_NEAR(slow.timeToTarget, 6.4, 1e-9); // past the last checkpoint, along slope -1
     EXPECT_TRUE(slow.extrapolated);
+    // Below the target from the first checkpoint on: backwards along the slope, or, when
+    // the error does not fall, the first checkpoint's time as a bound; never when above.
+    MethodSummary early = summarize(syntheticRun("early", 1e-3, -1.0));
+    setTimeToTarget(early, 2.2e-3);
+    EXPECT_NEAR(early.timeToTarget, 0.05, 1e-9);
+    EXPECT_TRUE(early.extrapolated);
+    MethodSummary flat = summarize(syntheticRun("flat", 1e-3, 0.1));
+    setTimeToTarget(flat, 1.0);
+    EXPECT_NEAR(flat.timeToTarget, 0.1, 1e-12);
+    setTimeToTarget(flat, 1e-6);
+    EXPECT_FALSE(std::isfinite(flat.timeToTarget));
     std::vector<MethodSummary> both = {slow, fast};
     EXPECT_EQ(rankByTimeToTarget(both).front(), 1u);
     EXPECT_NEAR(defaultTarget(both), 0.5 * (1.1 / 32.0 + 1.1 / 1024.0), 1e-12);
