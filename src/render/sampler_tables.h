@@ -1,5 +1,5 @@
 // Host side of the sampler table (shaders/shared/sampler_tables.h): its contents, generated at
-// start-up (a prime sieve and the void-and-cluster mask, a fraction of a second, once per
+// start-up (a prime sieve and the void-and-cluster mask, about 60 ms, once per
 // process), and the GPU buffer that the table-driven samplers read.
 #pragma once
 #include <cstdint>
