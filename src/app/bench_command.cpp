@@ -79,13 +79,10 @@ void renderFrame(Timed& timed, uint32_t spp, bool record) {
 std::string benchHelp() { return helpText(benchSpec()); }
 
 int runBenchCommand(const std::vector<std::string>& args) {
-    ParsedArgs parsed = parseArgs(benchSpec(), args);
-    if (parsed.has("--help")) {
-        std::fputs(benchHelp().c_str(), stdout);
-        return 0;
-    }
-    if (parsed.positional.size() != 1)
-        throw UsageError("bench needs exactly one scene file (see wavefront bench --help)");
+    std::optional<ParsedArgs> maybeParsed = parseSceneCommand(benchSpec(), args);
+    if (!maybeParsed)
+        return 0; // --help
+    const ParsedArgs& parsed = *maybeParsed;
     const uint32_t frames = parsed.uintValue("--frames", 10, 1, 100000);
     const uint32_t warmup = parsed.uintValue("--warmup", 2, 0, 100000);
     const uint32_t spp = parsed.uintValue("--spp", 1, 1, 1u << 16);

@@ -1,6 +1,7 @@
 #include "app/cli.h"
 
 #include <cerrno>
+#include <cstdio>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -103,6 +104,19 @@ ParsedArgs parseArgs(const CommandSpec& spec, const std::vector<std::string>& ar
             parsed.set(option->name, args[++i]);
         }
     }
+    return parsed;
+}
+
+std::optional<ParsedArgs> parseSceneCommand(const CommandSpec& spec,
+                                            const std::vector<std::string>& args) {
+    ParsedArgs parsed = parseArgs(spec, args);
+    if (parsed.has("--help")) {
+        std::fputs(helpText(spec).c_str(), stdout);
+        return std::nullopt;
+    }
+    if (parsed.positional.size() != 1)
+        throw UsageError(spec.name + " needs exactly one scene file (see wavefront " + spec.name +
+                         " --help)");
     return parsed;
 }
 

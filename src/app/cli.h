@@ -48,4 +48,9 @@ private:
 ParsedArgs parseArgs(const CommandSpec& spec, const std::vector<std::string>& args);
 std::string helpText(const CommandSpec& spec);
 
+// The start every scene command shares: parses, prints help and returns nullopt for --help,
+// and insists on exactly one scene file.
+std::optional<ParsedArgs> parseSceneCommand(const CommandSpec& spec,
+                                            const std::vector<std::string>& args);
+
 } // namespace wf

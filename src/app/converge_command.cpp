@@ -123,13 +123,10 @@ void parseCrop(const ParsedArgs& parsed, ConvergenceInfo& info) {
 std::string convergeHelp() { return helpText(convergeSpec()); }
 
 int runConvergeCommand(const std::vector<std::string>& args) {
-    ParsedArgs parsed = parseArgs(convergeSpec(), args);
-    if (parsed.has("--help")) {
-        std::fputs(convergeHelp().c_str(), stdout);
-        return 0;
-    }
-    if (parsed.positional.size() != 1)
-        throw UsageError("converge needs exactly one scene file (see wavefront converge --help)");
+    std::optional<ParsedArgs> maybeParsed = parseSceneCommand(convergeSpec(), args);
+    if (!maybeParsed)
+        return 0; // --help
+    const ParsedArgs& parsed = *maybeParsed;
     const auto dir = parsed.value("--output");
     if (!dir || dir->empty())
         throw UsageError("converge needs -o DIR (see wavefront converge --help)");

@@ -151,13 +151,10 @@ void printVerbose(const PreparedScene& scene, const WavefrontRenderer& renderer,
 std::string renderHelp() { return helpText(renderSpec()); }
 
 int runRenderCommand(const std::vector<std::string>& args) {
-    ParsedArgs parsed = parseArgs(renderSpec(), args);
-    if (parsed.has("--help")) {
-        std::fputs(renderHelp().c_str(), stdout);
-        return 0;
-    }
-    if (parsed.positional.size() != 1)
-        throw UsageError("render needs exactly one scene file (see wavefront render --help)");
+    std::optional<ParsedArgs> maybeParsed = parseSceneCommand(renderSpec(), args);
+    if (!maybeParsed)
+        return 0; // --help
+    const ParsedArgs& parsed = *maybeParsed;
     auto output = parsed.value("--output");
     if (!output || output->empty())
         throw UsageError("render needs -o OUT.exr (see wavefront render --help)");
