@@ -21,18 +21,18 @@ uint alphaHash(uvec4 v) {
 }
 
 bool wfAlphaPasses(uint triangle, float b1, float b2, vec3 o, vec3 d) {
-    uint material = triangles[triangle].material;
-    uint flags = materials[material].flags;
+    uint material = triangleAt(triangle).material;
+    uint flags = materialAt(material).flags;
     if ((flags & (WF_MATERIAL_ALPHA_MASK | WF_MATERIAL_ALPHA_BLEND)) == 0u)
         return true;
-    float alpha = materials[material].baseColor.a;
+    float alpha = materialAt(material).baseColor.a;
 #if WF_HAS_TEXTURES
-    uint baseTexture = materials[material].baseColorTexture;
+    uint baseTexture = materialAt(material).baseColorTexture;
     if (baseTexture != WF_NO_TEXTURE)
         alpha *= sampleTriangleTexture(baseTexture, triangle, b1, b2).a;
 #endif
     if ((flags & WF_MATERIAL_ALPHA_MASK) != 0u)
-        return alpha >= materials[material].alphaCutoff;
+        return alpha >= materialAt(material).alphaCutoff;
     uvec3 ob = floatBitsToUint(o) ^ (floatBitsToUint(d) * 0x9e3779b9u);
     uint h = alphaHash(uvec4(ob, triangle));
     return float(h >> 8) * (1.0 / 16777216.0) < alpha;

@@ -6,20 +6,7 @@
 #include "render_types.h"
 #include "light_types.h"
 
-layout(std430, binding = WF_BINDING_TRIANGLES) readonly buffer TriangleBuffer {
-    Triangle triangles[];
-};
-layout(std430, binding = WF_BINDING_BVH_NODES) readonly buffer BvhNodeBuffer {
-    BvhNode bvhNodes[];
-};
-layout(std430, binding = WF_BINDING_MATERIALS) readonly buffer MaterialBuffer {
-    Material materials[];
-};
-#if WF_HAS_EMITTERS
-layout(std430, binding = WF_BINDING_EMITTERS) readonly buffer EmitterBuffer {
-    Emitter emitters[];
-};
-#endif
+#include "scene_tables.glsl"
 #if WF_HAS_LIGHTS
 layout(std430, binding = WF_BINDING_LIGHTS) readonly buffer LightBuffer {
     PunctualLight lights[]; // sphere lights first

@@ -34,7 +34,7 @@ struct LightSample {
 uint chooseEmitter(float u) {
     float scaled = u * float(params.emitterCount);
     uint slot = min(uint(scaled), params.emitterCount - 1u);
-    return (scaled - float(slot)) < emitters[slot].aliasProb ? slot : emitters[slot].alias;
+    return (scaled - float(slot)) < emitterAt(slot).aliasProb ? slot : emitterAt(slot).alias;
 }
 
 LightSample noLight(vec3 p) {
@@ -55,7 +55,7 @@ vec3 pointOutsideScene(vec3 p, vec3 direction) {
 #if WF_HAS_TRIANGLE_EMITTERS
 // Density of reaching triangle `tri` from `from` along a direction hitting it at distance t.
 float triangleLightPdf(uint emitter, Triangle tri, vec3 from, float t, float cosLight) {
-    float pmf = emitters[emitter].pmf;
+    float pmf = emitterAt(emitter).pmf;
 #if WF_TRIANGLE_SOLID_ANGLE
     float omega = triangleSolidAngle(from, tri.p0, tri.p1, tri.p2);
     if (useSphericalTriangleSampling(omega))
@@ -78,8 +78,8 @@ vec2 planeBarycentrics(Triangle tri, vec3 q) {
 }
 
 LightSample sampleTriangleLight(uint emitter, uint triangleIndex, vec2 u, vec3 p) {
-    Triangle tri = triangles[triangleIndex];
-    Material material = materials[tri.material];
+    Triangle tri = triangleAt(triangleIndex);
+    Material material = materialAt(tri.material);
     vec3 cross12 = cross(tri.p1 - tri.p0, tri.p2 - tri.p0);
     vec3 nl = normalize(cross12);
     vec2 b = sampleUniformTriangle(u);
@@ -115,7 +115,7 @@ LightSample sampleTriangleLight(uint emitter, uint triangleIndex, vec2 u, vec3 p
         return noLight(p); // the back of a one-sided emitter: no light this way
     LightSample s;
     s.direction = direction;
-    s.pdf = solidAngle ? emitters[emitter].pmf / omega
+    s.pdf = solidAngle ? emitterAt(emitter).pmf / omega
                        : triangleLightPdf(emitter, tri, p, distance, cosLight);
     s.radiance = surfaceEmission(triangleIndex, material, b.x, b.y); // textured emission too
     vec3 qError = triangleSpawnError(tri.p0, tri.p1, tri.p2, b.x, b.y);
@@ -135,7 +135,7 @@ bool sphereUsesCone(PunctualLight light, vec3 from) {
 }
 
 float sphereLightPdf(uint emitter, PunctualLight light, vec3 from, float t, float cosLight) {
-    float pmf = emitters[emitter].pmf;
+    float pmf = emitterAt(emitter).pmf;
     if (sphereUsesCone(light, from))
         return pmf / (2.0 * WF_PI *
                       sphereConeOneMinusCos(light.radius, length(light.position - from)));
@@ -179,7 +179,7 @@ LightSample sampleSphereLight(uint emitter, PunctualLight light, vec2 u, vec3 p)
 #if WF_HAS_DELTA_LIGHTS
 LightSample sampleDeltaLight(uint emitter, PunctualLight light, vec3 p) {
     LightSample s;
-    s.pdf = emitters[emitter].pmf;
+    s.pdf = emitterAt(emitter).pmf;
     s.isDelta = true;
     if (light.type == WF_LIGHT_DIRECTIONAL) {
         s.direction = -light.direction;
@@ -210,7 +210,7 @@ float environmentLightPdf(vec3 direction) {
     uint texel = environmentTexel(direction);
     float pdfUV = environmentAlias[texel].pmf *
                   float(params.environmentWidth * params.environmentHeight);
-    return emitters[params.environmentEmitter].pmf * equirectSolidAnglePdf(pdfUV, direction);
+    return emitterAt(params.environmentEmitter).pmf * equirectSolidAnglePdf(pdfUV, direction);
 }
 
 LightSample sampleEnvironment(float uTexel, vec2 u, vec3 p) {
@@ -233,7 +233,7 @@ LightSample sampleEnvironment(float uTexel, vec2 u, vec3 p) {
 
 LightSample sampleLight(float uChoice, vec2 uPoint, float uExtra, vec3 p) {
     uint emitter = chooseEmitter(uChoice);
-    uint source = emitters[emitter].source;
+    uint source = emitterAt(emitter).source;
     uint index = source & WF_EMITTER_INDEX_MASK;
     uint kind = source & WF_EMITTER_KIND_MASK;
 #if WF_HAS_TRIANGLE_EMITTERS

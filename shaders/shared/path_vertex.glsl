@@ -115,7 +115,7 @@ void shadePathVertex(inout PathVertex v) {
         float lightPdf = 0.0;
 #if WF_HAS_TRIANGLE_EMITTERS && WF_LIGHT_SAMPLING != 0
         if (v.previousPdf > 0.0 && surface.emitter != WF_NO_EMITTER)
-            lightPdf = triangleLightPdf(surface.emitter, triangles[v.hit.w], v.origin, t,
+            lightPdf = triangleLightPdf(surface.emitter, triangleAt(v.hit.w), v.origin, t,
                                         abs(dot(surface.ng, wo)));
 #endif
         v.radiance += clampContribution(v.beta * surface.emission *

@@ -73,8 +73,17 @@ struct Emitter {
     uint alias;      // slot taken when the threshold test fails
 };
 
+// The tables above are read in shaders as RGBA32UI texels (scene_tables.glsl), so each struct
+// is a whole number of 16-byte texels.
+#define WF_TRIANGLE_TEXELS 3u
+#define WF_BVH_NODE_TEXELS 2u
+#define WF_MATERIAL_TEXELS 6u
+
 #ifdef __cplusplus
 } // namespace wf::gpu_types
+static_assert(sizeof(wf::gpu_types::Triangle) == 16 * WF_TRIANGLE_TEXELS);
+static_assert(sizeof(wf::gpu_types::BvhNode) == 16 * WF_BVH_NODE_TEXELS);
+static_assert(sizeof(wf::gpu_types::Material) == 16 * WF_MATERIAL_TEXELS);
 static_assert(sizeof(wf::gpu_types::Triangle) == 48);
 static_assert(offsetof(wf::gpu_types::Triangle, p1) == 16);
 static_assert(offsetof(wf::gpu_types::Triangle, emitter) == 28);

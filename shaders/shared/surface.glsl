@@ -76,8 +76,8 @@ vec3 surfaceEmission(uint triangleIndex, Material material, float b1, float b2) 
 }
 
 SurfaceHit loadSurface(uint triangleIndex, float b1, float b2, vec3 wo) {
-    Triangle tri = triangles[triangleIndex];
-    Material material = materials[tri.material];
+    Triangle tri = triangleAt(triangleIndex);
+    Material material = materialAt(tri.material);
     SurfaceHit s;
     s.p = triangleHitPoint(tri.p0, tri.p1, tri.p2, b1, b2);
     s.pError = triangleSpawnError(tri.p0, tri.p1, tri.p2, b1, b2);

@@ -7,17 +7,39 @@
 
 namespace wf {
 
-DescriptorTable::DescriptorTable(const Context& context,
-                                 const std::vector<std::pair<uint32_t, const Buffer*>>& bindings)
+namespace {
+
+VkDescriptorType descriptorType(BufferAccess access) {
+    return access == BufferAccess::UintTexels ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER
+                                              : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+}
+
+constexpr VkDeviceSize kTexelBytes = 16; // RGBA32UI
+
+} // namespace
+
+DescriptorTable::DescriptorTable(const Context& context, const DescriptorBindings& bindings)
     : device_(context.device()) {
+    try {
+        create(context, bindings);
+    } catch (...) {
+        release();
+        throw;
+    }
+}
+
+void DescriptorTable::create(const Context& context, const DescriptorBindings& bindings) {
     std::vector<VkDescriptorSetLayoutBinding> layoutBindings;
-    for (const auto& [binding, buffer] : bindings) {
-        VkDescriptorSetLayoutBinding entry{};
-        entry.binding = binding;
-        entry.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-        entry.descriptorCount = 1;
-        entry.stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
-        layoutBindings.push_back(entry);
+    uint32_t storageCount = 0;
+    uint32_t texelCount = 0;
+    for (const DescriptorBinding& entry : bindings) {
+        VkDescriptorSetLayoutBinding layoutBinding{};
+        layoutBinding.binding = entry.binding;
+        layoutBinding.descriptorType = descriptorType(entry.access);
+        layoutBinding.descriptorCount = 1;
+        layoutBinding.stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
+        layoutBindings.push_back(layoutBinding);
+        ++(entry.access == BufferAccess::UintTexels ? texelCount : storageCount);
     }
     VkDescriptorSetLayoutCreateInfo layoutInfo{
         VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
@@ -25,12 +47,15 @@ DescriptorTable::DescriptorTable(const Context& context,
     layoutInfo.pBindings = layoutBindings.data();
     VK_CHECK(vkCreateDescriptorSetLayout(device_, &layoutInfo, nullptr, &layout_));
 
-    VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                                  static_cast<uint32_t>(bindings.size())};
+    std::vector<VkDescriptorPoolSize> poolSizes;
+    if (storageCount)
+        poolSizes.push_back({VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, storageCount});
+    if (texelCount)
+        poolSizes.push_back({VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, texelCount});
     VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     poolInfo.maxSets = 1;
-    poolInfo.poolSizeCount = 1;
-    poolInfo.pPoolSizes = &poolSize;
+    poolInfo.poolSizeCount = static_cast<uint32_t>(poolSizes.size());
+    poolInfo.pPoolSizes = poolSizes.data();
     VK_CHECK(vkCreateDescriptorPool(device_, &poolInfo, nullptr, &pool_));
 
     VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
@@ -39,24 +64,52 @@ DescriptorTable::DescriptorTable(const Context& context,
     allocInfo.pSetLayouts = &layout_;
     VK_CHECK(vkAllocateDescriptorSets(device_, &allocInfo, &set_));
 
+    const uint64_t maxTexels = context.properties().limits.maxTexelBufferElements;
     std::vector<VkDescriptorBufferInfo> infos(bindings.size());
     std::vector<VkWriteDescriptorSet> writes(bindings.size());
+    views_.reserve(bindings.size());
     for (size_t i = 0; i < bindings.size(); ++i) {
-        infos[i] = {bindings[i].second->handle(), 0, VK_WHOLE_SIZE};
+        const DescriptorBinding& entry = bindings[i];
         writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
         writes[i].dstSet = set_;
-        writes[i].dstBinding = bindings[i].first;
+        writes[i].dstBinding = entry.binding;
         writes[i].descriptorCount = 1;
-        writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-        writes[i].pBufferInfo = &infos[i];
+        writes[i].descriptorType = descriptorType(entry.access);
+        if (entry.access == BufferAccess::UintTexels) {
+            const VkDeviceSize texels = entry.buffer->size() / kTexelBytes;
+            if (texels > maxTexels)
+                throw InputError("buffer '" + entry.buffer->name() + "' holds " +
+                                 std::to_string(texels) + " texels, over the device's limit of " +
+                                 std::to_string(maxTexels));
+            VkBufferViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
+            viewInfo.buffer = entry.buffer->handle();
+            viewInfo.format = VK_FORMAT_R32G32B32A32_UINT;
+            viewInfo.range = texels * kTexelBytes;
+            VkBufferView view = VK_NULL_HANDLE;
+            VK_CHECK(vkCreateBufferView(device_, &viewInfo, nullptr, &view));
+            views_.push_back(view);
+            writes[i].pTexelBufferView = &views_.back();
+        } else {
+            infos[i] = {entry.buffer->handle(), 0, VK_WHOLE_SIZE};
+            writes[i].pBufferInfo = &infos[i];
+        }
     }
     vkUpdateDescriptorSets(device_, static_cast<uint32_t>(writes.size()), writes.data(), 0,
                            nullptr);
 }
 
-DescriptorTable::~DescriptorTable() {
-    vkDestroyDescriptorPool(device_, pool_, nullptr);
-    vkDestroyDescriptorSetLayout(device_, layout_, nullptr);
+DescriptorTable::~DescriptorTable() { release(); }
+
+void DescriptorTable::release() {
+    for (VkBufferView view : views_)
+        vkDestroyBufferView(device_, view, nullptr);
+    views_.clear();
+    if (pool_)
+        vkDestroyDescriptorPool(device_, pool_, nullptr);
+    if (layout_)
+        vkDestroyDescriptorSetLayout(device_, layout_, nullptr);
+    pool_ = VK_NULL_HANDLE;
+    layout_ = VK_NULL_HANDLE;
 }
 
 ComputeProgram::ComputeProgram(const Context& context, std::string name,

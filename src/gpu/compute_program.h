@@ -14,11 +14,23 @@ namespace wf {
 class Buffer;
 class Context;
 
-// Storage buffers by binding number; only the bindings a scene needs are present.
+// How a shader reads a buffer. Read-only tables that passes fetch at scattered indices are
+// bound as uniform texel buffers of RGBA32UI (GLSL usamplerBuffer): lavapipe turns a texel
+// fetch into one vector gather but a storage-buffer load into a branchy loop over the lanes,
+// 2.5-3x slower per vec4 (docs/architecture.md, "Reading memory on lavapipe").
+enum class BufferAccess { Storage, UintTexels };
+
+struct DescriptorBinding {
+    uint32_t binding;
+    const Buffer* buffer;
+    BufferAccess access = BufferAccess::Storage;
+};
+using DescriptorBindings = std::vector<DescriptorBinding>;
+
+// Buffers by binding number; only the bindings a scene needs are present.
 class DescriptorTable {
 public:
-    DescriptorTable(const Context& context,
-                    const std::vector<std::pair<uint32_t, const Buffer*>>& bindings);
+    DescriptorTable(const Context& context, const DescriptorBindings& bindings);
     ~DescriptorTable();
     DescriptorTable(const DescriptorTable&) = delete;
     DescriptorTable& operator=(const DescriptorTable&) = delete;
@@ -27,10 +39,14 @@ public:
     VkDescriptorSet set() const { return set_; }
 
 private:
+    void create(const Context& context, const DescriptorBindings& bindings);
+    void release();
+
     VkDevice device_;
     VkDescriptorSetLayout layout_ = VK_NULL_HANDLE;
     VkDescriptorPool pool_ = VK_NULL_HANDLE;
     VkDescriptorSet set_ = VK_NULL_HANDLE;
+    std::vector<VkBufferView> views_; // one per texel-buffer binding
 };
 
 class ComputeProgram {

@@ -28,21 +28,21 @@ PathBuffers::PathBuffers(const Context& context, uint32_t pathCapacity, uint32_t
 }
 
 void PathBuffers::appendBindings(
-    std::vector<std::pair<uint32_t, const Buffer*>>& bindings) const {
-    bindings.emplace_back(WF_BINDING_PARAMS, &params);
-    bindings.emplace_back(WF_BINDING_COUNTERS, &counters);
-    bindings.emplace_back(WF_BINDING_FILM, &film);
-    bindings.emplace_back(WF_BINDING_RAY_ORIGIN, &rayOrigin);
-    bindings.emplace_back(WF_BINDING_RAY_DIRECTION, &rayDirection);
-    bindings.emplace_back(WF_BINDING_THROUGHPUT, &throughput);
-    bindings.emplace_back(WF_BINDING_RADIANCE, &radiance);
-    bindings.emplace_back(WF_BINDING_HITS, &hits);
-    bindings.emplace_back(WF_BINDING_RAY_QUEUES, &rayQueues);
+    DescriptorBindings& bindings) const {
+    bindings.push_back({WF_BINDING_PARAMS, &params});
+    bindings.push_back({WF_BINDING_COUNTERS, &counters});
+    bindings.push_back({WF_BINDING_FILM, &film});
+    bindings.push_back({WF_BINDING_RAY_ORIGIN, &rayOrigin});
+    bindings.push_back({WF_BINDING_RAY_DIRECTION, &rayDirection});
+    bindings.push_back({WF_BINDING_THROUGHPUT, &throughput});
+    bindings.push_back({WF_BINDING_RADIANCE, &radiance});
+    bindings.push_back({WF_BINDING_HITS, &hits});
+    bindings.push_back({WF_BINDING_RAY_QUEUES, &rayQueues});
     if (shadowQueue) {
-        bindings.emplace_back(WF_BINDING_SHADOW_ORIGIN, &shadowOrigin);
-        bindings.emplace_back(WF_BINDING_SHADOW_DIRECTION, &shadowDirection);
-        bindings.emplace_back(WF_BINDING_SHADOW_RADIANCE, &shadowRadiance);
-        bindings.emplace_back(WF_BINDING_SHADOW_QUEUE, &shadowQueue);
+        bindings.push_back({WF_BINDING_SHADOW_ORIGIN, &shadowOrigin});
+        bindings.push_back({WF_BINDING_SHADOW_DIRECTION, &shadowDirection});
+        bindings.push_back({WF_BINDING_SHADOW_RADIANCE, &shadowRadiance});
+        bindings.push_back({WF_BINDING_SHADOW_QUEUE, &shadowQueue});
     }
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "gpu/buffer.h"
+#include "gpu/compute_program.h"
 
 namespace wf {
 
@@ -16,7 +17,7 @@ struct PathBuffers {
     PathBuffers(const Context& context, uint32_t pathCapacity, uint32_t pixelCount,
                 bool withShadowRays);
 
-    void appendBindings(std::vector<std::pair<uint32_t, const Buffer*>>& bindings) const;
+    void appendBindings(DescriptorBindings& bindings) const;
     void appendMemoryReport(std::vector<std::pair<std::string, uint64_t>>& report) const;
 
     Buffer params;

@@ -57,18 +57,19 @@ SceneBuffers::SceneBuffers(const Context& context, const PreparedScene& scene,
 }
 
 void SceneBuffers::appendBindings(
-    std::vector<std::pair<uint32_t, const Buffer*>>& bindings) const {
-    bindings.emplace_back(WF_BINDING_TRIANGLES, &triangles_);
-    bindings.emplace_back(WF_BINDING_BVH_NODES, &nodes_);
-    bindings.emplace_back(WF_BINDING_MATERIALS, &materials_);
+    DescriptorBindings& bindings) const {
+    // The tables every ray and shading point reads at scattered indices (compute_program.h).
+    bindings.push_back({WF_BINDING_TRIANGLES, &triangles_, BufferAccess::UintTexels});
+    bindings.push_back({WF_BINDING_BVH_NODES, &nodes_, BufferAccess::UintTexels});
+    bindings.push_back({WF_BINDING_MATERIALS, &materials_, BufferAccess::UintTexels});
     if (emitters_)
-        bindings.emplace_back(WF_BINDING_EMITTERS, &emitters_);
+        bindings.push_back({WF_BINDING_EMITTERS, &emitters_, BufferAccess::UintTexels});
     if (lights_)
-        bindings.emplace_back(WF_BINDING_LIGHTS, &lights_);
+        bindings.push_back({WF_BINDING_LIGHTS, &lights_});
     if (environment_)
-        bindings.emplace_back(WF_BINDING_ENVIRONMENT, &environment_);
+        bindings.push_back({WF_BINDING_ENVIRONMENT, &environment_});
     if (environmentAlias_)
-        bindings.emplace_back(WF_BINDING_ENVIRONMENT_ALIAS, &environmentAlias_);
+        bindings.push_back({WF_BINDING_ENVIRONMENT_ALIAS, &environmentAlias_});
     surface_.appendBindings(bindings);
 }
 

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "gpu/buffer.h"
+#include "gpu/compute_program.h"
 #include "scene/bvh_builder.h"
 #include "scene/light_table.h"
 #include "render/shader_variant.h"
@@ -41,7 +42,7 @@ public:
     bool hasLights() const { return static_cast<bool>(lights_); }
     bool hasEnvironment() const { return static_cast<bool>(environment_); }
     // (binding, buffer) pairs for the descriptor table.
-    void appendBindings(std::vector<std::pair<uint32_t, const Buffer*>>& bindings) const;
+    void appendBindings(DescriptorBindings& bindings) const;
     void appendMemoryReport(std::vector<std::pair<std::string, uint64_t>>& report) const;
 
 private:

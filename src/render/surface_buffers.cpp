@@ -167,16 +167,16 @@ SurfaceBuffers::SurfaceBuffers(const Context& context, const SurfaceData& surfac
 }
 
 void SurfaceBuffers::appendBindings(
-    std::vector<std::pair<uint32_t, const Buffer*>>& bindings) const {
-    const std::pair<uint32_t, const Buffer*> all[] = {
+    DescriptorBindings& bindings) const {
+    const DescriptorBinding all[] = {
         {WF_BINDING_NORMALS, &normals_},         {WF_BINDING_TANGENTS, &tangents_},
         {WF_BINDING_TEXCOORDS0, &uv0_},          {WF_BINDING_TEXCOORDS1, &uv1_},
         {WF_BINDING_TEXTURE_REFS, &textureRefs_}};
     for (const auto& binding : all)
-        if (*binding.second)
+        if (*binding.buffer)
             bindings.push_back(binding);
     for (size_t page = 0; page < texelPages_.size(); ++page)
-        bindings.emplace_back(WF_BINDING_TEXELS0 + uint32_t(page), &texelPages_[page]);
+        bindings.push_back({WF_BINDING_TEXELS0 + uint32_t(page), &texelPages_[page]});
 }
 
 void SurfaceBuffers::appendMemoryReport(

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "gpu/buffer.h"
+#include "gpu/compute_program.h"
 #include "scene/scene.h"
 
 namespace wf {
@@ -57,7 +58,7 @@ public:
     SurfaceBuffers(const Context& context, const SurfaceData& surface,
                    const SurfaceFeatures& features);
 
-    void appendBindings(std::vector<std::pair<uint32_t, const Buffer*>>& bindings) const;
+    void appendBindings(DescriptorBindings& bindings) const;
     void appendMemoryReport(std::vector<std::pair<std::string, uint64_t>>& report) const;
 
 private:

@@ -62,12 +62,12 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
     sceneBuffers_ = std::make_unique<SceneBuffers>(context, scene, variant_);
     pathBuffers_ = std::make_unique<PathBuffers>(context, pathCapacity_, pixelCount_,
                                                  variant_.nextEventEstimation);
-    std::vector<std::pair<uint32_t, const Buffer*>> bindings;
+    DescriptorBindings bindings;
     sceneBuffers_->appendBindings(bindings);
     pathBuffers_->appendBindings(bindings);
     if (samplerReadsTable(settings.sampler)) {
         samplerTable_ = std::make_unique<Buffer>(makeSamplerTableBuffer(context, setSize()));
-        bindings.emplace_back(WF_BINDING_SAMPLER_TABLES, samplerTable_.get());
+        bindings.push_back({WF_BINDING_SAMPLER_TABLES, samplerTable_.get()});
     }
     table_ = std::make_unique<DescriptorTable>(context, bindings);
     // One interval per depth for each of four passes, plus raygen and accumulate.

@@ -15,7 +15,7 @@ DisplayPass::DisplayPass(const Context& context, const ShaderCompiler& compiler,
                          DisplaySize outputSize)
     : filmSize_(filmSize), outputSize_(outputSize) {
     table_ = std::make_unique<DescriptorTable>(
-        context, std::vector<std::pair<uint32_t, const Buffer*>>{{0, &film}, {1, &output}});
+        context, DescriptorBindings{{0, &film}, {1, &output}});
     CompiledShader shader = compiler.compile("display.comp", {});
     program_ = std::make_unique<ComputeProgram>(context, "display", shader.spirv, *table_,
                                                 sizeof(DisplayConstants));

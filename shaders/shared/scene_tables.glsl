@@ -1,0 +1,48 @@
+// The scene tables every ray and shading point reads at scattered indices, bound as RGBA32UI
+// texel buffers (src/gpu/compute_program.h says why) and unpacked into the structs of
+// scene_types.h. Unused fields cost nothing: the compiler drops fetches whose texel is unread.
+layout(binding = WF_BINDING_TRIANGLES) uniform usamplerBuffer triangleTexels;
+layout(binding = WF_BINDING_BVH_NODES) uniform usamplerBuffer bvhNodeTexels;
+layout(binding = WF_BINDING_MATERIALS) uniform usamplerBuffer materialTexels;
+#if WF_HAS_EMITTERS
+layout(binding = WF_BINDING_EMITTERS) uniform usamplerBuffer emitterTexels;
+#endif
+
+uvec4 wfTexel(usamplerBuffer table, uint index) { return texelFetch(table, int(index)); }
+
+Triangle triangleAt(uint index) {
+    uint base = index * WF_TRIANGLE_TEXELS;
+    uvec4 a = wfTexel(triangleTexels, base);
+    uvec4 b = wfTexel(triangleTexels, base + 1u);
+    uvec4 c = wfTexel(triangleTexels, base + 2u);
+    return Triangle(uintBitsToFloat(a.xyz), a.w, uintBitsToFloat(b.xyz), b.w,
+                    uintBitsToFloat(c.xyz), c.w);
+}
+
+BvhNode bvhNodeAt(uint index) {
+    uint base = index * WF_BVH_NODE_TEXELS;
+    uvec4 a = wfTexel(bvhNodeTexels, base);
+    uvec4 b = wfTexel(bvhNodeTexels, base + 1u);
+    return BvhNode(uintBitsToFloat(a.xyz), a.w, uintBitsToFloat(b.xyz), b.w);
+}
+
+Material materialAt(uint index) {
+    uint base = index * WF_MATERIAL_TEXELS;
+    uvec4 t0 = wfTexel(materialTexels, base);
+    uvec4 t1 = wfTexel(materialTexels, base + 1u);
+    uvec4 t2 = wfTexel(materialTexels, base + 2u);
+    uvec4 t3 = wfTexel(materialTexels, base + 3u);
+    uvec4 t4 = wfTexel(materialTexels, base + 4u);
+    uvec4 t5 = wfTexel(materialTexels, base + 5u);
+    return Material(uintBitsToFloat(t0), uintBitsToFloat(t1.xyz), t1.w, uintBitsToFloat(t2.x),
+                    uintBitsToFloat(t2.y), uintBitsToFloat(t2.z), uintBitsToFloat(t2.w),
+                    uintBitsToFloat(t3.xyz), uintBitsToFloat(t3.w), uintBitsToFloat(t4.x),
+                    uintBitsToFloat(t4.y), t4.z, t4.w, t5.x, t5.y, t5.z, t5.w);
+}
+
+#if WF_HAS_EMITTERS
+Emitter emitterAt(uint index) {
+    uvec4 t = wfTexel(emitterTexels, index);
+    return Emitter(t.x, uintBitsToFloat(t.y), uintBitsToFloat(t.z), t.w);
+}
+#endif
