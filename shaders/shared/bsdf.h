@@ -42,6 +42,10 @@
 
 #include "microfacet.h"
 
+#ifndef WF_BSDF_DIFFUSE_ONLY
+#define WF_BSDF_DIFFUSE_ONLY 0
+#endif
+
 #ifdef __cplusplus
 namespace wf::gpu_types {
 using namespace glm;
@@ -244,7 +248,56 @@ WF_INLINE float bsdfPdfMirrored(BsdfParams m, BsdfLobes l, float pDiffuse, vec3 
            l.etaRel * l.etaRel * (-ci) / (denom * denom);
 }
 
+WF_INLINE bool bsdfFinite(vec3 v) {
+    return !any(isnan(v)) && !any(isinf(v));
+}
+
+// Scenes whose every material is Lambertian (metallic, specular and transmission all 0, which
+// no texture can raise) compile with WF_BSDF_DIFFUSE_ONLY, and bsdfEval, bsdfPdf, bsdfSample
+// and bsdfHasNonDelta become these: what the general model reduces to for such materials,
+// without its layer (tests/unit/test_bsdf.cpp compares the two on random materials).
+WF_INLINE bool diffuseOnlySameSide(vec3 wo, vec3 wi) {
+    return wo.z != 0.0f && wi.z != 0.0f && (wo.z > 0.0f) == (wi.z > 0.0f);
+}
+
+WF_INLINE vec3 diffuseOnlyEval(BsdfParams m, vec3 wo, vec3 wi) {
+    return diffuseOnlySameSide(wo, wi) ? clamp(m.baseColor, vec3(0.0f), vec3(1.0f)) * WF_INV_PI
+                                       : vec3(0.0f);
+}
+
+WF_INLINE float diffuseOnlyPdf(BsdfParams m, vec3 wo, vec3 wi) {
+    bool scatters = averageComponent(clamp(m.baseColor, vec3(0.0f), vec3(1.0f))) > 0.0f;
+    return scatters && diffuseOnlySameSide(wo, wi) ? cosineHemispherePdf(abs(wi.z)) : 0.0f;
+}
+
+WF_INLINE bool diffuseOnlyHasNonDelta(BsdfParams m) {
+    return maxComponent(clamp(m.baseColor, vec3(0.0f), vec3(1.0f))) > 0.0f;
+}
+
+WF_INLINE bool diffuseOnlySample(BsdfParams m, vec3 wo, vec2 u, WF_OUT(BsdfSample) s) {
+    s.wi = vec3(0.0f);
+    s.pdf = 0.0f;
+    s.weight = vec3(0.0f);
+    s.isDelta = false;
+    s.eta = 1.0f;
+    vec3 albedo = clamp(m.baseColor, vec3(0.0f), vec3(1.0f));
+    if (wo.z == 0.0f || !(averageComponent(albedo) > 0.0f)) {
+        return false;
+    }
+    vec3 wi = sampleCosineHemisphere(u);
+    s.pdf = cosineHemispherePdf(wi.z);
+    if (!(s.pdf > 0.0f)) {
+        return false;
+    }
+    s.weight = albedo * WF_INV_PI * (wi.z / s.pdf);
+    s.wi = vec3(wi.x, wi.y, wo.z < 0.0f ? -wi.z : wi.z);
+    return bsdfFinite(s.weight);
+}
+
 WF_INLINE vec3 bsdfEval(BsdfParams m, vec3 wo, vec3 wi) {
+#if WF_BSDF_DIFFUSE_ONLY
+    return diffuseOnlyEval(m, wo, wi);
+#endif
     if (wo.z == 0.0f || wi.z == 0.0f) {
         return vec3(0.0f);
     }
@@ -256,6 +309,9 @@ WF_INLINE vec3 bsdfEval(BsdfParams m, vec3 wo, vec3 wi) {
 }
 
 WF_INLINE float bsdfPdf(BsdfParams m, vec3 wo, vec3 wi) {
+#if WF_BSDF_DIFFUSE_ONLY
+    return diffuseOnlyPdf(m, wo, wi);
+#endif
     if (wo.z == 0.0f || wi.z == 0.0f) {
         return 0.0f;
     }
@@ -267,11 +323,10 @@ WF_INLINE float bsdfPdf(BsdfParams m, vec3 wo, vec3 wi) {
                            vec3(wo.x, wo.y, side * wo.z), vec3(wi.x, wi.y, side * wi.z));
 }
 
-WF_INLINE bool bsdfFinite(vec3 v) {
-    return !any(isnan(v)) && !any(isinf(v));
-}
-
 WF_INLINE bool bsdfSample(BsdfParams m, vec3 wo, float uLobe, vec2 u, WF_OUT(BsdfSample) s) {
+#if WF_BSDF_DIFFUSE_ONLY
+    return diffuseOnlySample(m, wo, u, s);
+#endif
     s.wi = vec3(0.0f);
     s.pdf = 0.0f;
     s.weight = vec3(0.0f);
@@ -337,6 +392,9 @@ WF_INLINE bool bsdfSample(BsdfParams m, vec3 wo, float uLobe, vec2 u, WF_OUT(Bsd
 
 // Whether some lobe has a density (NEE and MIS can work at this vertex).
 WF_INLINE bool bsdfHasNonDelta(BsdfParams m) {
+#if WF_BSDF_DIFFUSE_ONLY
+    return diffuseOnlyHasNonDelta(m);
+#endif
     m = bsdfSanitize(m);
     float albedo = maxComponent(m.baseColor);
     if ((1.0f - m.metallic) * (1.0f - m.transmission) * albedo > 0.0f) {

@@ -1,13 +1,12 @@
 // BVH traversal shared by the intersect/shadow passes (GLSL) and the CPU (src/scene/bvh_cpu.h),
 // so tests compare the GPU's own traversal against brute force.
 //
-// Node layout (scene_types.h, built by src/scene/bvh_builder.cpp): depth-first, node 0 is the
-// root, an interior node's left child is the next node and its right child `rightOrFirst`; a
-// leaf holds `count` > 0 triangles from `rightOrFirst`. There is always at least one node: an
-// empty scene gets a root with count 0 and an inverted box (lo > hi), which nothing hits.
+// Layout: BvhPair entries (scene_types.h, made by pairBvhNodes in src/scene/bvh_builder.cpp).
+// Traversal holds one child reference (scene_types.h): a leaf's triangle range, or a pair entry
+// whose two child boxes are tested together. The walk starts at entry 0.
 //
 // GLSL includers define, before including:
-//   WF_BVH_NODE(i)      an expression yielding BvhNode i (e.g. a storage-buffer element)
+//   WF_BVH_PAIR(i)      an expression yielding BvhPair i (e.g. a texel-buffer fetch)
 //   WF_BVH_TRIANGLE(i)  an expression yielding Triangle i
 //   WF_BVH_STACK_SIZE   optional, default 64; the builder keeps depth <= WF_BVH_STACK_SIZE - 1
 // With WF_HAS_ALPHA_MASK (GLSL only), every candidate hit must also pass
@@ -47,19 +46,20 @@ struct HitRecord {
 
 #ifdef __cplusplus
 struct BvhTraversal {
-    const BvhNode* nodes = nullptr;
+    const BvhPair* pairs = nullptr;
     const Triangle* triangles = nullptr;
-#ifndef WF_BVH_NODE
-#define WF_BVH_NODE(i) nodes[i]
+#ifndef WF_BVH_PAIR
+#define WF_BVH_PAIR(i) pairs[i]
 #define WF_BVH_TRIANGLE(i) triangles[i]
 #define WF_BVH_DEFAULT_ACCESSORS
 #endif
 #endif
 
-// An inverted root box marks the empty scene. Checked explicitly: an interior-looking root
-// with no children must never be descended, even by a ray the slab test lets through.
-WF_INLINE bool bvhIsEmpty() {
-    return !(WF_BVH_NODE(0u).lo.x <= WF_BVH_NODE(0u).hi.x);
+// Whether the ray meets child reference `child`'s box before tMax; entry distance in tEntry.
+WF_INLINE bool bvhChildHit(uint child, vec3 o, vec3 invDir, vec3 lo, vec3 hi, float tMax,
+                           WF_OUT(float) tEntry) {
+    bool boxHit = intersectBox(o, invDir, lo, hi, tMax, tEntry);
+    return child != WF_BVH_NO_CHILD && boxHit;
 }
 
 // Closest hit with t in (0, tMax). Ordered: the nearer child is visited first and the farther
@@ -70,21 +70,17 @@ WF_INLINE bool traceClosest(vec3 o, vec3 d, float tMax, WF_OUT(HitRecord) hit) {
     hit.b2 = 0.0f;
     hit.triangle = WF_NO_TRIANGLE;
     vec3 invDir = 1.0f / d;
-    float tRoot;
-    if (bvhIsEmpty() ||
-        !intersectBox(o, invDir, WF_BVH_NODE(0u).lo, WF_BVH_NODE(0u).hi, tMax, tRoot)) {
-        return false;
-    }
-    uint stackNode[WF_BVH_STACK_SIZE];
+    uint stackChild[WF_BVH_STACK_SIZE];
     float stackEntry[WF_BVH_STACK_SIZE];
     uint stackSize = 0u;
-    uint current = 0u;
+    uint current = 0u; // a reference to pair entry 0: the root's children
     bool haveCurrent = true;
     while (haveCurrent) {
-        BvhNode node = WF_BVH_NODE(current);
         haveCurrent = false;
-        if (node.count > 0u) {
-            for (uint i = node.rightOrFirst; i < node.rightOrFirst + node.count; ++i) {
+        uint index = current >> WF_BVH_COUNT_BITS;
+        uint count = current & WF_BVH_MAX_LEAF_COUNT;
+        if (count > 0u) {
+            for (uint i = index; i < index + count; ++i) {
                 Triangle tri = WF_BVH_TRIANGLE(i);
                 float t;
                 float b1;
@@ -101,34 +97,31 @@ WF_INLINE bool traceClosest(vec3 o, vec3 d, float tMax, WF_OUT(HitRecord) hit) {
                 }
             }
         } else {
-            uint left = current + 1u;
-            uint right = node.rightOrFirst;
-            float tLeft;
-            float tRight;
-            bool hitLeft =
-                intersectBox(o, invDir, WF_BVH_NODE(left).lo, WF_BVH_NODE(left).hi, hit.t, tLeft);
-            bool hitRight = intersectBox(o, invDir, WF_BVH_NODE(right).lo, WF_BVH_NODE(right).hi,
-                                         hit.t, tRight);
-            if (hitLeft && hitRight) {
-                bool leftFirst = tLeft <= tRight;
-                current = leftFirst ? left : right;
+            BvhPair pair = WF_BVH_PAIR(index);
+            float t0;
+            float t1;
+            bool hit0 = bvhChildHit(pair.child0, o, invDir, pair.lo0, pair.hi0, hit.t, t0);
+            bool hit1 = bvhChildHit(pair.child1, o, invDir, pair.lo1, pair.hi1, hit.t, t1);
+            if (hit0 && hit1) {
+                bool firstNear = t0 <= t1;
+                current = firstNear ? pair.child0 : pair.child1;
                 haveCurrent = true;
                 // The builder bounds the depth, so this only guards against a foreign tree:
                 // dropping a subtree is wrong but cannot write out of bounds.
                 if (stackSize < uint(WF_BVH_STACK_SIZE)) {
-                    stackNode[stackSize] = leftFirst ? right : left;
-                    stackEntry[stackSize] = leftFirst ? tRight : tLeft;
+                    stackChild[stackSize] = firstNear ? pair.child1 : pair.child0;
+                    stackEntry[stackSize] = firstNear ? t1 : t0;
                     ++stackSize;
                 }
-            } else if (hitLeft || hitRight) {
-                current = hitLeft ? left : right;
+            } else if (hit0 || hit1) {
+                current = hit0 ? pair.child0 : pair.child1;
                 haveCurrent = true;
             }
         }
         while (!haveCurrent && stackSize > 0u) {
             --stackSize;
             if (stackEntry[stackSize] <= hit.t) {
-                current = stackNode[stackSize];
+                current = stackChild[stackSize];
                 haveCurrent = true;
             }
         }
@@ -139,20 +132,16 @@ WF_INLINE bool traceClosest(vec3 o, vec3 d, float tMax, WF_OUT(HitRecord) hit) {
 // Any hit with t in (0, tMax), for shadow rays: order does not matter, the first hit ends it.
 WF_INLINE bool traceAny(vec3 o, vec3 d, float tMax) {
     vec3 invDir = 1.0f / d;
-    float tEntry;
-    if (bvhIsEmpty() ||
-        !intersectBox(o, invDir, WF_BVH_NODE(0u).lo, WF_BVH_NODE(0u).hi, tMax, tEntry)) {
-        return false;
-    }
-    uint stackNode[WF_BVH_STACK_SIZE];
+    uint stackChild[WF_BVH_STACK_SIZE];
     uint stackSize = 0u;
     uint current = 0u;
     bool haveCurrent = true;
     while (haveCurrent) {
-        BvhNode node = WF_BVH_NODE(current);
         haveCurrent = false;
-        if (node.count > 0u) {
-            for (uint i = node.rightOrFirst; i < node.rightOrFirst + node.count; ++i) {
+        uint index = current >> WF_BVH_COUNT_BITS;
+        uint count = current & WF_BVH_MAX_LEAF_COUNT;
+        if (count > 0u) {
+            for (uint i = index; i < index + count; ++i) {
                 Triangle tri = WF_BVH_TRIANGLE(i);
                 float t;
                 float b1;
@@ -166,24 +155,23 @@ WF_INLINE bool traceAny(vec3 o, vec3 d, float tMax) {
                 }
             }
         } else {
-            uint left = current + 1u;
-            uint right = node.rightOrFirst;
-            bool hitLeft =
-                intersectBox(o, invDir, WF_BVH_NODE(left).lo, WF_BVH_NODE(left).hi, tMax, tEntry);
-            bool hitRight =
-                intersectBox(o, invDir, WF_BVH_NODE(right).lo, WF_BVH_NODE(right).hi, tMax, tEntry);
-            if (hitLeft || hitRight) {
-                current = hitLeft ? left : right;
+            BvhPair pair = WF_BVH_PAIR(index);
+            float t0;
+            float t1;
+            bool hit0 = bvhChildHit(pair.child0, o, invDir, pair.lo0, pair.hi0, tMax, t0);
+            bool hit1 = bvhChildHit(pair.child1, o, invDir, pair.lo1, pair.hi1, tMax, t1);
+            if (hit0 || hit1) {
+                current = hit0 ? pair.child0 : pair.child1;
                 haveCurrent = true;
-                if (hitLeft && hitRight && stackSize < uint(WF_BVH_STACK_SIZE)) {
-                    stackNode[stackSize] = right;
+                if (hit0 && hit1 && stackSize < uint(WF_BVH_STACK_SIZE)) {
+                    stackChild[stackSize] = pair.child1;
                     ++stackSize;
                 }
             }
         }
         if (!haveCurrent && stackSize > 0u) {
             --stackSize;
-            current = stackNode[stackSize];
+            current = stackChild[stackSize];
             haveCurrent = true;
         }
     }
@@ -194,7 +182,7 @@ WF_INLINE bool traceAny(vec3 o, vec3 d, float tMax) {
 }; // struct BvhTraversal
 } // namespace wf::gpu_types
 #ifdef WF_BVH_DEFAULT_ACCESSORS
-#undef WF_BVH_NODE
+#undef WF_BVH_PAIR
 #undef WF_BVH_TRIANGLE
 #undef WF_BVH_DEFAULT_ACCESSORS
 #endif

@@ -1,6 +1,6 @@
 // Ray queries against the whole scene (BVH of triangles plus the few sphere lights), shared by
 // the intersect and shadow passes and by the megakernel baseline.
-#define WF_BVH_NODE(i) bvhNodeAt(i)
+#define WF_BVH_PAIR(i) bvhPairAt(i)
 #define WF_BVH_TRIANGLE(i) triangleAt(i)
 #include "bvh_traverse.h"
 #include "light_sampling.h"

@@ -19,11 +19,14 @@ Triangle triangleAt(uint index) {
                     uintBitsToFloat(c.xyz), c.w);
 }
 
-BvhNode bvhNodeAt(uint index) {
-    uint base = index * WF_BVH_NODE_TEXELS;
+BvhPair bvhPairAt(uint index) {
+    uint base = index * WF_BVH_PAIR_TEXELS;
     uvec4 a = wfTexel(bvhNodeTexels, base);
     uvec4 b = wfTexel(bvhNodeTexels, base + 1u);
-    return BvhNode(uintBitsToFloat(a.xyz), a.w, uintBitsToFloat(b.xyz), b.w);
+    uvec4 c = wfTexel(bvhNodeTexels, base + 2u);
+    uvec4 d = wfTexel(bvhNodeTexels, base + 3u);
+    return BvhPair(uintBitsToFloat(a.xyz), a.w, uintBitsToFloat(b.xyz), b.w,
+                   uintBitsToFloat(c.xyz), c.w, uintBitsToFloat(d.xyz), d.w);
 }
 
 Material materialAt(uint index) {

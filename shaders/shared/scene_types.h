@@ -30,6 +30,28 @@ struct BvhNode {
     uint count;
 };
 
+// What traversal walks (GPU and CPU alike), made from the BvhNode tree by pairBvhNodes
+// (bvh_builder.h): one entry per interior node holding both children's boxes, so visiting a
+// node is one 64-byte fetch and reaching a leaf costs no fetch at all. A child reference packs
+// index << WF_BVH_COUNT_BITS | count: count 0 is the pair entry `index`, count > 0 a leaf of
+// `count` triangles from triangle `index`; WF_BVH_NO_CHILD is no child. One word per child
+// keeps the traversal stack to one word per entry. Entry 0 holds the root's children (or the
+// root itself when it is a leaf; no children for an empty scene).
+struct BvhPair {
+    vec3 lo0;
+    uint child0;
+    vec3 hi0;
+    uint pad0;
+    vec3 lo1;
+    uint child1;
+    vec3 hi1;
+    uint pad1;
+};
+
+#define WF_BVH_COUNT_BITS 5u
+#define WF_BVH_MAX_LEAF_COUNT 31u // (1 << WF_BVH_COUNT_BITS) - 1
+#define WF_BVH_NO_CHILD 0xffffffffu
+
 #define WF_MATERIAL_DOUBLE_SIDED 1u
 #define WF_MATERIAL_ALPHA_MASK 2u  // alpha below alphaCutoff is a hole, for every ray
 #define WF_MATERIAL_ALPHA_BLEND 4u // see the loader for how BLEND is approximated
@@ -76,13 +98,15 @@ struct Emitter {
 // The tables above are read in shaders as RGBA32UI texels (scene_tables.glsl), so each struct
 // is a whole number of 16-byte texels.
 #define WF_TRIANGLE_TEXELS 3u
-#define WF_BVH_NODE_TEXELS 2u
+#define WF_BVH_PAIR_TEXELS 4u
 #define WF_MATERIAL_TEXELS 6u
 
 #ifdef __cplusplus
 } // namespace wf::gpu_types
 static_assert(sizeof(wf::gpu_types::Triangle) == 16 * WF_TRIANGLE_TEXELS);
-static_assert(sizeof(wf::gpu_types::BvhNode) == 16 * WF_BVH_NODE_TEXELS);
+static_assert(sizeof(wf::gpu_types::BvhPair) == 16 * WF_BVH_PAIR_TEXELS);
+static_assert(offsetof(wf::gpu_types::BvhPair, child0) == 12);
+static_assert(offsetof(wf::gpu_types::BvhPair, child1) == 44);
 static_assert(sizeof(wf::gpu_types::Material) == 16 * WF_MATERIAL_TEXELS);
 static_assert(sizeof(wf::gpu_types::Triangle) == 48);
 static_assert(offsetof(wf::gpu_types::Triangle, p1) == 16);

@@ -15,6 +15,7 @@ PreparedScene prepareScene(Scene scene) {
     prepared.surface = std::move(scene.surface);
     tagTriangles(prepared.triangles); // the per-triangle arrays follow the BVH's order
     prepared.bvhStats = buildBvh(prepared.triangles, prepared.nodes);
+    prepared.bvhPairs = pairBvhNodes(prepared.nodes);
     followTriangleOrder(prepared.triangles, prepared.surface);
     prepared.bounds = sceneBounds(prepared.triangles, prepared.punctualLights);
     prepared.lights = buildLightTable(prepared.triangles, prepared.materials,
@@ -37,7 +38,7 @@ Buffer uploadTable(const Context& context, const char* name, const std::vector<T
 SceneBuffers::SceneBuffers(const Context& context, const PreparedScene& scene,
                            const ShaderVariant& variant)
     : triangles_(uploadTable(context, "triangles", scene.triangles)),
-      nodes_(uploadTable(context, "bvh nodes", scene.nodes)),
+      bvhPairs_(uploadTable(context, "bvh nodes", scene.bvhPairs)),
       materials_(uploadTable(context, "materials", scene.materials)) {
     if (variant.nextEventEstimation)
         emitters_ = uploadTable(context, "emitters", scene.lights.emitters);
@@ -60,7 +61,7 @@ void SceneBuffers::appendBindings(
     DescriptorBindings& bindings) const {
     // The tables every ray and shading point reads at scattered indices (compute_program.h).
     bindings.push_back({WF_BINDING_TRIANGLES, &triangles_, BufferAccess::UintTexels});
-    bindings.push_back({WF_BINDING_BVH_NODES, &nodes_, BufferAccess::UintTexels});
+    bindings.push_back({WF_BINDING_BVH_NODES, &bvhPairs_, BufferAccess::UintTexels});
     bindings.push_back({WF_BINDING_MATERIALS, &materials_, BufferAccess::UintTexels});
     if (emitters_)
         bindings.push_back({WF_BINDING_EMITTERS, &emitters_, BufferAccess::UintTexels});
@@ -75,7 +76,7 @@ void SceneBuffers::appendBindings(
 
 void SceneBuffers::appendMemoryReport(
     std::vector<std::pair<std::string, uint64_t>>& report) const {
-    for (const Buffer* buffer : {&triangles_, &nodes_, &materials_, &emitters_, &lights_,
+    for (const Buffer* buffer : {&triangles_, &bvhPairs_, &materials_, &emitters_, &lights_,
                                  &environment_, &environmentAlias_})
         if (*buffer)
             report.emplace_back(buffer->name(), buffer->size());

@@ -19,7 +19,8 @@ class Context;
 // The loaded scene after the BVH build (which reorders triangles) and the light table.
 struct PreparedScene {
     std::vector<Triangle> triangles;
-    std::vector<BvhNode> nodes;
+    std::vector<BvhNode> nodes; // the built tree, for statistics
+    std::vector<BvhPair> bvhPairs; // what traversal reads
     std::vector<Material> materials;
     LightTable lights;
     std::vector<PunctualLight> punctualLights; // spheres first, as the light table orders them
@@ -47,7 +48,7 @@ public:
 
 private:
     Buffer triangles_;
-    Buffer nodes_;
+    Buffer bvhPairs_;
     Buffer materials_;
     Buffer emitters_; // empty handle when the scene has no emitters
     Buffer lights_;   // punctual and sphere lights, if any

@@ -1,5 +1,7 @@
 #include "render/shader_variant.h"
 
+#include <algorithm>
+
 #include "errors.h"
 #include "render/scene_buffers.h"
 #include "render/wavefront_renderer.h"
@@ -19,6 +21,11 @@ ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& se
     variant.environment = lights.environmentEmitter != WF_NO_EMITTER;
     variant.triangleSolidAngle = settings.triangleSolidAngle;
     variant.sphereSolidAngle = settings.sphereSolidAngle;
+    // Texture factors multiply these, so zero factors stay zero whatever the textures hold.
+    variant.diffuseOnly = std::all_of(
+        scene.materials.begin(), scene.materials.end(), [](const Material& m) {
+            return m.metallic <= 0.0f && m.specular <= 0.0f && m.transmission <= 0.0f;
+        });
     variant.sampler = settings.sampler;
     variant.randomizeSamples = settings.randomizeSamples;
     return variant;
@@ -36,6 +43,7 @@ ShaderDefines ShaderVariant::defines() const {
             {"WF_HAS_ENVIRONMENT", flag(environment)},
             {"WF_TRIANGLE_SOLID_ANGLE", flag(triangleSolidAngle)},
             {"WF_SPHERE_SOLID_ANGLE", flag(sphereSolidAngle)},
+            {"WF_BSDF_DIFFUSE_ONLY", flag(diffuseOnly)},
             {"WF_HAS_TEXTURES", flag(surface.textures)},
             {"WF_TEXEL_PAGES", std::to_string(surface.texelPages)},
             {"WF_HAS_TEXCOORD1", flag(surface.texcoord1)},

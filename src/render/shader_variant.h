@@ -23,6 +23,7 @@ struct ShaderVariant {
     bool environment = false;
     bool triangleSolidAngle = true;
     bool sphereSolidAngle = true;
+    bool diffuseOnly = false;         // every material Lambertian: no specular layer code
     SurfaceFeatures surface;          // textures, normals, alpha: set by the renderer
     SamplerKind sampler = kDefaultSampler; // WF_SAMPLER (rng.h)
     bool randomizeSamples = true;     // WF_SAMPLER_RANDOMIZE: off for --no-randomize

@@ -10,7 +10,9 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <string>
 
+#include "errors.h"
 #include "shaders/shared/bvh_traverse.h"
 
 namespace wf {
@@ -273,7 +275,7 @@ BvhBuildStats buildBvh(std::vector<Triangle>& triangles, std::vector<BvhNode>& n
     nodes.clear();
     auto n = std::uint32_t(triangles.size());
     if (n == 0) {
-        // Inverted box: see bvhIsEmpty() in bvh_traverse.h.
+        // Inverted box and no triangles: pairBvhNodes gives it no children.
         nodes.push_back(BvhNode{vec3(FLT_MAX), 0, vec3(-FLT_MAX), 0});
         stats.nodeCount = 1;
         stats.buildSeconds = secondsSince(start);
@@ -299,6 +301,86 @@ BvhBuildStats buildBvh(std::vector<Triangle>& triangles, std::vector<BvhNode>& n
     stats.sahCost = sahCost(nodes, opts);
     stats.buildSeconds = secondsSince(start);
     return stats;
+}
+
+namespace {
+
+// Packs child references (BvhPair in scene_types.h); leaves over WF_BVH_MAX_LEAF_COUNT become
+// extra pair entries whose two children share the leaf's box and halve its range.
+class BvhPairer {
+public:
+    explicit BvhPairer(const std::vector<BvhNode>& nodes)
+        : nodes_(nodes), pairOf_(nodes.size(), WF_BVH_NO_CHILD) {}
+
+    std::vector<BvhPair> pair() {
+        const BvhNode& root = nodes_[0];
+        if (root.count > 0 || nodes_.size() == 1) { // a leaf root, or the empty scene
+            pairs_.emplace_back(); // entry 0, before any entries an oversized leaf adds
+            const std::uint32_t only =
+                root.count > 0 ? leafRef(root.lo, root.hi, root.rightOrFirst, root.count)
+                               : WF_BVH_NO_CHILD;
+            pairs_[0] = BvhPair{root.lo, only, root.hi, 0, vec3(0.0f), WF_BVH_NO_CHILD,
+                                vec3(0.0f), 0};
+            return std::move(pairs_);
+        }
+        // Interior nodes become the first entries, in depth-first order: the root's is 0.
+        for (std::size_t i = 0; i < nodes_.size(); ++i)
+            if (nodes_[i].count == 0)
+                pairOf_[i] = std::uint32_t(pairs_.size()), pairs_.emplace_back();
+        for (std::size_t i = 0; i < nodes_.size(); ++i) {
+            if (nodes_[i].count > 0)
+                continue;
+            const std::size_t right = nodes_[i].rightOrFirst;
+            const BvhPair pair{nodes_[i + 1].lo, childRef(i + 1), nodes_[i + 1].hi, 0,
+                               nodes_[right].lo, childRef(right), nodes_[right].hi, 0};
+            pairs_[pairOf_[i]] = pair;
+        }
+        return std::move(pairs_);
+    }
+
+private:
+    std::uint32_t childRef(std::size_t node) {
+        const BvhNode& n = nodes_[node];
+        return n.count > 0 ? leafRef(n.lo, n.hi, n.rightOrFirst, n.count)
+                           : pairRef(pairOf_[node]);
+    }
+
+    static std::uint32_t pairRef(std::size_t entry) {
+        if (entry >= kMaxIndex)
+            throw InputError("the BVH needs " + std::to_string(entry + 1) +
+                             " nodes, over the traversal's limit of " + std::to_string(kMaxIndex));
+        return std::uint32_t(entry) << WF_BVH_COUNT_BITS;
+    }
+
+    std::uint32_t leafRef(vec3 lo, vec3 hi, std::uint32_t first, std::uint32_t count) {
+        if (std::uint64_t(first) + count >= kMaxIndex)
+            throw InputError("the scene has " + std::to_string(std::uint64_t(first) + count) +
+                             " triangles, over the traversal's limit of " +
+                             std::to_string(kMaxIndex - 1));
+        if (count <= WF_BVH_MAX_LEAF_COUNT)
+            return first << WF_BVH_COUNT_BITS | count;
+        const std::size_t entry = pairs_.size();
+        pairs_.emplace_back();
+        const std::uint32_t half = count / 2;
+        const std::uint32_t low = leafRef(lo, hi, first, half);
+        const std::uint32_t high = leafRef(lo, hi, first + half, count - half);
+        pairs_[entry] = BvhPair{lo, low, hi, 0, lo, high, hi, 0};
+        return pairRef(entry);
+    }
+
+    // Indices stay below this, so no reference can equal WF_BVH_NO_CHILD.
+    static constexpr std::uint64_t kMaxIndex = (1ull << (32 - WF_BVH_COUNT_BITS)) - 1;
+
+    const std::vector<BvhNode>& nodes_;
+    std::vector<std::uint32_t> pairOf_;
+    std::vector<BvhPair> pairs_;
+};
+
+} // namespace
+
+std::vector<BvhPair> pairBvhNodes(const std::vector<BvhNode>& nodes) {
+    assert(!nodes.empty() && "buildBvh always emits a root");
+    return BvhPairer(nodes).pair();
 }
 
 } // namespace wf

@@ -1,5 +1,5 @@
-// Binned-SAH BVH over the scene's triangles, flattened into the depth-first layout that
-// shaders/shared/bvh_traverse.h walks on the GPU and on the CPU.
+// Binned-SAH BVH over the scene's triangles, flattened depth-first, then paired into the layout
+// that shaders/shared/bvh_traverse.h walks on the GPU and on the CPU.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -34,5 +34,9 @@ struct BvhBuildStats {
 // like any other; vertex coordinates must be finite.
 BvhBuildStats buildBvh(std::vector<Triangle>& triangles, std::vector<BvhNode>& nodes,
                        const BvhBuildOptions& opts = {});
+
+// The layout traversal walks (BvhPair in scene_types.h): one entry per interior node of
+// `nodes` (from buildBvh), or a single entry for a leaf root or an empty scene.
+std::vector<BvhPair> pairBvhNodes(const std::vector<BvhNode>& nodes);
 
 } // namespace wf

@@ -1,10 +1,11 @@
 // Ray queries on the CPU through the very traversal the GPU runs (shaders/shared/
-// bvh_traverse.h), for tests and tools. Borrows the node and triangle arrays; they must
-// outlive it and come from buildBvh (at least one node, triangles in leaf order).
+// bvh_traverse.h), for tests and tools. Pairs the nodes from buildBvh and borrows the
+// triangle array, which must outlive it (in leaf order, as buildBvh leaves it).
 #pragma once
 #include <cassert>
 #include <vector>
 
+#include "scene/bvh_builder.h"
 #include "scene/scene.h"
 #include "shaders/shared/bvh_traverse.h"
 
@@ -14,11 +15,13 @@ using gpu_types::HitRecord;
 
 class CpuBvh {
 public:
-    CpuBvh(const std::vector<BvhNode>& nodes, const std::vector<Triangle>& triangles) {
-        assert(!nodes.empty() && "buildBvh always emits a root, even for an empty scene");
-        traversal_.nodes = nodes.data();
+    CpuBvh(const std::vector<BvhNode>& nodes, const std::vector<Triangle>& triangles)
+        : pairs_(pairBvhNodes(nodes)) {
+        traversal_.pairs = pairs_.data();
         traversal_.triangles = triangles.data();
     }
+    CpuBvh(const CpuBvh&) = delete; // traversal_ points into pairs_
+    CpuBvh& operator=(const CpuBvh&) = delete;
 
     // Closest hit with t in (0, tMax); hit.triangle indexes the reordered triangle array.
     bool traceClosest(glm::vec3 o, glm::vec3 d, float tMax, HitRecord& hit) const {
@@ -33,6 +36,7 @@ public:
     }
 
 private:
+    std::vector<BvhPair> pairs_;
     gpu_types::BvhTraversal traversal_;
 };
 

@@ -13,6 +13,7 @@
 namespace wf {
 
 using gpu_types::BvhNode;
+using gpu_types::BvhPair;
 using gpu_types::Emitter;
 using gpu_types::Material;
 using gpu_types::PunctualLight;

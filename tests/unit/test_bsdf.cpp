@@ -242,6 +242,42 @@ TEST(Bsdf, SpecularZeroIsExactlyLambert) {
     }
 }
 
+// Scenes of Lambertian materials compile the diffuse-only BSDF (WF_BSDF_DIFFUSE_ONLY); it must
+// agree with the general model on every such material: colours in and beyond [0, 1], any
+// roughness and ior, both sides, black.
+TEST(Bsdf, DiffuseOnlyMatchesTheGeneralModel) {
+    std::mt19937 rng(21u);
+    for (int i = 0; i < 4000; ++i) {
+        vec3 color(1.2f * uniform01(rng) - 0.1f, uniform01(rng), uniform01(rng));
+        if (i % 50 == 0)
+            color = vec3(0.0f);
+        BsdfParams m = material(color, 0.0f, i % 7 == 0 ? 0.0f : uniform01(rng), 0.0f, 0.0f,
+                                0.5f + 2.0f * uniform01(rng));
+        float sideO = i % 2 ? 1.0f : -1.0f;
+        float sideI = i % 3 ? 1.0f : -1.0f;
+        vec3 wo = direction(sideO * uniform01(rng), 6.2831853f * uniform01(rng));
+        vec3 wi = direction(sideI * uniform01(rng), 6.2831853f * uniform01(rng));
+        vec3 eval = bsdfEval(m, wo, wi), fast = diffuseOnlyEval(m, wo, wi);
+        for (int k = 0; k < 3; ++k)
+            ASSERT_NEAR(fast[k], eval[k], 1e-6f * eval[k] + 1e-9f) << i;
+        ASSERT_NEAR(diffuseOnlyPdf(m, wo, wi), bsdfPdf(m, wo, wi), 1e-6f) << i;
+        ASSERT_EQ(diffuseOnlyHasNonDelta(m), bsdfHasNonDelta(m)) << i;
+        vec2 u(uniform01(rng), uniform01(rng));
+        BsdfSample general, diffuse;
+        bool sampled = bsdfSample(m, wo, uniform01(rng), u, general);
+        ASSERT_EQ(diffuseOnlySample(m, wo, u, diffuse), sampled) << i;
+        if (!sampled)
+            continue;
+        for (int k = 0; k < 3; ++k) {
+            ASSERT_FLOAT_EQ(diffuse.wi[k], general.wi[k]) << i;
+            ASSERT_NEAR(diffuse.weight[k], general.weight[k], 1e-5f) << i;
+        }
+        ASSERT_FLOAT_EQ(diffuse.pdf, general.pdf) << i;
+        ASSERT_EQ(diffuse.isDelta, general.isDelta);
+        ASSERT_EQ(diffuse.eta, general.eta);
+    }
+}
+
 TEST(Bsdf, MetalWhiteFurnaceLosesLittleEnergy) {
     // Single-scattering GGX loses energy with roughness (1 - ln 2 remains at alpha = 1 and
     // normal incidence); it never gains any. Roughness 0 with F0 = 1 reflects everything.

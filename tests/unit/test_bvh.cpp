@@ -94,9 +94,9 @@ void checkStructure(const std::vector<BvhNode>& nodes, const std::vector<Triangl
 // t differing in the last bits (Möller-Trumbore's error grows as 1 / cos at grazing angles),
 // and a box whose rounded entry distance lies between two of them is rightly pruned.
 void compareWithBruteForce(std::vector<Triangle> tris, int rays, std::uint32_t seed,
-                           bool coplanar = false) {
+                           bool coplanar = false, const wf::BvhBuildOptions& opts = {}) {
     std::vector<BvhNode> nodes;
-    wf::BvhBuildStats stats = wf::buildBvh(tris, nodes);
+    wf::BvhBuildStats stats = wf::buildBvh(tris, nodes, opts);
     checkStructure(nodes, tris, stats);
     wf::CpuBvh bvh(nodes, tris);
 
@@ -292,6 +292,29 @@ TEST(Bvh, SingleTriangle) {
     EXPECT_FALSE(bvh.traceAny(vec3(0.25f, 0.25f, 1.0f), vec3(0, 0, -1), 1.0f)); // t < tMax
     EXPECT_FALSE(bvh.traceAny(vec3(0.25f, 0.25f, 1.0f), vec3(0, 0, 1), INF));
     compareWithBruteForce(tris, 2000, 17u);
+}
+
+// A depth limit far too small forces leaves of hundreds of triangles (the root itself with
+// maxDepth 0); pairing splits them into references traversal can hold, hitting all the same.
+TEST(Bvh, OversizedLeavesAreSplitForTraversal) {
+    for (std::uint32_t maxDepth : {0u, 2u}) {
+        wf::BvhBuildOptions opts;
+        opts.maxDepth = maxDepth;
+        std::vector<Triangle> tris = randomSoup(1000, 5u);
+        std::vector<BvhNode> nodes;
+        wf::buildBvh(tris, nodes, opts);
+        std::uint32_t biggest = 0;
+        for (const BvhNode& n : nodes)
+            biggest = std::max(biggest, n.count);
+        EXPECT_GT(biggest, WF_BVH_MAX_LEAF_COUNT) << "maxDepth " << maxDepth;
+        std::uint32_t referenced = 0; // each triangle in exactly one leaf reference
+        for (const wf::BvhPair& pair : wf::pairBvhNodes(nodes))
+            for (std::uint32_t child : {pair.child0, pair.child1})
+                if (child != WF_BVH_NO_CHILD)
+                    referenced += child & WF_BVH_MAX_LEAF_COUNT;
+        EXPECT_EQ(referenced, tris.size()) << "maxDepth " << maxDepth;
+        compareWithBruteForce(randomSoup(1000, 5u), 3000, 18u + maxDepth, false, opts);
+    }
 }
 
 } // namespace
