@@ -22,7 +22,9 @@ layout(std430, binding = WF_BINDING_ENVIRONMENT_ALIAS) readonly buffer Environme
 };
 #endif
 #endif
-layout(std430, binding = WF_BINDING_PARAMS) readonly buffer ParamsBuffer {
+// A uniform buffer: every invocation reads the same words (std140 lays RenderParams out as
+// std430 does; tests/unit/test_shared_layout.cpp checks it).
+layout(std140, binding = WF_BINDING_PARAMS) uniform ParamsBuffer {
     RenderParams params;
 };
 layout(std430, binding = WF_BINDING_COUNTERS) buffer CounterBuffer {

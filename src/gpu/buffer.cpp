@@ -19,9 +19,10 @@ Buffer::Buffer(const Context& context, std::string name, VkDeviceSize size,
                          std::to_string(limits.maxStorageBufferRange >> 20) + " MiB");
     VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
     info.size = size_;
-    // Any buffer may be bound as a texel buffer (DescriptorTable's BufferAccess).
+    // Any buffer may be bound in any of DescriptorTable's BufferAccess ways.
     info.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT |
-                 VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | extraUsage;
+                 VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+                 VK_BUFFER_USAGE_TRANSFER_DST_BIT | extraUsage;
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
     VkDevice device = context.device();
     VK_CHECK(vkCreateBuffer(device, &info, nullptr, &buffer_));

@@ -1,5 +1,7 @@
 #include "gpu/compute_program.h"
 
+#include <map>
+
 #include "errors.h"
 #include "gpu/buffer.h"
 #include "gpu/context.h"
@@ -10,8 +12,15 @@ namespace wf {
 namespace {
 
 VkDescriptorType descriptorType(BufferAccess access) {
-    return access == BufferAccess::UintTexels ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER
-                                              : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    switch (access) {
+    case BufferAccess::UintTexels:
+        return VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+    case BufferAccess::Uniform:
+        return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    case BufferAccess::Storage:
+        break;
+    }
+    return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 }
 
 constexpr VkDeviceSize kTexelBytes = 16; // RGBA32UI
@@ -30,8 +39,7 @@ DescriptorTable::DescriptorTable(const Context& context, const DescriptorBinding
 
 void DescriptorTable::create(const Context& context, const DescriptorBindings& bindings) {
     std::vector<VkDescriptorSetLayoutBinding> layoutBindings;
-    uint32_t storageCount = 0;
-    uint32_t texelCount = 0;
+    std::map<VkDescriptorType, uint32_t> typeCounts;
     for (const DescriptorBinding& entry : bindings) {
         VkDescriptorSetLayoutBinding layoutBinding{};
         layoutBinding.binding = entry.binding;
@@ -39,7 +47,7 @@ void DescriptorTable::create(const Context& context, const DescriptorBindings& b
         layoutBinding.descriptorCount = 1;
         layoutBinding.stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
         layoutBindings.push_back(layoutBinding);
-        ++(entry.access == BufferAccess::UintTexels ? texelCount : storageCount);
+        ++typeCounts[layoutBinding.descriptorType];
     }
     VkDescriptorSetLayoutCreateInfo layoutInfo{
         VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
@@ -48,10 +56,8 @@ void DescriptorTable::create(const Context& context, const DescriptorBindings& b
     VK_CHECK(vkCreateDescriptorSetLayout(device_, &layoutInfo, nullptr, &layout_));
 
     std::vector<VkDescriptorPoolSize> poolSizes;
-    if (storageCount)
-        poolSizes.push_back({VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, storageCount});
-    if (texelCount)
-        poolSizes.push_back({VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, texelCount});
+    for (const auto& [type, count] : typeCounts)
+        poolSizes.push_back({type, count});
     VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     poolInfo.maxSets = 1;
     poolInfo.poolSizeCount = static_cast<uint32_t>(poolSizes.size());
@@ -90,6 +96,10 @@ void DescriptorTable::create(const Context& context, const DescriptorBindings& b
             views_.push_back(view);
             writes[i].pTexelBufferView = &views_.back();
         } else {
+            if (entry.access == BufferAccess::Uniform &&
+                entry.buffer->size() > context.properties().limits.maxUniformBufferRange)
+                throw InternalError("buffer '" + entry.buffer->name() +
+                                    "' is over the device's uniform buffer range");
             infos[i] = {entry.buffer->handle(), 0, VK_WHOLE_SIZE};
             writes[i].pBufferInfo = &infos[i];
         }

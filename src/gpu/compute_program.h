@@ -17,8 +17,9 @@ class Context;
 // How a shader reads a buffer. Read-only tables that passes fetch at scattered indices are
 // bound as uniform texel buffers of RGBA32UI (GLSL usamplerBuffer): lavapipe turns a texel
 // fetch into one vector gather but a storage-buffer load into a branchy loop over the lanes,
-// 2.5-3x slower per vec4 (docs/architecture.md, "Reading memory on lavapipe").
-enum class BufferAccess { Storage, UintTexels };
+// 2.5-3x slower per vec4 (docs/architecture.md, "Reading memory on lavapipe"). Small
+// read-only blocks every invocation reads at the same address are uniform buffers (std140).
+enum class BufferAccess { Storage, UintTexels, Uniform };
 
 struct DescriptorBinding {
     uint32_t binding;

@@ -29,7 +29,7 @@ PathBuffers::PathBuffers(const Context& context, uint32_t pathCapacity, uint32_t
 
 void PathBuffers::appendBindings(
     DescriptorBindings& bindings) const {
-    bindings.push_back({WF_BINDING_PARAMS, &params});
+    bindings.push_back({WF_BINDING_PARAMS, &params, BufferAccess::Uniform});
     bindings.push_back({WF_BINDING_COUNTERS, &counters});
     bindings.push_back({WF_BINDING_FILM, &film});
     bindings.push_back({WF_BINDING_RAY_ORIGIN, &rayOrigin});

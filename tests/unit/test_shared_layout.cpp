@@ -26,8 +26,10 @@ std::map<std::string, int> reflectedOffsets() {
 #include "light_types.h"
 #include "texture_types.h"
 layout(local_size_x = 1) in;
-layout(std430, binding = 0) buffer B0 { Triangle tri; BvhNode node; Material mat; Emitter em; };
-layout(std430, binding = 1) buffer B1 { RenderParams params; QueueCounters counters; };
+layout(std430, binding = 0) buffer B0 {
+    Triangle tri; BvhNode node; Material mat; Emitter em; BvhPair pair; };
+layout(std140, binding = 4) uniform U0 { RenderParams params; }; // a uniform buffer: std140
+layout(std430, binding = 1) buffer B1 { QueueCounters counters; uint paramsSum; };
 layout(std430, binding = 2) buffer B2 { PunctualLight light; };
 layout(std430, binding = 3) buffer B3 {
     TextureRef tref; TriangleNormals tnorm; TriangleTangents ttan; TriangleUvs tuv[2]; };
@@ -39,7 +41,9 @@ void main() {
         mat.normalScale) + mat.baseColorTexture + mat.metallicRoughnessTexture +
         mat.normalTexture + mat.emissiveTexture + mat.transmissionTexture + mat.pad;
     em.alias = em.source + uint(em.pmf + em.aliasProb);
-    params.environmentHeight = uint(params.cameraPosition.x + params.tanHalfFovY +
+    pair.pad1 = pair.child0 + pair.child1 + pair.pad0 + uint(pair.lo0.x + pair.hi0.x + pair.lo1.x +
+        pair.hi1.x);
+    paramsSum = params.environmentHeight + uint(params.cameraPosition.x + params.tanHalfFovY +
         params.cameraForward.x + params.aspect + params.cameraUp.x + params.cameraRight.x +
         params.sceneCenter.x + params.sceneRadius + params.minThroughput +
         params.clampRadiance) + params.seed + params.maxDepth + params.width + params.height +
@@ -126,6 +130,12 @@ TEST(SharedLayout, GlslOffsetsMatchCpp) {
     expectOffset("mat.normalScale", materialBase, offsetof(Material, normalScale));
     expectOffset("mat.pad", materialBase, offsetof(Material, pad));
     expectOffset("em.alias", materialBase + sizeof(Material), offsetof(Emitter, alias));
+    const size_t pairBase = materialBase + sizeof(Material) + sizeof(Emitter);
+    expectOffset("pair.child0", pairBase, offsetof(BvhPair, child0));
+    expectOffset("pair.hi0", pairBase, offsetof(BvhPair, hi0));
+    expectOffset("pair.lo1", pairBase, offsetof(BvhPair, lo1));
+    expectOffset("pair.child1", pairBase, offsetof(BvhPair, child1));
+    expectOffset("pair.pad1", pairBase, offsetof(BvhPair, pad1));
     expectOffset("params.seed", 0, offsetof(RenderParams, seed));
     expectOffset("params.cameraRight", 0, offsetof(RenderParams, cameraRight));
     expectOffset("params.maxDepth", 0, offsetof(RenderParams, maxDepth));
@@ -148,7 +158,7 @@ TEST(SharedLayout, GlslOffsetsMatchCpp) {
     // An array of TriangleUvs: the std430 stride must equal sizeof (24, no padding to 16).
     const size_t uvBase = tangentBase + sizeof(TriangleTangents);
     expectOffset("tuv[1].uv2", uvBase, sizeof(TriangleUvs) + offsetof(TriangleUvs, uv2));
-    const size_t countersBase = sizeof(RenderParams);
+    const size_t countersBase = 0;
     expectOffset("counters.rayArgs.count", countersBase,
                  offsetof(QueueCounters, rayArgs) + offsetof(DispatchArgs, count));
     expectOffset("counters.shadowArgs.groupsX", countersBase, offsetof(QueueCounters, shadowArgs));
