@@ -24,7 +24,7 @@ void main() {
     vec4 sum = film[pixel];
     uint dropped = 0u;
     for (uint s = 0u; s < pass.samplesPerPixel; ++s) {
-        vec3 value = radiance[local + s * pass.wavePixels].rgb;
+        vec3 value = radianceAt(local + s * pass.wavePixels).rgb;
         if (isFiniteBits(value))
             sum.rgb += value;
         else

@@ -14,5 +14,5 @@ void main() {
     if (index >= counters.rayArgs.count)
         return;
     uint path = rayQueues[(pass.depth & 1u) * params.pathCapacity + index];
-    hits[path] = intersectClosest(rayOrigin[path].xyz, rayDirection[path].xyz);
+    hits[path] = intersectClosest(rayOriginAt(path).xyz, rayDirectionAt(path).xyz);
 }

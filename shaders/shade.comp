@@ -36,14 +36,17 @@ void main() {
         v.pixel = wavePathPixel(pass, path);
         v.sampleIndex = wavePathSample(pass, path);
         v.depth = pass.depth;
-        v.hit = hits[path];
-        v.origin = rayOrigin[path].xyz;
-        v.previousPdf = rayOrigin[path].w;
-        v.direction = rayDirection[path].xyz;
-        v.beta = throughput[path].rgb;
-        v.etaScale = throughput[path].w;
+        v.hit = hitAt(path);
+        vec4 origin = rayOriginAt(path);
+        v.origin = origin.xyz;
+        v.previousPdf = origin.w;
+        v.direction = rayDirectionAt(path).xyz;
+        vec4 pathThroughput = throughputAt(path);
+        v.beta = pathThroughput.rgb;
+        v.etaScale = pathThroughput.w;
+        vec3 before = radianceAt(path).rgb;
         shadePathVertex(v);
-        radiance[path].rgb += v.radiance;
+        radiance[path].rgb = before + v.radiance;
         if (v.continues) {
             rayOrigin[path] = vec4(v.origin, v.previousPdf);
             rayDirection[path] = vec4(v.direction, 0.0);

@@ -17,6 +17,6 @@ void main() {
     uint path = shadowQueue[index];
     // The segment spans the whole connection; both ends are offset off their surfaces, so the
     // light's own surface lies beyond t = 1 and the shading triangle before t = 0.
-    if (!segmentOccluded(shadowOrigin[path].xyz, shadowDirection[path].xyz))
-        radiance[path].rgb += shadowRadiance[path].rgb;
+    if (!segmentOccluded(shadowOriginAt(path).xyz, shadowDirectionAt(path).xyz))
+        radiance[path].rgb = radianceAt(path).rgb + shadowRadianceAt(path).rgb;
 }

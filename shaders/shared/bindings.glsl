@@ -65,6 +65,7 @@ layout(std430, binding = WF_BINDING_SHADOW_QUEUE) buffer ShadowQueueBuffer {
     uint shadowQueue[];
 };
 #endif
+#include "path_texels.glsl"
 
 #define WF_MISS 0xffffffffu
 #define WF_SPHERE_HIT 0x80000000u // hits.w = WF_SPHERE_HIT | sphere light index

@@ -43,7 +43,16 @@ namespace wf::gpu_types {
 #define WF_BINDING_LIGHTS 17
 #define WF_BINDING_ENVIRONMENT 18       // vec4 radiance per texel
 #define WF_BINDING_ENVIRONMENT_ALIAS 19 // Emitter-shaped alias table over texels
-// 20-31: per-vertex attributes and textures (only for scenes that use them)
+// 20-31: per-vertex attributes and textures (only for scenes that use them); 32: sampler tables
+// 40-47: the path state again, as RGBA32UI texel buffers for reading (path_texels.glsl)
+#define WF_BINDING_RAY_ORIGIN_TEXELS 40
+#define WF_BINDING_RAY_DIRECTION_TEXELS 41
+#define WF_BINDING_THROUGHPUT_TEXELS 42
+#define WF_BINDING_RADIANCE_TEXELS 43
+#define WF_BINDING_HITS_TEXELS 44
+#define WF_BINDING_SHADOW_ORIGIN_TEXELS 45
+#define WF_BINDING_SHADOW_DIRECTION_TEXELS 46
+#define WF_BINDING_SHADOW_RADIANCE_TEXELS 47
 
 struct RenderParams {
     vec3 cameraPosition;

@@ -38,7 +38,19 @@ void PathBuffers::appendBindings(
     bindings.push_back({WF_BINDING_RADIANCE, &radiance});
     bindings.push_back({WF_BINDING_HITS, &hits});
     bindings.push_back({WF_BINDING_RAY_QUEUES, &rayQueues});
+    // The same buffers again as texel views, through which the passes read them.
+    bindings.push_back({WF_BINDING_RAY_ORIGIN_TEXELS, &rayOrigin, BufferAccess::UintTexels});
+    bindings.push_back({WF_BINDING_RAY_DIRECTION_TEXELS, &rayDirection, BufferAccess::UintTexels});
+    bindings.push_back({WF_BINDING_THROUGHPUT_TEXELS, &throughput, BufferAccess::UintTexels});
+    bindings.push_back({WF_BINDING_RADIANCE_TEXELS, &radiance, BufferAccess::UintTexels});
+    bindings.push_back({WF_BINDING_HITS_TEXELS, &hits, BufferAccess::UintTexels});
     if (shadowQueue) {
+        bindings.push_back(
+            {WF_BINDING_SHADOW_ORIGIN_TEXELS, &shadowOrigin, BufferAccess::UintTexels});
+        bindings.push_back(
+            {WF_BINDING_SHADOW_DIRECTION_TEXELS, &shadowDirection, BufferAccess::UintTexels});
+        bindings.push_back(
+            {WF_BINDING_SHADOW_RADIANCE_TEXELS, &shadowRadiance, BufferAccess::UintTexels});
         bindings.push_back({WF_BINDING_SHADOW_ORIGIN, &shadowOrigin});
         bindings.push_back({WF_BINDING_SHADOW_DIRECTION, &shadowDirection});
         bindings.push_back({WF_BINDING_SHADOW_RADIANCE, &shadowRadiance});
