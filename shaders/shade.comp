@@ -44,19 +44,21 @@ void main() {
         vec4 pathThroughput = throughputAt(path);
         v.beta = pathThroughput.rgb;
         v.etaScale = pathThroughput.w;
-        vec3 before = radianceAt(path).rgb;
         shadePathVertex(v);
-        radiance[path].rgb = before + v.radiance;
+        // Stores cost a loop over the lanes on lavapipe: skip the ones that change nothing
+        // (most vertices find no emission).
+        if (any(notEqual(v.radiance, vec3(0.0))))
+            radiance[path].rgb = radianceAt(path).rgb + v.radiance;
         if (v.continues) {
             rayOrigin[path] = vec4(v.origin, v.previousPdf);
-            rayDirection[path] = vec4(v.direction, 0.0);
+            rayDirection[path].xyz = v.direction;
             throughput[path] = vec4(v.beta, v.etaScale);
         }
 #if WF_HAS_EMITTERS
         if (v.connects) {
-            shadowOrigin[path] = vec4(v.shadowOrigin, 0.0);
-            shadowDirection[path] = vec4(v.shadowSegment, 0.0);
-            shadowRadiance[path] = vec4(v.shadowRadiance, 0.0);
+            shadowOrigin[path].xyz = v.shadowOrigin;
+            shadowDirection[path].xyz = v.shadowSegment;
+            shadowRadiance[path].rgb = v.shadowRadiance;
         }
 #endif
     }
