@@ -2,8 +2,11 @@
 // so tests compare the GPU's own traversal against brute force.
 //
 // Layout: BvhPair entries (scene_types.h, made by pairBvhNodes in src/scene/bvh_builder.cpp).
-// Traversal holds one child reference (scene_types.h): a leaf's triangle range, or a pair entry
-// whose two child boxes are tested together. The walk starts at entry 0.
+// Each step visits one pair entry: tests both child boxes, intersects the triangles of the
+// children that are leaves there and then (nearer leaf first), and descends into an interior
+// child, so the loop and its stack only ever hold pair entries. The walk starts at entry 0.
+// On 8-wide SIMD (lavapipe) a step costs the same whatever each lane finds, so fewer, fuller
+// steps are what pays; the CPU tests run this very code against brute force.
 //
 // GLSL includers define, before including:
 //   WF_BVH_PAIR(i)      an expression yielding BvhPair i (e.g. a texel-buffer fetch)
@@ -62,66 +65,95 @@ WF_INLINE bool bvhChildHit(uint child, vec3 o, vec3 invDir, vec3 lo, vec3 hi, fl
     return child != WF_BVH_NO_CHILD && boxHit;
 }
 
-// Closest hit with t in (0, tMax). Ordered: the nearer child is visited first and the farther
-// one pushed with its entry distance, so it is dropped on pop once a closer hit is known.
+// The children of one pair entry as a step sees them: nearer hit child first.
+struct BvhStep {
+    uint nearChild;
+    uint farChild;
+    float nearEntry;
+    float farEntry;
+    uint nearCount; // triangles to test now: a leaf child that the ray hits, else 0
+    uint farCount;
+    bool nearInner; // an interior child that the ray hits
+    bool farInner;
+};
+
+WF_INLINE BvhStep bvhStep(BvhPair pair, vec3 o, vec3 invDir, float tMax) {
+    float t0;
+    float t1;
+    bool hit0 = bvhChildHit(pair.child0, o, invDir, pair.lo0, pair.hi0, tMax, t0);
+    bool hit1 = bvhChildHit(pair.child1, o, invDir, pair.lo1, pair.hi1, tMax, t1);
+    bool swap = hit1 && (!hit0 || t1 < t0);
+    BvhStep step;
+    step.nearChild = swap ? pair.child1 : pair.child0;
+    step.farChild = swap ? pair.child0 : pair.child1;
+    step.nearEntry = swap ? t1 : t0;
+    step.farEntry = swap ? t0 : t1;
+    bool nearHit = swap ? hit1 : hit0;
+    bool farHit = swap ? hit0 : hit1;
+    uint nearCount = step.nearChild & WF_BVH_MAX_LEAF_COUNT;
+    uint farCount = step.farChild & WF_BVH_MAX_LEAF_COUNT;
+    step.nearCount = nearHit ? nearCount : 0u;
+    step.farCount = farHit ? farCount : 0u;
+    step.nearInner = nearHit && nearCount == 0u;
+    step.farInner = farHit && farCount == 0u;
+    return step;
+}
+
+// Triangle k of a step's leaves: the near leaf's, then the far leaf's.
+WF_INLINE uint bvhStepTriangle(BvhStep step, uint k) {
+    return k < step.nearCount ? (step.nearChild >> WF_BVH_COUNT_BITS) + k
+                              : (step.farChild >> WF_BVH_COUNT_BITS) + (k - step.nearCount);
+}
+
+// Closest hit with t in (0, tMax). Ordered: the nearer child first; a farther interior child is
+// pushed with its entry distance and dropped on pop once a closer hit is known.
 WF_INLINE bool traceClosest(vec3 o, vec3 d, float tMax, WF_OUT(HitRecord) hit) {
     hit.t = tMax;
     hit.b1 = 0.0f;
     hit.b2 = 0.0f;
     hit.triangle = WF_NO_TRIANGLE;
     vec3 invDir = 1.0f / d;
-    uint stackChild[WF_BVH_STACK_SIZE];
+    uint stackPair[WF_BVH_STACK_SIZE];
     float stackEntry[WF_BVH_STACK_SIZE];
     uint stackSize = 0u;
-    uint current = 0u; // a reference to pair entry 0: the root's children
+    uint current = 0u; // pair entry 0: the root's children
     bool haveCurrent = true;
     while (haveCurrent) {
-        haveCurrent = false;
-        uint index = current >> WF_BVH_COUNT_BITS;
-        uint count = current & WF_BVH_MAX_LEAF_COUNT;
-        if (count > 0u) {
-            for (uint i = index; i < index + count; ++i) {
-                Triangle tri = WF_BVH_TRIANGLE(i);
-                float t;
-                float b1;
-                float b2;
-                if (intersectTriangle(o, d, tri.p0, tri.p1, tri.p2, hit.t, t, b1, b2)) {
+        BvhStep step = bvhStep(WF_BVH_PAIR(current), o, invDir, hit.t);
+        for (uint k = 0u; k < step.nearCount + step.farCount; ++k) {
+            if (k == step.nearCount && step.farEntry > hit.t)
+                break; // the near leaf hit something before the far leaf begins
+            uint i = bvhStepTriangle(step, k);
+            Triangle tri = WF_BVH_TRIANGLE(i);
+            float t;
+            float b1;
+            float b2;
+            if (intersectTriangle(o, d, tri.p0, tri.p1, tri.p2, hit.t, t, b1, b2)) {
 #if WF_HAS_ALPHA_MASK
-                    if (!wfAlphaPasses(i, b1, b2, o, d))
-                        continue; // a cut-out: the ray goes on
+                if (!wfAlphaPasses(i, b1, b2, o, d))
+                    continue; // a cut-out: the ray goes on
 #endif
-                    hit.t = t;
-                    hit.b1 = b1;
-                    hit.b2 = b2;
-                    hit.triangle = i;
-                }
+                hit.t = t;
+                hit.b1 = b1;
+                hit.b2 = b2;
+                hit.triangle = i;
             }
-        } else {
-            BvhPair pair = WF_BVH_PAIR(index);
-            float t0;
-            float t1;
-            bool hit0 = bvhChildHit(pair.child0, o, invDir, pair.lo0, pair.hi0, hit.t, t0);
-            bool hit1 = bvhChildHit(pair.child1, o, invDir, pair.lo1, pair.hi1, hit.t, t1);
-            if (hit0 && hit1) {
-                bool firstNear = t0 <= t1;
-                current = firstNear ? pair.child0 : pair.child1;
-                haveCurrent = true;
-                // The builder bounds the depth, so this only guards against a foreign tree:
-                // dropping a subtree is wrong but cannot write out of bounds.
-                if (stackSize < uint(WF_BVH_STACK_SIZE)) {
-                    stackChild[stackSize] = firstNear ? pair.child1 : pair.child0;
-                    stackEntry[stackSize] = firstNear ? t1 : t0;
-                    ++stackSize;
-                }
-            } else if (hit0 || hit1) {
-                current = hit0 ? pair.child0 : pair.child1;
-                haveCurrent = true;
-            }
+        }
+        bool nearNext = step.nearInner && step.nearEntry <= hit.t;
+        bool farNext = step.farInner && step.farEntry <= hit.t;
+        haveCurrent = nearNext || farNext;
+        current = (nearNext ? step.nearChild : step.farChild) >> WF_BVH_COUNT_BITS;
+        // The builder bounds the depth, so the size check only guards against a foreign tree:
+        // dropping a subtree is wrong but cannot write out of bounds.
+        if (nearNext && farNext && stackSize < uint(WF_BVH_STACK_SIZE)) {
+            stackPair[stackSize] = step.farChild >> WF_BVH_COUNT_BITS;
+            stackEntry[stackSize] = step.farEntry;
+            ++stackSize;
         }
         while (!haveCurrent && stackSize > 0u) {
             --stackSize;
             if (stackEntry[stackSize] <= hit.t) {
-                current = stackChild[stackSize];
+                current = stackPair[stackSize];
                 haveCurrent = true;
             }
         }
@@ -132,46 +164,35 @@ WF_INLINE bool traceClosest(vec3 o, vec3 d, float tMax, WF_OUT(HitRecord) hit) {
 // Any hit with t in (0, tMax), for shadow rays: order does not matter, the first hit ends it.
 WF_INLINE bool traceAny(vec3 o, vec3 d, float tMax) {
     vec3 invDir = 1.0f / d;
-    uint stackChild[WF_BVH_STACK_SIZE];
+    uint stackPair[WF_BVH_STACK_SIZE];
     uint stackSize = 0u;
     uint current = 0u;
     bool haveCurrent = true;
     while (haveCurrent) {
-        haveCurrent = false;
-        uint index = current >> WF_BVH_COUNT_BITS;
-        uint count = current & WF_BVH_MAX_LEAF_COUNT;
-        if (count > 0u) {
-            for (uint i = index; i < index + count; ++i) {
-                Triangle tri = WF_BVH_TRIANGLE(i);
-                float t;
-                float b1;
-                float b2;
-                if (intersectTriangle(o, d, tri.p0, tri.p1, tri.p2, tMax, t, b1, b2)) {
+        BvhStep step = bvhStep(WF_BVH_PAIR(current), o, invDir, tMax);
+        for (uint k = 0u; k < step.nearCount + step.farCount; ++k) {
+            uint i = bvhStepTriangle(step, k);
+            Triangle tri = WF_BVH_TRIANGLE(i);
+            float t;
+            float b1;
+            float b2;
+            if (intersectTriangle(o, d, tri.p0, tri.p1, tri.p2, tMax, t, b1, b2)) {
 #if WF_HAS_ALPHA_MASK
-                    if (!wfAlphaPasses(i, b1, b2, o, d))
-                        continue;
+                if (!wfAlphaPasses(i, b1, b2, o, d))
+                    continue;
 #endif
-                    return true;
-                }
+                return true;
             }
-        } else {
-            BvhPair pair = WF_BVH_PAIR(index);
-            float t0;
-            float t1;
-            bool hit0 = bvhChildHit(pair.child0, o, invDir, pair.lo0, pair.hi0, tMax, t0);
-            bool hit1 = bvhChildHit(pair.child1, o, invDir, pair.lo1, pair.hi1, tMax, t1);
-            if (hit0 || hit1) {
-                current = hit0 ? pair.child0 : pair.child1;
-                haveCurrent = true;
-                if (hit0 && hit1 && stackSize < uint(WF_BVH_STACK_SIZE)) {
-                    stackChild[stackSize] = pair.child1;
-                    ++stackSize;
-                }
-            }
+        }
+        haveCurrent = step.nearInner || step.farInner;
+        current = (step.nearInner ? step.nearChild : step.farChild) >> WF_BVH_COUNT_BITS;
+        if (step.nearInner && step.farInner && stackSize < uint(WF_BVH_STACK_SIZE)) {
+            stackPair[stackSize] = step.farChild >> WF_BVH_COUNT_BITS;
+            ++stackSize;
         }
         if (!haveCurrent && stackSize > 0u) {
             --stackSize;
-            current = stackChild[stackSize];
+            current = stackPair[stackSize];
             haveCurrent = true;
         }
     }
