@@ -3,7 +3,6 @@
 // per-pass GPU times, throughput, queue occupancy, memory, as a table and as JSON.
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <memory>
@@ -11,16 +10,18 @@
 #include "app/bench_report.h"
 #include "app/cli.h"
 #include "app/commands.h"
+#include "app/render_options.h"
 #include "errors.h"
 #include "gpu/context.h"
 #include "image/atomic_file.h"
 #include "render/scene_buffers.h"
 #include "render/wavefront_renderer.h"
-#include "scene/default_camera.h"
-#include "scene/gltf_loader.h"
 
 namespace wf {
 namespace {
+
+constexpr uint32_t kDefaultWidth = 256;
+constexpr uint32_t kDefaultMaxDepth = 8;
 
 const CommandSpec& benchSpec() {
     static const CommandSpec spec{
@@ -30,27 +31,30 @@ const CommandSpec& benchSpec() {
         "rays/s per kind, paths/s, queue occupancy per bounce, device memory per buffer. With\n"
         "--megakernel or --compare-megakernel the same samples are also traced by the\n"
         "megakernel baseline in the same run and the ratio is reported.",
-        {
-            {"--width", "", "W", "image width in pixels (default 256)"},
-            {"--height", "", "H", "image height (default: width / the camera's aspect ratio)"},
-            {"--frames", "", "N", "timed frames (default 10)"},
-            {"--warmup", "", "N", "untimed frames first (default 2)"},
-            {"--spp", "", "N", "samples per pixel in one frame (default 1)"},
-            {"--max-depth", "", "D", "path segments from the camera (default 8)"},
-            {"--rr-depth", "", "N", "Russian roulette from bounce N on (default 3)"},
-            {"--seed", "", "S", "random seed (default 0); same inputs, same ray counts"},
-            {"--light-sampling", "", "MODE", "bsdf, nee or mis (default)"},
-            {"--megakernel", "", "", "time the megakernel baseline too; print its table and "
-                                     "the ratio"},
-            {"--compare-megakernel", "", "", "time both; print both tables and the ratio"},
-            {"--budget-ms", "", "MS", "longest time one submit should take (default 250; 0: "
-                                      "waves of --wave-paths regardless of time)"},
-            {"--wave-paths", "", "N", "most paths in one wave (default 1048576)"},
-            {"--json", "", "OUT.json", "write the same report as JSON"},
-            {"--device", "", "N", "Vulkan device index (default: WAVEFRONT_DEVICE, else the "
-                                  "first GPU)"},
-            {"--quiet", "-q", "", "no progress lines on stderr"},
-        },
+        joinOptions({
+            imageSizeOptions(kDefaultWidth),
+            {
+                {"--frames", "", "N", "timed frames (default 10)"},
+                {"--warmup", "", "N", "untimed frames first (default 2)"},
+                {"--spp", "", "N", "samples per pixel in one frame (default 1)"},
+            },
+            depthOptions(kDefaultMaxDepth),
+            samplingOptions(),
+            {
+                noRandomizeOption(),
+                {"--megakernel", "", "", "time the megakernel baseline too; print its table and "
+                                         "the ratio"},
+                {"--compare-megakernel", "", "", "time both; print both tables and the ratio"},
+                {"--budget-ms", "", "MS", "longest time one submit should take (default 250; 0: "
+                                          "waves of --wave-paths regardless of time)"},
+                {"--wave-paths", "", "N", "most paths in one wave (default 1048576)"},
+                {"--json", "", "OUT.json", "write the same report as JSON"},
+                deviceOption(),
+                quietOption(),
+                cameraOption(),
+                envOption(),
+            },
+        }),
         "Exit codes: 0 done, 2 bad usage or bad input, 1 internal or device failure.\n"};
     return spec;
 }
@@ -87,11 +91,7 @@ int runBenchCommand(const std::vector<std::string>& args) {
     const uint32_t warmup = parsed.uintValue("--warmup", 2, 0, 100000);
     const uint32_t spp = parsed.uintValue("--spp", 1, 1, 1u << 16);
     RenderSettings settings;
-    settings.maxDepth = parsed.uintValue("--max-depth", 8, 1, 1024);
-    settings.rrDepth = parsed.uintValue("--rr-depth", 3, 0, 1024);
-    settings.seed = parsed.uintValue("--seed", 0, 0, 0xffffffffu);
-    settings.lightSampling =
-        parseLightSampling(parsed.choiceValue("--light-sampling", "mis", {"bsdf", "nee", "mis"}));
+    applyRenderFlags(parsed, kDefaultMaxDepth, settings);
     settings.submitBudgetSeconds = parsed.uintValue("--budget-ms", 250, 0, 600000) * 1e-3;
     settings.maxPathsPerWave = parsed.uintValue("--wave-paths", 1u << 20, 1024, 1u << 26);
     if (uint64_t(frames + warmup) * spp > (1u << 24))
@@ -102,20 +102,12 @@ int runBenchCommand(const std::vector<std::string>& args) {
     const bool quiet = parsed.has("--quiet");
 
     const std::string scenePath = parsed.positional.front();
-    Scene scene = loadGltf(scenePath);
-    if (!scene.hasCamera)
-        scene.camera = frameBounds(scene);
-    const float aspect = scene.camera.aspect > 0.0f ? scene.camera.aspect : 1.0f;
-    settings.width = parsed.uintValue("--width", 256, 1, 16384);
-    const auto heightFromAspect = static_cast<uint32_t>(std::lround(settings.width / aspect));
-    settings.height = parsed.has("--height") ? parsed.uintValue("--height", 0, 1, 16384)
-                                             : std::max(1u, heightFromAspect);
+    Scene scene = loadSceneWithFlags(parsed, scenePath);
+    // Unlike render, --height alone keeps the default width.
+    applyImageSize(parsed, scene.camera, {.width = kDefaultWidth, .widthFollowsHeight = false},
+                   settings);
 
-    ContextOptions contextOptions;
-    if (parsed.has("--device"))
-        contextOptions.deviceIndex = static_cast<int>(parsed.uintValue("--device", 0, 0, 64));
-    contextOptions.quiet = quiet;
-    Context context(contextOptions);
+    Context context(contextOptionsFrom(parsed));
     ShaderCompiler compiler;
     const PreparedScene prepared = prepareScene(std::move(scene));
 
@@ -169,7 +161,8 @@ int runBenchCommand(const std::vector<std::string>& args) {
         if (compare)
             std::fputs("\n", stdout);
         std::fputs(benchTable(setup, kernels[1].run).c_str(), stdout);
-        std::fputs(("\n" + benchRatioLine(kernels[0].run, kernels[1].run)).c_str(), stdout);
+        std::fputs("\n", stdout);
+        std::fputs(benchRatioLine(kernels[0].run, kernels[1].run).c_str(), stdout);
     }
     std::fflush(stdout);
 

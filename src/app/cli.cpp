@@ -10,6 +10,13 @@
 
 namespace wf {
 
+std::vector<OptionSpec> joinOptions(std::initializer_list<std::vector<OptionSpec>> groups) {
+    std::vector<OptionSpec> options;
+    for (const std::vector<OptionSpec>& group : groups)
+        options.insert(options.end(), group.begin(), group.end());
+    return options;
+}
+
 std::optional<std::string> ParsedArgs::value(const std::string& name) const {
     auto it = values_.find(name);
     if (it == values_.end())

@@ -2,6 +2,7 @@
 // same table drives parsing, validation and --help, so help can never miss a flag.
 #pragma once
 #include <cstdint>
+#include <initializer_list>
 #include <map>
 #include <optional>
 #include <string>
@@ -23,6 +24,10 @@ struct CommandSpec {
     std::vector<OptionSpec> options;
     std::string epilogue;   // extra text after the option list (environment, exit codes)
 };
+
+// The groups of options in order, as one list (a command's own options and shared groups, e.g.
+// those of app/render_options.h).
+std::vector<OptionSpec> joinOptions(std::initializer_list<std::vector<OptionSpec>> groups);
 
 class ParsedArgs {
 public:

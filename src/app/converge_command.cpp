@@ -11,13 +11,12 @@
 #include "app/cli.h"
 #include "app/commands.h"
 #include "app/convergence_report.h"
+#include "app/render_options.h"
 #include "errors.h"
 #include "gpu/context.h"
 #include "image/exr_io.h"
 #include "render/convergence_summary.h"
 #include "render/scene_buffers.h"
-#include "scene/default_camera.h"
-#include "scene/gltf_loader.h"
 
 extern char** environ;
 
@@ -25,6 +24,8 @@ namespace fs = std::filesystem;
 
 namespace wf {
 namespace {
+
+constexpr uint32_t kDefaultMaxDepth = 16;
 
 const CommandSpec& convergeSpec() {
     static const CommandSpec spec{
@@ -36,33 +37,35 @@ const CommandSpec& convergeSpec() {
         "crops), and the charts DIR/error_vs_time.png, DIR/error_vs_spp.png and\n"
         "DIR/equal_time.png (python3 + matplotlib); prints the time each method takes to reach\n"
         "a target relMSE, and its fitted slope.",
-        {
-            {"--output", "-o", "DIR", "output folder (required; created if missing)"},
-            {"--reference", "", "REF.exr", "reference image (default: rendered first with the "
-                                           "default method, saved as DIR/reference.exr)"},
-            {"--reference-spp", "", "N", "samples per pixel of that reference (default 4096)"},
-            {"--time", "", "T", "render seconds per method and seed: samples double until a "
-                                "checkpoint passes T (default 4)"},
-            {"--methods", "", "LIST", "comma-separated methods, each words joined by '+': a "
-                                      "sampler, bsdf|nee|mis, no-randomize, triangle-area, "
-                                      "sphere-area (default: every sampler with mis, then "
-                                      "sobol+bsdf, sobol+nee)"},
-            {"--seeds", "", "N", "seeds per method, at least 5 (default 5)"},
-            {"--max-spp", "", "N", "stop doubling here (default 65536)"},
-            {"--target", "", "R", "relMSE of the ranking (default: the median of the methods' "
-                                  "final relMSE)"},
-            {"--width", "", "W", "image width (default: the reference's, else 128)"},
-            {"--height", "", "H", "image height (default: the reference's, else width / the "
-                                  "camera's aspect)"},
-            {"--max-depth", "", "D", "path segments from the camera (default 16)"},
-            {"--rr-depth", "", "N", "Russian roulette from bounce N on (default 3)"},
-            {"--crop", "", "X,Y,W,H", "region of the equal-time crops (default: the central "
-                                      "half of the image)"},
-            {"--no-plot", "", "", "write CSV and JSON only, no charts"},
-            {"--device", "", "N", "Vulkan device index (default: WAVEFRONT_DEVICE, else the "
-                                  "first GPU)"},
-            {"--quiet", "-q", "", "no progress lines on stderr"},
-        },
+        joinOptions({
+            {
+                {"--output", "-o", "DIR", "output folder (required; created if missing)"},
+                {"--reference", "", "REF.exr", "reference image (default: rendered first with the "
+                                               "default method, saved as DIR/reference.exr)"},
+                {"--reference-spp", "", "N", "samples per pixel of that reference (default 4096)"},
+                {"--time", "", "T", "render seconds per method and seed: samples double until a "
+                                    "checkpoint passes T (default 4)"},
+                {"--methods", "", "LIST", "comma-separated methods, each words joined by '+': a "
+                                          "sampler, bsdf|nee|mis, no-randomize, triangle-area, "
+                                          "sphere-area (default: every sampler with mis, then "
+                                          "sobol+bsdf, sobol+nee)"},
+                {"--seeds", "", "N", "seeds per method, at least 5 (default 5)"},
+                {"--max-spp", "", "N", "stop doubling here (default 65536)"},
+                {"--target", "", "R", "relMSE of the ranking (default: the median of the methods' "
+                                      "final relMSE)"},
+                {"--width", "", "W", "image width (default: the reference's, else 128)"},
+                {"--height", "", "H", "image height (default: the reference's, else width / the "
+                                      "camera's aspect)"},
+            },
+            depthOptions(kDefaultMaxDepth),
+            {
+                {"--crop", "", "X,Y,W,H", "region of the equal-time crops (default: the central "
+                                          "half of the image)"},
+                {"--no-plot", "", "", "write CSV and JSON only, no charts"},
+                deviceOption(),
+                quietOption(),
+            },
+        }),
         "Charts: scripts/plot_convergence.py DIR, run by WAVEFRONT_PYTHON, else\n"
         "/usr/bin/python3 (Debian's python3-matplotlib), else python3.\n"
         "\n"
@@ -142,26 +145,19 @@ int runConvergeCommand(const std::vector<std::string>& args) {
     const bool quiet = parsed.has("--quiet");
 
     const std::string scenePath = parsed.positional.front();
-    std::vector<std::string> warnings;
-    Scene scene = loadGltf(scenePath, &warnings);
-    for (const std::string& line : warnings)
-        std::fprintf(stderr, "%s\n", line.c_str());
-    if (!scene.hasCamera)
-        scene.camera = frameBounds(scene);
+    Scene scene = loadSceneWithFlags(parsed, scenePath);
     std::vector<float> reference;
     ExrImage given;
     if (auto path = parsed.value("--reference"))
         given = readExr(*path);
     RenderSettings base;
-    const float aspect = scene.camera.aspect > 0.0f ? scene.camera.aspect : 1.0f;
-    base.width = parsed.uintValue("--width", given.width ? given.width : 128, 1, 16384);
-    const uint32_t autoHeight =
-        given.height && !parsed.has("--width")
-            ? uint32_t(given.height)
-            : std::max(1u, static_cast<uint32_t>(std::lround(base.width / aspect)));
-    base.height = parsed.uintValue("--height", autoHeight, 1, 16384);
-    base.maxDepth = parsed.uintValue("--max-depth", 16, 1, 1024);
-    base.rrDepth = parsed.uintValue("--rr-depth", 3, 0, 1024);
+    // A given reference sizes the image unless --width or --height says otherwise.
+    ImageSizeRule size{.width = given.width ? uint32_t(given.width) : 128u,
+                       .widthFollowsHeight = false};
+    if (given.height)
+        size.height = uint32_t(given.height);
+    applyImageSize(parsed, scene.camera, size, base);
+    applyRenderFlags(parsed, kDefaultMaxDepth, base); // --max-depth and --rr-depth here
     if (given.width && (uint32_t(given.width) != base.width ||
                         uint32_t(given.height) != base.height))
         throw InputError("reference " + *parsed.value("--reference") + " is " +
@@ -178,11 +174,7 @@ int runConvergeCommand(const std::vector<std::string>& args) {
     parseCrop(parsed, info);
     fs::create_directories(*dir);
 
-    ContextOptions contextOptions;
-    if (parsed.has("--device"))
-        contextOptions.deviceIndex = static_cast<int>(parsed.uintValue("--device", 0, 0, 64));
-    contextOptions.quiet = quiet;
-    Context context(contextOptions);
+    Context context(contextOptionsFrom(parsed));
     info.device = context.deviceName();
     ShaderCompiler compiler;
     PreparedScene prepared = prepareScene(std::move(scene));

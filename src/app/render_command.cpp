@@ -1,12 +1,12 @@
 // wavefront render: load, build, trace all samples in waves, write EXR + PNG (+ JSON stats).
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <unistd.h>
 
 #include "app/cli.h"
 #include "app/commands.h"
+#include "app/render_options.h"
 #include "app/stats_json.h"
 #include "errors.h"
 #include "gpu/context.h"
@@ -14,15 +14,15 @@
 #include "image/png_writer.h"
 #include "render/scene_buffers.h"
 #include "render/wavefront_renderer.h"
-#include "scene/default_camera.h"
-#include "scene/environment_map.h"
-#include "scene/gltf_loader.h"
 #include "scene/scene_summary.h"
 
 namespace fs = std::filesystem;
 
 namespace wf {
 namespace {
+
+constexpr uint32_t kDefaultWidth = 512;
+constexpr uint32_t kDefaultMaxDepth = 16;
 
 const CommandSpec& renderSpec() {
     static const CommandSpec spec{
@@ -31,42 +31,29 @@ const CommandSpec& renderSpec() {
         "Path traces SCENE (.gltf or .glb) and writes linear radiance to OUT.exr (float32 RGB,\n"
         "with spp, seed and render time as header attributes) and a tonemapped sRGB preview\n"
         "beside it (OUT.png).",
-        {
-            {"--output", "-o", "OUT.exr", "output OpenEXR file (required; must end in .exr)"},
-            {"--spp", "", "N", "samples per pixel (default 64)"},
-            {"--width", "", "W", "image width in pixels (default 512)"},
-            {"--height", "", "H", "image height (default: width / the camera's aspect ratio)"},
-            {"--max-depth", "", "D", "path segments from the camera: 1 shows emitters only, 2 "
-                                     "adds direct light (default 16)"},
-            {"--rr-depth", "", "N", "Russian roulette from bounce N on (default 3)"},
-            {"--light-sampling", "", "MODE", "bsdf (emission found by BSDF rays), nee (light "
-                                             "sampling only) or mis (default)"},
-            {"--triangle-sampling", "", "MODE", "area or solid-angle (spherical triangles; "
-                                                "default)"},
-            {"--sphere-sampling", "", "MODE", "area or solid-angle (the cone; default)"},
-            {"--min-throughput", "", "T", "end paths whose throughput falls below T (biased; "
-                                          "default 0: off)"},
-            {"--clamp", "", "X", "clamp each contribution to X per channel (biased; default "
-                                 "0: off)"},
-            {"--seed", "", "S", "random seed; same seed, same image bit for bit (default 0)"},
-            {"--sampler", "", "NAME", "sample pattern: independent, stratified, multijitter, "
-                                      "halton, hammersley, sobol (default) or bluenoise"},
-            {"--no-randomize", "", "", "same sample points in every pixel and for every seed "
-                                       "(shows a pattern's structure; biased)"},
-            {"--spp-offset", "", "N", "first sample index: renders samples N .. N+spp-1, so "
-                                      "partial renders merge (default 0)"},
-            {"--spp-total", "", "N", "stratified, multijitter, hammersley: samples in the whole "
-                                     "set that this part belongs to (default offset + spp)"},
-            {"--json", "", "STATS.json", "write statistics: spp, seconds, paths/s, rays/s"},
-            {"--device", "", "N", "Vulkan device index (default: WAVEFRONT_DEVICE, else the "
-                                  "first GPU)"},
-            {"--quiet", "-q", "", "no progress line on stderr"},
-            {"--camera", "", "NAME|INDEX", "render from the file's camera of this name or index "
-                                           "(default: the first)"},
-            {"--env", "", "FILE.exr", "equirectangular environment map, linear RGB, +Y up "
-                                      "(default: none; uniform white if nothing emits)"},
-            {"--verbose", "-v", "", "print the scene summary, shader variant and GPU memory"},
-        },
+        joinOptions({
+            {
+                {"--output", "-o", "OUT.exr", "output OpenEXR file (required; must end in .exr)"},
+                {"--spp", "", "N", "samples per pixel (default 64)"},
+            },
+            imageSizeOptions(kDefaultWidth),
+            depthOptions(kDefaultMaxDepth),
+            samplingOptions(),
+            {
+                noRandomizeOption(),
+                {"--spp-offset", "", "N", "first sample index: renders samples N .. N+spp-1, so "
+                                          "partial renders merge (default 0)"},
+                {"--spp-total", "", "N", "stratified, multijitter, hammersley: samples in the "
+                                         "whole set that this part belongs to (default offset + "
+                                         "spp)"},
+                {"--json", "", "STATS.json", "write statistics: spp, seconds, paths/s, rays/s"},
+                deviceOption(),
+                quietOption(),
+                cameraOption(),
+                envOption(),
+                {"--verbose", "-v", "", "print the scene summary, shader variant and GPU memory"},
+            },
+        }),
         "Environment:\n"
         "  WAVEFRONT_DEVICE=N        Vulkan device index, as --device\n"
         "  WAVEFRONT_VALIDATION=1    enable the Khronos validation layer (messages to stderr)\n"
@@ -78,14 +65,8 @@ const CommandSpec& renderSpec() {
     return spec;
 }
 
-// --sampler, --no-randomize, --spp-offset, --spp-total.
-void applySamplerFlags(const ParsedArgs& parsed, RenderSettings& settings) {
-    settings.sampler = parseSampler(
-        parsed.choiceValue("--sampler", samplerName(kDefaultSampler), samplerNames()));
-    settings.randomizeSamples = !parsed.has("--no-randomize");
-    if (!settings.randomizeSamples && settings.sampler == SamplerKind::Independent)
-        throw UsageError("--no-randomize: the independent sampler has no randomization to "
-                         "remove (pick another --sampler)");
+// --spp-offset, --spp-total (after settings.samplesPerPixel).
+void applySppRangeFlags(const ParsedArgs& parsed, RenderSettings& settings) {
     settings.sppOffset = parsed.uintValue("--spp-offset", 0, 0, 1u << 30);
     const uint32_t total = settings.sppOffset + settings.samplesPerPixel;
     settings.sampleSetSize = parsed.uintValue("--spp-total", total, 1, 1u << 31);
@@ -167,49 +148,18 @@ int runRenderCommand(const std::vector<std::string>& args) {
 
     RenderSettings settings;
     settings.samplesPerPixel = parsed.uintValue("--spp", 64, 1, 1u << 20);
-    settings.maxDepth = parsed.uintValue("--max-depth", 16, 1, 1024);
-    settings.rrDepth = parsed.uintValue("--rr-depth", 3, 0, 1024);
-    settings.seed = parsed.uintValue("--seed", 0, 0, 0xffffffffu);
-    settings.lightSampling =
-        parseLightSampling(parsed.choiceValue("--light-sampling", "mis", {"bsdf", "nee", "mis"}));
-    settings.triangleSolidAngle = parsed.choiceValue("--triangle-sampling", "solid-angle",
-                                                     {"area", "solid-angle"}) == "solid-angle";
-    settings.sphereSolidAngle = parsed.choiceValue("--sphere-sampling", "solid-angle",
-                                                   {"area", "solid-angle"}) == "solid-angle";
-    settings.minThroughput = parsed.floatValue("--min-throughput", 0.0f, 0.0f, 1e30f);
-    settings.clampRadiance = parsed.floatValue("--clamp", 0.0f, 0.0f, 1e30f);
-    applySamplerFlags(parsed, settings);
+    applyRenderFlags(parsed, kDefaultMaxDepth, settings);
+    applySppRangeFlags(parsed, settings);
     const bool quiet = parsed.has("--quiet");
     const bool verbose = parsed.has("--verbose");
 
     const std::string scenePath = parsed.positional.front();
-    std::vector<std::string> loadWarnings; // printed once the scene and flags are accepted
-    Scene scene = loadGltf(scenePath, &loadWarnings);
-    if (auto name = parsed.value("--camera")) {
-        scene.camera = selectCamera(scene, *name, scenePath);
-        scene.hasCamera = true;
-    }
-    if (auto env = parsed.value("--env"))
-        scene.environment = loadEnvironmentExr(*env);
-    const SceneSummary summary = summarize(scene);
-    for (const std::string& line : loadWarnings)
-        std::fprintf(stderr, "%s\n", line.c_str());
-    if (!scene.hasCamera)
-        scene.camera = frameBounds(scene);
-    const float aspect = scene.camera.aspect > 0.0f ? scene.camera.aspect : 1.0f;
-    const bool hasWidth = parsed.has("--width"), hasHeight = parsed.has("--height");
-    settings.width = parsed.uintValue("--width", 512, 1, 16384);
-    settings.height = parsed.uintValue("--height", 0, 1, 16384);
-    if (!hasHeight)
-        settings.height = std::max(1u, static_cast<uint32_t>(std::lround(settings.width / aspect)));
-    else if (!hasWidth)
-        settings.width = std::max(1u, static_cast<uint32_t>(std::lround(settings.height * aspect)));
+    SceneSummary summary;
+    Scene scene = loadSceneWithFlags(parsed, scenePath, &summary);
+    applyImageSize(parsed, scene.camera, {.width = kDefaultWidth, .widthFollowsHeight = true},
+                   settings);
 
-    ContextOptions contextOptions;
-    if (parsed.has("--device"))
-        contextOptions.deviceIndex = static_cast<int>(parsed.uintValue("--device", 0, 0, 64));
-    contextOptions.quiet = quiet;
-    Context context(contextOptions);
+    Context context(contextOptionsFrom(parsed));
     ShaderCompiler compiler;
     PreparedScene prepared = prepareScene(std::move(scene));
     WavefrontRenderer renderer(context, prepared, settings, compiler);

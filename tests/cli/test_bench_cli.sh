@@ -11,7 +11,8 @@ check "top help" 0 "$wavefront" --help
 expect "top help lists bench" grep -q "bench SCENE" "$work/stdout"
 check "bench help" 0 "$wavefront" bench --help
 for flag in --width --height --frames --warmup --spp --max-depth --seed --megakernel \
-    --compare-megakernel --budget-ms --wave-paths --json --device; do
+    --compare-megakernel --budget-ms --wave-paths --json --device --sampler \
+    --triangle-sampling --sphere-sampling --min-throughput --clamp --no-randomize --camera --env; do
     expect "bench help lists $flag" grep -q -- "$flag" "$work/stdout"
 done
 
@@ -49,6 +50,14 @@ expect "equal workloads" json_has "$work/m.json" \
 check "megakernel" 0 "$wavefront" bench "$scenes/cornell_box.gltf" "${small[@]}" --megakernel
 expect "megakernel table only" bash -c "! grep -q '^wavefront:' '$work/stdout'"
 
+# The transport, sampler and scene flags are render's (src/app/render_options.h).
+check "bench sampler flags" 0 "$wavefront" bench "$scenes/cornell_box.gltf" "${small[@]}" \
+    --sampler independent --triangle-sampling area --sphere-sampling area --clamp 10
+check "bad sampler" 2 "$wavefront" bench "$scenes/cornell_box.gltf" "${small[@]}" --sampler nope
+expect "bad sampler: one line" one_line_error
+expect "bad sampler: lists the samplers" grep -q "sobol" "$work/stderr"
+check "no-randomize needs a randomized sampler" 2 "$wavefront" bench \
+    "$scenes/cornell_box.gltf" "${small[@]}" --sampler independent --no-randomize
 check "no scene" 2 "$wavefront" bench
 check "bad frames" 2 "$wavefront" bench "$scenes/cornell_box.gltf" --frames 0
 check "unknown flag" 2 "$wavefront" bench "$scenes/cornell_box.gltf" --bogus

@@ -1,0 +1,136 @@
+#include "app/render_options.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "errors.h"
+#include "render/samplers.h"
+#include "scene/default_camera.h"
+#include "scene/environment_map.h"
+#include "scene/gltf_loader.h"
+
+namespace wf {
+
+std::vector<OptionSpec> imageSizeOptions(uint32_t defaultWidth) {
+    return {
+        {"--width", "", "W", "image width in pixels (default " + std::to_string(defaultWidth) +
+                                 ")"},
+        {"--height", "", "H", "image height (default: width / the camera's aspect ratio)"},
+    };
+}
+
+std::vector<OptionSpec> depthOptions(uint32_t defaultMaxDepth) {
+    return {
+        {"--max-depth", "", "D", "path segments from the camera: 1 shows emitters only, 2 adds "
+                                 "direct light (default " + std::to_string(defaultMaxDepth) +
+                                     ")"},
+        {"--rr-depth", "", "N", "Russian roulette from bounce N on (default 3)"},
+    };
+}
+
+std::vector<OptionSpec> samplingOptions() {
+    return {
+        {"--light-sampling", "", "MODE", "bsdf (emission found by BSDF rays), nee (light "
+                                         "sampling only) or mis (default)"},
+        {"--triangle-sampling", "", "MODE", "area or solid-angle (spherical triangles; "
+                                            "default)"},
+        {"--sphere-sampling", "", "MODE", "area or solid-angle (the cone; default)"},
+        {"--min-throughput", "", "T", "end paths whose throughput falls below T (biased; "
+                                      "default 0: off)"},
+        {"--clamp", "", "X", "clamp each contribution to X per channel (biased; default 0: "
+                             "off)"},
+        {"--seed", "", "S", "random seed; same seed, same image bit for bit (default 0)"},
+        {"--sampler", "", "NAME", "sample pattern: independent, stratified, multijitter, "
+                                  "halton, hammersley, sobol (default) or bluenoise"},
+    };
+}
+
+OptionSpec noRandomizeOption() {
+    return {"--no-randomize", "", "", "same sample points in every pixel and for every seed "
+                                      "(shows a pattern's structure; biased)"};
+}
+
+OptionSpec deviceOption() {
+    return {"--device", "", "N", "Vulkan device index (default: WAVEFRONT_DEVICE, else the "
+                                 "first GPU)"};
+}
+
+OptionSpec quietOption() { return {"--quiet", "-q", "", "no progress line on stderr"}; }
+
+OptionSpec cameraOption() {
+    return {"--camera", "", "NAME|INDEX", "render from the file's camera of this name or index "
+                                          "(default: the first)"};
+}
+
+OptionSpec envOption() {
+    return {"--env", "", "FILE.exr", "equirectangular environment map, linear RGB, +Y up "
+                                     "(default: none; uniform white if nothing emits)"};
+}
+
+void applyRenderFlags(const ParsedArgs& parsed, uint32_t defaultMaxDepth,
+                      RenderSettings& settings) {
+    settings.maxDepth = parsed.uintValue("--max-depth", defaultMaxDepth, 1, 1024);
+    settings.rrDepth = parsed.uintValue("--rr-depth", 3, 0, 1024);
+    settings.seed = parsed.uintValue("--seed", 0, 0, 0xffffffffu);
+    settings.lightSampling =
+        parseLightSampling(parsed.choiceValue("--light-sampling", "mis", {"bsdf", "nee", "mis"}));
+    settings.triangleSolidAngle = parsed.choiceValue("--triangle-sampling", "solid-angle",
+                                                     {"area", "solid-angle"}) == "solid-angle";
+    settings.sphereSolidAngle = parsed.choiceValue("--sphere-sampling", "solid-angle",
+                                                   {"area", "solid-angle"}) == "solid-angle";
+    settings.minThroughput = parsed.floatValue("--min-throughput", 0.0f, 0.0f, 1e30f);
+    settings.clampRadiance = parsed.floatValue("--clamp", 0.0f, 0.0f, 1e30f);
+    settings.sampler = parseSampler(
+        parsed.choiceValue("--sampler", samplerName(kDefaultSampler), samplerNames()));
+    settings.randomizeSamples = !parsed.has("--no-randomize");
+    if (!settings.randomizeSamples && settings.sampler == SamplerKind::Independent)
+        throw UsageError("--no-randomize: the independent sampler has no randomization to "
+                         "remove (pick another --sampler)");
+}
+
+ContextOptions contextOptionsFrom(const ParsedArgs& parsed) {
+    ContextOptions options;
+    if (parsed.has("--device"))
+        options.deviceIndex = static_cast<int>(parsed.uintValue("--device", 0, 0, 64));
+    options.quiet = parsed.has("--quiet");
+    return options;
+}
+
+Scene loadSceneWithFlags(const ParsedArgs& parsed, const std::string& path,
+                         SceneSummary* summary) {
+    std::vector<std::string> warnings; // printed once the scene and flags are accepted
+    Scene scene = loadGltf(path, &warnings);
+    if (auto name = parsed.value("--camera")) {
+        scene.camera = selectCamera(scene, *name, path);
+        scene.hasCamera = true;
+    }
+    if (auto env = parsed.value("--env"))
+        scene.environment = loadEnvironmentExr(*env);
+    if (summary)
+        *summary = summarize(scene);
+    for (const std::string& line : warnings)
+        std::fprintf(stderr, "%s\n", line.c_str());
+    if (!scene.hasCamera)
+        scene.camera = frameBounds(scene);
+    return scene;
+}
+
+void applyImageSize(const ParsedArgs& parsed, const Camera& camera, const ImageSizeRule& rule,
+                    RenderSettings& settings) {
+    const float aspect = camera.aspect > 0.0f ? camera.aspect : 1.0f;
+    const auto rounded = [](float size) {
+        return std::max(1u, static_cast<uint32_t>(std::lround(size)));
+    };
+    const bool hasWidth = parsed.has("--width"), hasHeight = parsed.has("--height");
+    settings.width = parsed.uintValue("--width", rule.width, 1, 16384);
+    settings.height = parsed.uintValue("--height", 0, 1, 16384);
+    if (!hasHeight && rule.height && !hasWidth)
+        settings.height = *rule.height;
+    else if (!hasHeight)
+        settings.height = rounded(settings.width / aspect);
+    else if (!hasWidth && rule.widthFollowsHeight)
+        settings.width = rounded(settings.height * aspect);
+}
+
+} // namespace wf

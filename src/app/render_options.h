@@ -1,0 +1,58 @@
+// The flags that render, view, bench and converge share, declared once: their OptionSpecs
+// (the help text each command shows) and their parsing into RenderSettings and ContextOptions,
+// the scene load that --camera and --env change, and the image size that --width, --height and
+// the camera's aspect ratio give. A command lists the groups it offers in its CommandSpec
+// (joinOptions) and reads them with the functions below; a flag a command does not declare
+// cannot be given (parseArgs refuses it), so reading it yields its default.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/cli.h"
+#include "gpu/context.h"
+#include "render/wavefront_renderer.h"
+#include "scene/scene.h"
+#include "scene/scene_summary.h"
+
+namespace wf {
+
+// Declarations, each group in the order --help lists it.
+std::vector<OptionSpec> imageSizeOptions(uint32_t defaultWidth); // --width, --height
+std::vector<OptionSpec> depthOptions(uint32_t defaultMaxDepth);  // --max-depth, --rr-depth
+// --light-sampling, --triangle-sampling, --sphere-sampling, --min-throughput, --clamp, --seed,
+// --sampler.
+std::vector<OptionSpec> samplingOptions();
+OptionSpec noRandomizeOption(); // --no-randomize
+OptionSpec deviceOption();      // --device
+OptionSpec quietOption();       // --quiet, -q: no progress lines
+OptionSpec cameraOption();      // --camera: one of the file's cameras
+OptionSpec envOption();         // --env
+
+// depthOptions, samplingOptions and --no-randomize into `settings` (UsageError on a bad value).
+void applyRenderFlags(const ParsedArgs& parsed, uint32_t defaultMaxDepth,
+                      RenderSettings& settings);
+
+// --device and --quiet.
+ContextOptions contextOptionsFrom(const ParsedArgs& parsed);
+
+// Loads the glTF file at `path`, takes the file's camera that --camera names and the
+// environment map --env names, prints the loader's warnings once those are accepted, then
+// frames the scene when it has no camera. `summary`, when given, describes the scene as loaded
+// (before framing). Throws InputError for a bad file, camera or map.
+Scene loadSceneWithFlags(const ParsedArgs& parsed, const std::string& path,
+                         SceneSummary* summary = nullptr);
+
+// How a command sizes its image from --width, --height and the camera's aspect ratio.
+struct ImageSizeRule {
+    uint32_t width = 512;           // without --width
+    std::optional<uint32_t> height; // with neither flag (else: width / aspect)
+    bool widthFollowsHeight = true; // with --height alone: width = height x aspect
+};
+
+// Sets settings.width and settings.height (each 1 .. 16384; UsageError otherwise).
+void applyImageSize(const ParsedArgs& parsed, const Camera& camera, const ImageSizeRule& rule,
+                    RenderSettings& settings);
+
+} // namespace wf
