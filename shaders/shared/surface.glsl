@@ -35,7 +35,7 @@ vec3 decodeUnit(uint packed) { return octDecode(unpackSnorm2x16(packed)); }
 vec3 frontShadingNormal(uint triangleIndex, Material material, float b1, float b2, vec3 ng) {
     vec3 n = ng;
 #if WF_HAS_NORMALS
-    TriangleNormals corners = vertexNormals[triangleIndex];
+    TriangleNormals corners = triangleNormalsAt(triangleIndex);
     float b0 = 1.0 - b1 - b2;
     vec3 sum = b0 * decodeUnit(corners.n0) + b1 * decodeUnit(corners.n1) +
                b2 * decodeUnit(corners.n2);
@@ -44,7 +44,7 @@ vec3 frontShadingNormal(uint triangleIndex, Material material, float b1, float b
 #endif
 #if WF_HAS_NORMAL_MAPS
     if (material.normalTexture != WF_NO_TEXTURE) {
-        TriangleTangents frame = vertexTangents[triangleIndex];
+        TriangleTangents frame = triangleTangentsAt(triangleIndex);
         vec3 t = (1.0 - b1 - b2) * decodeUnit(frame.t0) + b1 * decodeUnit(frame.t1) +
                  b2 * decodeUnit(frame.t2);
         t -= n * dot(n, t); // Gram-Schmidt against the interpolated normal

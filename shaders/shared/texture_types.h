@@ -1,7 +1,9 @@
-// Per-triangle vertex attributes and textures as the GPU reads them (std430). Every buffer here
-// exists only for scenes that use it (see src/render/scene_buffers.cpp): a scene without
-// textures has no texel, texture-reference or UV buffer, one without smooth normals no normal
-// buffer. Included by C++ and GLSL; the C++ side asserts the layout.
+// Per-triangle vertex attributes and textures as the GPU reads them: uint texel buffers that
+// surface_bindings.glsl unpacks into these structs, so each struct is a whole number of texels
+// (WF_*_TEXELS, asserted below). Every buffer here exists only for scenes that use it (see
+// src/render/surface_buffers.cpp): a scene without textures has no texel, texture-reference or
+// UV buffer, one without smooth normals no normal buffer. Included by C++ and GLSL; the C++
+// side asserts the layout.
 #ifndef WF_TEXTURE_TYPES_H
 #define WF_TEXTURE_TYPES_H
 
@@ -38,8 +40,8 @@ using namespace glm;
 #define WF_BINDING_TANGENTS 22
 #define WF_BINDING_TEXCOORDS0 23
 #define WF_BINDING_TEXCOORDS1 24
-#define WF_BINDING_TEXELS0 25 // texel pages 0..3: images split across storage buffers so that
-#define WF_MAX_TEXEL_PAGES 4  // none passes the device's per-buffer limit (lavapipe: 128 MiB)
+#define WF_BINDING_TEXELS0 25 // texel pages 0..3: images split across buffers so that none
+#define WF_MAX_TEXEL_PAGES 4  // passes the device's per-buffer limit (lavapipe: 128 MiB)
 
 // TextureRef.flags: bits 0-1 wrap S, bits 2-3 wrap T, then switches.
 #define WF_WRAP_REPEAT 0u
@@ -51,7 +53,7 @@ using namespace glm;
 
 // One material's use of one image: which texel page and where in it, how to wrap and filter,
 // and the KHR_texture_transform as a 2x3 matrix: uv' = (dot(uRow, (u, v, 1)),
-// dot(vRow, (u, v, 1))). Texels are RGBA8, one uint each, rows top first.
+// dot(vRow, (u, v, 1))). Texels are RGBA8, one uint (one R32UI texel) each, rows top first.
 struct TextureRef {
     vec3 uRow;
     uint page;
@@ -62,6 +64,7 @@ struct TextureRef {
     uint flags;  // WF_WRAP_* | WF_TEXTURE_*
     uint pad;
 };
+#define WF_TEXTURE_REF_TEXELS 3u // RGBA32UI
 
 // Shading normals at a triangle's three corners (world space), each octahedral-encoded in two
 // 16-bit snorms (packSnorm2x16): 16 bytes per triangle instead of 48.
@@ -71,6 +74,7 @@ struct TriangleNormals {
     uint n2;
     uint pad;
 };
+#define WF_TRIANGLE_NORMALS_TEXELS 1u // RGBA32UI
 
 // Tangents at the corners, octahedral like the normals; bit k of `signs` set means corner k's
 // bitangent is -cross(normal, tangent) (glTF TANGENT.w = -1, mirrored UVs).
@@ -80,6 +84,7 @@ struct TriangleTangents {
     uint t2;
     uint signs;
 };
+#define WF_TRIANGLE_TANGENTS_TEXELS 1u // RGBA32UI
 
 // One UV set at a triangle's corners (TEXCOORD_0 or TEXCOORD_1), as the file gives them.
 struct TriangleUvs {
@@ -87,6 +92,7 @@ struct TriangleUvs {
     vec2 uv1;
     vec2 uv2;
 };
+#define WF_TRIANGLE_UVS_TEXELS 3u // RG32UI, one corner each
 
 // Octahedral mapping of unit vectors onto [-1, 1]^2 (Cigolle et al. 2014): decode half, shared
 // so the CPU tests check it against the C++ encoder in the loader.
@@ -103,14 +109,15 @@ WF_INLINE vec3 octDecode(vec2 e) {
 
 #ifdef __cplusplus
 } // namespace wf::gpu_types
-static_assert(sizeof(wf::gpu_types::TextureRef) == 48);
+static_assert(sizeof(wf::gpu_types::TextureRef) == 16 * WF_TEXTURE_REF_TEXELS);
 static_assert(offsetof(wf::gpu_types::TextureRef, page) == 12);
 static_assert(offsetof(wf::gpu_types::TextureRef, vRow) == 16);
 static_assert(offsetof(wf::gpu_types::TextureRef, offset) == 28);
 static_assert(offsetof(wf::gpu_types::TextureRef, flags) == 40);
-static_assert(sizeof(wf::gpu_types::TriangleNormals) == 16);
-static_assert(sizeof(wf::gpu_types::TriangleTangents) == 16);
-static_assert(sizeof(wf::gpu_types::TriangleUvs) == 24);
+static_assert(sizeof(wf::gpu_types::TriangleNormals) == 16 * WF_TRIANGLE_NORMALS_TEXELS);
+static_assert(sizeof(wf::gpu_types::TriangleTangents) == 16 * WF_TRIANGLE_TANGENTS_TEXELS);
+static_assert(sizeof(wf::gpu_types::TriangleUvs) == 8 * WF_TRIANGLE_UVS_TEXELS);
+static_assert(offsetof(wf::gpu_types::TriangleUvs, uv1) == 8);
 static_assert(offsetof(wf::gpu_types::TriangleUvs, uv2) == 16);
 #endif
 

@@ -15,27 +15,8 @@ vec2 interpolateUv(TriangleUvs uvs, float b1, float b2) {
 
 // The UV set a texture reference reads, at barycentrics (b1, b2) of a triangle.
 vec2 textureUv(uint triangle, uint flags, float b1, float b2) {
-#if WF_HAS_TEXCOORD1
-    if ((flags & WF_TEXTURE_TEXCOORD1) != 0u)
-        return interpolateUv(texcoords1[triangle], b1, b2);
-#endif
-    return interpolateUv(texcoords0[triangle], b1, b2);
-}
-
-uint fetchTexel(uint page, uint index) {
-#if WF_TEXEL_PAGES > 1
-    if (page == 1u)
-        return texels1[index];
-#endif
-#if WF_TEXEL_PAGES > 2
-    if (page == 2u)
-        return texels2[index];
-#endif
-#if WF_TEXEL_PAGES > 3
-    if (page == 3u)
-        return texels3[index];
-#endif
-    return texels0[index];
+    uint layer = (flags & WF_TEXTURE_TEXCOORD1) != 0u ? 1u : 0u;
+    return interpolateUv(triangleUvsAt(layer, triangle), b1, b2);
 }
 
 // Folds a texel coordinate into [0, n) by the wrap mode. uv was already reduced to a small
@@ -70,15 +51,14 @@ vec4 loadTexel(TextureRef ref, int x, int y) {
     uint wrapS = ref.flags & 3u;
     uint wrapT = (ref.flags >> 2) & 3u;
     uint index = uint(wrapTexel(y, h, wrapT)) * ref.width + uint(wrapTexel(x, w, wrapS));
-    vec4 texel = unpackUnorm4x8(fetchTexel(ref.page, ref.offset + index));
+    vec4 texel = unpackUnorm4x8(texelAt(ref.page, ref.offset + index));
     if ((ref.flags & WF_TEXTURE_SRGB) != 0u)
         texel.rgb = srgbToLinear(texel.rgb);
     return texel;
 }
 
-// RGBA (linear; alpha as stored) of texture reference `refIndex` at the file's uv.
-vec4 sampleTexture(uint refIndex, vec2 uvFile) {
-    TextureRef ref = textureRefs[refIndex];
+// RGBA (linear; alpha as stored) of texture reference `ref` at the file's uv.
+vec4 sampleTexture(TextureRef ref, vec2 uvFile) {
     vec3 h = vec3(uvFile, 1.0);
     vec2 uv = vec2(dot(ref.uRow, h), dot(ref.vRow, h));
     uv.x = reduceCoordinate(uv.x, ref.flags & 3u);
@@ -100,7 +80,8 @@ vec4 sampleTexture(uint refIndex, vec2 uvFile) {
 
 // Samples reference `refIndex` on triangle `triangle` at barycentrics (b1, b2).
 vec4 sampleTriangleTexture(uint refIndex, uint triangle, float b1, float b2) {
-    return sampleTexture(refIndex, textureUv(triangle, textureRefs[refIndex].flags, b1, b2));
+    TextureRef ref = textureRefAt(refIndex);
+    return sampleTexture(ref, textureUv(triangle, ref.flags, b1, b2));
 }
 
 #endif

@@ -12,20 +12,41 @@ namespace wf {
 namespace {
 
 VkDescriptorType descriptorType(BufferAccess access) {
-    switch (access) {
-    case BufferAccess::UintTexels:
+    if (texelBytes(access) != 0)
         return VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
-    case BufferAccess::Uniform:
-        return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-    case BufferAccess::Storage:
-        break;
-    }
-    return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    return access == BufferAccess::Uniform ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
+                                           : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 }
 
-constexpr VkDeviceSize kTexelBytes = 16; // RGBA32UI
+// Integer formats only: a float format could flush denormals or canonicalise NaNs. All three
+// must support uniform texel buffers on every Vulkan device.
+VkFormat texelFormat(BufferAccess access) {
+    switch (access) {
+    case BufferAccess::Uint1Texels:
+        return VK_FORMAT_R32_UINT;
+    case BufferAccess::Uint2Texels:
+        return VK_FORMAT_R32G32_UINT;
+    default:
+        return VK_FORMAT_R32G32B32A32_UINT;
+    }
+}
 
 } // namespace
+
+uint32_t texelBytes(BufferAccess access) {
+    switch (access) {
+    case BufferAccess::UintTexels:
+        return 16;
+    case BufferAccess::Uint2Texels:
+        return 8;
+    case BufferAccess::Uint1Texels:
+        return 4;
+    case BufferAccess::Storage:
+    case BufferAccess::Uniform:
+        break;
+    }
+    return 0;
+}
 
 DescriptorTable::DescriptorTable(const Context& context, const DescriptorBindings& bindings)
     : device_(context.device()) {
@@ -81,16 +102,16 @@ void DescriptorTable::create(const Context& context, const DescriptorBindings& b
         writes[i].dstBinding = entry.binding;
         writes[i].descriptorCount = 1;
         writes[i].descriptorType = descriptorType(entry.access);
-        if (entry.access == BufferAccess::UintTexels) {
-            const VkDeviceSize texels = entry.buffer->size() / kTexelBytes;
+        if (const VkDeviceSize bytes = texelBytes(entry.access); bytes != 0) {
+            const VkDeviceSize texels = entry.buffer->size() / bytes;
             if (texels > maxTexels)
                 throw InputError("buffer '" + entry.buffer->name() + "' holds " +
                                  std::to_string(texels) + " texels, over the device's limit of " +
                                  std::to_string(maxTexels));
             VkBufferViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
             viewInfo.buffer = entry.buffer->handle();
-            viewInfo.format = VK_FORMAT_R32G32B32A32_UINT;
-            viewInfo.range = texels * kTexelBytes;
+            viewInfo.format = texelFormat(entry.access);
+            viewInfo.range = texels * bytes;
             VkBufferView view = VK_NULL_HANDLE;
             VK_CHECK(vkCreateBufferView(device_, &viewInfo, nullptr, &view));
             views_.push_back(view);

@@ -15,11 +15,17 @@ class Buffer;
 class Context;
 
 // How a shader reads a buffer. Read-only tables that passes fetch at scattered indices are
-// bound as uniform texel buffers of RGBA32UI (GLSL usamplerBuffer): lavapipe turns a texel
+// bound as uniform texel buffers of 32-bit uints (GLSL usamplerBuffer): lavapipe turns a texel
 // fetch into one vector gather but a storage-buffer load into a branchy loop over the lanes,
-// 2.5-3x slower per vec4 (docs/architecture.md, "Reading memory on lavapipe"). Small
-// read-only blocks every invocation reads at the same address are uniform buffers (std140).
-enum class BufferAccess { Storage, UintTexels, Uniform };
+// 2.5-3x slower per vec4 (docs/architecture.md, "Reading memory on lavapipe"). A table picks
+// the texel that divides its struct: UintTexels (RGBA32UI, 16 bytes), Uint2Texels (RG32UI,
+// 8 bytes) or Uint1Texels (R32UI, 4 bytes); shaders unpack floats with uintBitsToFloat, so the
+// bits are exactly those stored. Small read-only blocks every invocation reads at the same
+// address are uniform buffers (std140).
+enum class BufferAccess { Storage, UintTexels, Uint2Texels, Uint1Texels, Uniform };
+
+// Bytes per texel of a texel access (0 for Storage and Uniform).
+uint32_t texelBytes(BufferAccess access);
 
 struct DescriptorBinding {
     uint32_t binding;

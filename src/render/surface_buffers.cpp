@@ -73,12 +73,18 @@ TexelPlan planTexels(const SurfaceData& surface, uint64_t pageBytes) {
         const uint64_t limit = WF_MAX_TEXEL_PAGES * pageTexels * 4;
         throw InputError("the scene's textures need " + std::to_string((total * 4) >> 20) +
                          " MiB, over the " + std::to_string(limit >> 20) + " MiB that " +
-                         std::to_string(WF_MAX_TEXEL_PAGES) + " storage buffers of " +
+                         std::to_string(WF_MAX_TEXEL_PAGES) + " texel buffers of " +
                          std::to_string((pageTexels * 4) >> 20) + " MiB (the device's limit) " +
                          "hold, by " + std::to_string((total * 4 - limit) >> 20) +
                          " MiB; use smaller images");
     }
     return plan;
+}
+
+uint64_t texelPageBytes(const Context& context) {
+    const VkPhysicalDeviceLimits& limits = context.properties().limits;
+    return std::min<uint64_t>(limits.maxStorageBufferRange,
+                              uint64_t(limits.maxTexelBufferElements) * 4);
 }
 
 void tagTriangles(std::vector<Triangle>& triangles) {
@@ -130,7 +136,8 @@ SurfaceBuffers::SurfaceBuffers(const Context& context, const SurfaceData& surfac
     if (features.texcoord1)
         uv1_ = uploadArray(context, "texcoords 1", surface.uv1);
 
-    const TexelPlan plan = planTexels(surface, context.properties().limits.maxStorageBufferRange);
+    const uint64_t pageBytes = texelPageBytes(context);
+    const TexelPlan plan = planTexels(surface, pageBytes);
     std::vector<TextureRef> refs = surface.textureRefs;
     for (size_t r = 0; r < refs.size(); ++r) {
         const uint32_t image = surface.refImage[r];
@@ -157,8 +164,7 @@ SurfaceBuffers::SurfaceBuffers(const Context& context, const SurfaceData& surfac
             if (place.halvings > 0)
                 std::fprintf(stderr, "warning: %s halved %u times to fit a %llu MiB buffer\n",
                              surface.images[i].name.c_str(), place.halvings,
-                             static_cast<unsigned long long>(
-                                 context.properties().limits.maxStorageBufferRange >> 20));
+                             static_cast<unsigned long long>(pageBytes >> 20));
             std::copy(image->rgba.begin(), image->rgba.end(), texels.begin() + place.offset);
         }
         const std::string name = "texels " + std::to_string(page);
@@ -166,17 +172,20 @@ SurfaceBuffers::SurfaceBuffers(const Context& context, const SurfaceData& surfac
     }
 }
 
-void SurfaceBuffers::appendBindings(
-    DescriptorBindings& bindings) const {
+// All read-only at scattered indices, so texel buffers (surface_bindings.glsl unpacks them).
+void SurfaceBuffers::appendBindings(DescriptorBindings& bindings) const {
     const DescriptorBinding all[] = {
-        {WF_BINDING_NORMALS, &normals_},         {WF_BINDING_TANGENTS, &tangents_},
-        {WF_BINDING_TEXCOORDS0, &uv0_},          {WF_BINDING_TEXCOORDS1, &uv1_},
-        {WF_BINDING_TEXTURE_REFS, &textureRefs_}};
+        {WF_BINDING_NORMALS, &normals_, BufferAccess::UintTexels},
+        {WF_BINDING_TANGENTS, &tangents_, BufferAccess::UintTexels},
+        {WF_BINDING_TEXCOORDS0, &uv0_, BufferAccess::Uint2Texels},
+        {WF_BINDING_TEXCOORDS1, &uv1_, BufferAccess::Uint2Texels},
+        {WF_BINDING_TEXTURE_REFS, &textureRefs_, BufferAccess::UintTexels}};
     for (const auto& binding : all)
         if (*binding.buffer)
             bindings.push_back(binding);
     for (size_t page = 0; page < texelPages_.size(); ++page)
-        bindings.push_back({WF_BINDING_TEXELS0 + uint32_t(page), &texelPages_[page]});
+        bindings.push_back(
+            {WF_BINDING_TEXELS0 + uint32_t(page), &texelPages_[page], BufferAccess::Uint1Texels});
 }
 
 void SurfaceBuffers::appendMemoryReport(

@@ -1,7 +1,8 @@
 // The GPU side of SurfaceData: per-triangle normals, tangents and UVs, the texture-reference
-// table and the texels, each buffer created only when the scene uses it. Texels are packed
-// into up to WF_MAX_TEXEL_PAGES storage buffers ("pages") so that none passes the device's
-// per-buffer limit (lavapipe: 128 MiB); an image too big for one page is halved until it fits.
+// table and the texels, each buffer created only when the scene uses it and bound as a texel
+// buffer (surface_bindings.glsl). Texels are packed into up to WF_MAX_TEXEL_PAGES buffers
+// ("pages") so that none passes the device's per-buffer limits (lavapipe: 128 MiB); an image
+// too big for one page is halved until it fits.
 #pragma once
 #include <cstdint>
 #include <string>
@@ -33,6 +34,9 @@ struct TexelPlan {
 // Throws InputError naming the limit and the excess when the texels need more than
 // WF_MAX_TEXEL_PAGES pages of `pageBytes`.
 TexelPlan planTexels(const SurfaceData& surface, uint64_t pageBytes);
+
+// The largest page the device can hold as one buffer and view as R32UI texels.
+uint64_t texelPageBytes(const Context& context);
 
 // The BVH builder reorders triangles; the per-triangle arrays must follow. Before the build,
 // tagTriangles stores each triangle's index in its `pad`; afterwards followTriangleOrder

@@ -56,8 +56,7 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
     wavePaths_ = settings.submitBudgetSeconds > 0.0 && cpu ? std::min(pathCapacity_, 1u << 12)
                                                            : pathCapacity_;
     variant_ = chooseVariant(scene, settings);
-    variant_.surface = surfaceFeatures(scene.surface, scene.materials,
-                                       context.properties().limits.maxStorageBufferRange);
+    variant_.surface = surfaceFeatures(scene.surface, scene.materials, texelPageBytes(context));
     defines_ = variant_.defines();
     sceneBuffers_ = std::make_unique<SceneBuffers>(context, scene, variant_);
     pathBuffers_ = std::make_unique<PathBuffers>(context, pathCapacity_, pixelCount_,

@@ -90,8 +90,8 @@ TEST(Textures, SceneWithoutTexturesHasNoTextureCodeOrBuffers) {
     // The compiled code itself: no texture buffer or sampling function in any pass...
     for (const char* pass : {"shade.comp", "intersect.comp", "shadow.comp"}) {
         const std::vector<uint32_t> spirv = compiler.compile(pass, defines).spirv;
-        for (const char* name : {"TexelPage0", "TextureRefBuffer", "Texcoord0Buffer",
-                                 "NormalBuffer", "sampleTexture", "wfAlphaPasses"}) {
+        for (const char* name : {"texelPage0", "textureRefTexels", "texcoord0Texels",
+                                 "normalTexels", "sampleTexture", "wfAlphaPasses"}) {
             EXPECT_FALSE(spirvMentions(spirv, name)) << pass << " has " << name;
         }
     }
@@ -105,8 +105,8 @@ TEST(Textures, SceneWithoutTexturesHasNoTextureCodeOrBuffers) {
             value = "2";
     }
     const std::vector<uint32_t> shade = compiler.compile("shade.comp", textured).spirv;
-    EXPECT_TRUE(spirvMentions(shade, "TexelPage1"));
-    EXPECT_TRUE(spirvMentions(shade, "NormalBuffer"));
+    EXPECT_TRUE(spirvMentions(shade, "texelPage1"));
+    EXPECT_TRUE(spirvMentions(shade, "normalTexels"));
     EXPECT_TRUE(spirvMentions(compiler.compile("shadow.comp", textured).spirv, "wfAlphaPasses"));
     EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
 }
