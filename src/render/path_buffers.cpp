@@ -8,18 +8,20 @@ using gpu_types::QueueCounters;
 using gpu_types::RenderParams;
 
 PathBuffers::PathBuffers(const Context& context, uint32_t pathCapacity, uint32_t pixelCount,
-                         bool withShadowRays)
+                         PathStateUse use)
     : params(context, "params", sizeof(RenderParams)),
       counters(context, "queue counters", sizeof(QueueCounters),
                VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT),
       film(context, "film", uint64_t(pixelCount) * 16),
-      rayOrigin(context, "ray origins", uint64_t(pathCapacity) * 16),
-      rayDirection(context, "ray directions", uint64_t(pathCapacity) * 16),
-      throughput(context, "throughput", uint64_t(pathCapacity) * 16),
-      radiance(context, "path radiance", uint64_t(pathCapacity) * 16),
-      hits(context, "hits", uint64_t(pathCapacity) * 16),
-      rayQueues(context, "ray queues", uint64_t(pathCapacity) * 2 * 4) {
-    if (!withShadowRays)
+      radiance(context, "path radiance", uint64_t(pathCapacity) * 16) {
+    if (use == PathStateUse::Megakernel)
+        return; // its paths live in registers from camera to film
+    rayOrigin = Buffer(context, "ray origins", uint64_t(pathCapacity) * 16);
+    rayDirection = Buffer(context, "ray directions", uint64_t(pathCapacity) * 16);
+    throughput = Buffer(context, "throughput", uint64_t(pathCapacity) * 16);
+    hits = Buffer(context, "hits", uint64_t(pathCapacity) * 16);
+    rayQueues = Buffer(context, "ray queues", uint64_t(pathCapacity) * 2 * 4);
+    if (use != PathStateUse::WavefrontWithShadowRays)
         return;
     shadowOrigin = Buffer(context, "shadow origins", uint64_t(pathCapacity) * 16);
     shadowDirection = Buffer(context, "shadow directions", uint64_t(pathCapacity) * 16);
@@ -27,35 +29,34 @@ PathBuffers::PathBuffers(const Context& context, uint32_t pathCapacity, uint32_t
     shadowQueue = Buffer(context, "shadow queue", uint64_t(pathCapacity) * 4);
 }
 
-void PathBuffers::appendBindings(
-    DescriptorBindings& bindings) const {
+void PathBuffers::appendBindings(DescriptorBindings& bindings) const {
     bindings.push_back({WF_BINDING_PARAMS, &params, BufferAccess::Uniform});
-    bindings.push_back({WF_BINDING_COUNTERS, &counters});
-    bindings.push_back({WF_BINDING_FILM, &film});
-    bindings.push_back({WF_BINDING_RAY_ORIGIN, &rayOrigin});
-    bindings.push_back({WF_BINDING_RAY_DIRECTION, &rayDirection});
-    bindings.push_back({WF_BINDING_THROUGHPUT, &throughput});
-    bindings.push_back({WF_BINDING_RADIANCE, &radiance});
-    bindings.push_back({WF_BINDING_HITS, &hits});
-    bindings.push_back({WF_BINDING_RAY_QUEUES, &rayQueues});
-    // The same buffers again as texel views, through which the passes read them.
-    bindings.push_back({WF_BINDING_RAY_ORIGIN_TEXELS, &rayOrigin, BufferAccess::UintTexels});
-    bindings.push_back({WF_BINDING_RAY_DIRECTION_TEXELS, &rayDirection, BufferAccess::UintTexels});
-    bindings.push_back({WF_BINDING_THROUGHPUT_TEXELS, &throughput, BufferAccess::UintTexels});
-    bindings.push_back({WF_BINDING_RADIANCE_TEXELS, &radiance, BufferAccess::UintTexels});
-    bindings.push_back({WF_BINDING_HITS_TEXELS, &hits, BufferAccess::UintTexels});
-    if (shadowQueue) {
-        bindings.push_back(
-            {WF_BINDING_SHADOW_ORIGIN_TEXELS, &shadowOrigin, BufferAccess::UintTexels});
-        bindings.push_back(
-            {WF_BINDING_SHADOW_DIRECTION_TEXELS, &shadowDirection, BufferAccess::UintTexels});
-        bindings.push_back(
-            {WF_BINDING_SHADOW_RADIANCE_TEXELS, &shadowRadiance, BufferAccess::UintTexels});
-        bindings.push_back({WF_BINDING_SHADOW_ORIGIN, &shadowOrigin});
-        bindings.push_back({WF_BINDING_SHADOW_DIRECTION, &shadowDirection});
-        bindings.push_back({WF_BINDING_SHADOW_RADIANCE, &shadowRadiance});
-        bindings.push_back({WF_BINDING_SHADOW_QUEUE, &shadowQueue});
-    }
+    const DescriptorBinding all[] = {
+        {WF_BINDING_COUNTERS, &counters},
+        {WF_BINDING_FILM, &film},
+        {WF_BINDING_RAY_ORIGIN, &rayOrigin},
+        {WF_BINDING_RAY_DIRECTION, &rayDirection},
+        {WF_BINDING_THROUGHPUT, &throughput},
+        {WF_BINDING_RADIANCE, &radiance},
+        {WF_BINDING_HITS, &hits},
+        {WF_BINDING_RAY_QUEUES, &rayQueues},
+        {WF_BINDING_SHADOW_ORIGIN, &shadowOrigin},
+        {WF_BINDING_SHADOW_DIRECTION, &shadowDirection},
+        {WF_BINDING_SHADOW_RADIANCE, &shadowRadiance},
+        {WF_BINDING_SHADOW_QUEUE, &shadowQueue},
+        // The path state again as texel views, through which the passes read it.
+        {WF_BINDING_RAY_ORIGIN_TEXELS, &rayOrigin, BufferAccess::UintTexels},
+        {WF_BINDING_RAY_DIRECTION_TEXELS, &rayDirection, BufferAccess::UintTexels},
+        {WF_BINDING_THROUGHPUT_TEXELS, &throughput, BufferAccess::UintTexels},
+        {WF_BINDING_RADIANCE_TEXELS, &radiance, BufferAccess::UintTexels},
+        {WF_BINDING_HITS_TEXELS, &hits, BufferAccess::UintTexels},
+        {WF_BINDING_SHADOW_ORIGIN_TEXELS, &shadowOrigin, BufferAccess::UintTexels},
+        {WF_BINDING_SHADOW_DIRECTION_TEXELS, &shadowDirection, BufferAccess::UintTexels},
+        {WF_BINDING_SHADOW_RADIANCE_TEXELS, &shadowRadiance, BufferAccess::UintTexels},
+    };
+    for (const DescriptorBinding& binding : all)
+        if (*binding.buffer)
+            bindings.push_back(binding);
 }
 
 void PathBuffers::appendMemoryReport(

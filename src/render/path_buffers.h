@@ -1,6 +1,7 @@
 // Per-render GPU state: parameters, queue counters, the film, and the path state as
 // structure-of-arrays buffers of `pathCapacity` entries (one path per pixel sample of a wave).
-// The shadow-ray buffers exist only for scenes with emitters to connect to.
+// The megakernel keeps its paths in registers and gets only the parameters, counters, film and
+// per-path radiance; the shadow-ray buffers exist only for scenes with emitters to connect to.
 #pragma once
 #include <string>
 #include <utility>
@@ -13,9 +14,11 @@ namespace wf {
 
 class Context;
 
+enum class PathStateUse { Megakernel, Wavefront, WavefrontWithShadowRays };
+
 struct PathBuffers {
     PathBuffers(const Context& context, uint32_t pathCapacity, uint32_t pixelCount,
-                bool withShadowRays);
+                PathStateUse use);
 
     void appendBindings(DescriptorBindings& bindings) const;
     void appendMemoryReport(std::vector<std::pair<std::string, uint64_t>>& report) const;

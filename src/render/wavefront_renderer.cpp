@@ -59,8 +59,12 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
     variant_.surface = surfaceFeatures(scene.surface, scene.materials, texelPageBytes(context));
     defines_ = variant_.defines();
     sceneBuffers_ = std::make_unique<SceneBuffers>(context, scene, variant_);
-    pathBuffers_ = std::make_unique<PathBuffers>(context, pathCapacity_, pixelCount_,
-                                                 variant_.nextEventEstimation);
+    const PathStateUse pathState = settings.megakernel ? PathStateUse::Megakernel
+                                   : variant_.nextEventEstimation
+                                       ? PathStateUse::WavefrontWithShadowRays
+                                       : PathStateUse::Wavefront;
+    pathBuffers_ =
+        std::make_unique<PathBuffers>(context, pathCapacity_, pixelCount_, pathState);
     DescriptorBindings bindings;
     sceneBuffers_->appendBindings(bindings);
     pathBuffers_->appendBindings(bindings);
