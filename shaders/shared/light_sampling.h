@@ -40,29 +40,32 @@ WF_INLINE bool useSphericalTriangleSampling(float solidAngle) {
 WF_INLINE vec3 gramSchmidt(vec3 v, vec3 w) { return v - dot(v, w) * w; }
 
 // Arvo's area-preserving map from u to a direction inside the spherical triangle with unit
-// vertices a, b, c; the density is 1 / solidAngle. Returns (0,0,0) for a degenerate triangle.
-WF_INLINE vec3 sampleSphericalTriangle(vec3 a, vec3 b, vec3 c, vec2 u) {
+// vertices a, b, c and area solidAngle (triangleSolidAngle: more accurate for small triangles
+// than pi less the sum of the interior angles, and it spares the shade pass three acos); the
+// density is 1 / solidAngle. Returns (0,0,0) for a degenerate triangle.
+WF_INLINE vec3 sampleSphericalTriangle(vec3 a, vec3 b, vec3 c, float solidAngle, vec2 u) {
     vec3 nab = cross(a, b);
     vec3 nbc = cross(b, c);
     vec3 nca = cross(c, a);
     if (dot(nab, nab) == 0.0f || dot(nbc, nbc) == 0.0f || dot(nca, nca) == 0.0f)
         return vec3(0.0f);
     nab = normalize(nab);
-    nbc = normalize(nbc);
     nca = normalize(nca);
-    // Interior angles at the vertices, from the normals of the great circles meeting there.
-    float alpha = safeAcos(dot(nab, -nca));
-    float beta = safeAcos(dot(nbc, -nab));
-    float gamma = safeAcos(dot(nca, -nbc));
-    float areaPlusPi = alpha + beta + gamma;
-    // Choose the sub-triangle area, then the point C' on edge ac that bounds it.
-    float subAreaPlusPi = WF_PI + u.x * (areaPlusPi - WF_PI);
-    float sinPhi = sin(subAreaPlusPi) * cos(alpha) - cos(subAreaPlusPi) * sin(alpha);
-    float cosPhi = cos(subAreaPlusPi) * cos(alpha) + sin(subAreaPlusPi) * sin(alpha);
-    float k1 = cosPhi + cos(alpha);
-    float k2 = sinPhi - sin(alpha) * dot(a, b);
-    float denominator = (k2 * sinPhi + k1 * cosPhi) * sin(alpha);
-    float cosBp = denominator != 0.0f ? (k2 + (k2 * cosPhi - k1 * sinPhi) * cos(alpha)) /
+    // The interior angle at a, from the normals of the great circles meeting there.
+    float cosAlpha = clamp(dot(nab, -nca), -1.0f, 1.0f);
+    float sinAlpha = safeSqrt(1.0f - cosAlpha * cosAlpha);
+    // Choose the sub-triangle area A' = u.x * solidAngle, then the point C' on edge ac that
+    // bounds it; Arvo's formulas take sin and cos of A' + pi, which are -sin and -cos of A'
+    // (exactly, where the sum would round away a small A').
+    float subArea = u.x * solidAngle;
+    float sinSub = -sin(subArea);
+    float cosSub = -cos(subArea);
+    float sinPhi = sinSub * cosAlpha - cosSub * sinAlpha;
+    float cosPhi = cosSub * cosAlpha + sinSub * sinAlpha;
+    float k1 = cosPhi + cosAlpha;
+    float k2 = sinPhi - sinAlpha * dot(a, b);
+    float denominator = (k2 * sinPhi + k1 * cosPhi) * sinAlpha;
+    float cosBp = denominator != 0.0f ? (k2 + (k2 * cosPhi - k1 * sinPhi) * cosAlpha) /
                                             denominator
                                       : 1.0f;
     cosBp = clamp(cosBp, -1.0f, 1.0f);

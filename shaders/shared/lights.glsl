@@ -89,7 +89,7 @@ LightSample sampleTriangleLight(uint emitter, uint triangleIndex, vec2 u, vec3 p
     omega = triangleSolidAngle(p, tri.p0, tri.p1, tri.p2);
     if (useSphericalTriangleSampling(omega)) {
         vec3 direction = sampleSphericalTriangle(normalize(tri.p0 - p), normalize(tri.p1 - p),
-                                                 normalize(tri.p2 - p), u);
+                                                 normalize(tri.p2 - p), omega, u);
         float denominator = dot(direction, nl);
         if (denominator == 0.0 || dot(direction, direction) == 0.0)
             return noLight(p);

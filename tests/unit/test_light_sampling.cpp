@@ -47,7 +47,8 @@ double sphericalTriangleFit(vec3 p, vec3 p0, vec3 p1, vec3 p2, bool wrongDensity
         vec2 u(uniform(rng), uniform(rng));
         if (wrongDensity)
             u.x = u.x * u.x; // skews the sub-area choice: must be rejected
-        vec3 d = sampleSphericalTriangle(normalize(p0 - p), normalize(p1 - p), normalize(p2 - p), u);
+        vec3 d = sampleSphericalTriangle(normalize(p0 - p), normalize(p1 - p), normalize(p2 - p),
+                                         triangleSolidAngle(p, p0, p1, p2), u);
         float t = dot(p0 - p, nl) / dot(d, nl);
         vec3 q = p + t * d - p0;
         // Barycentrics of q by least squares in the triangle's plane.
