@@ -118,8 +118,8 @@ int runBenchCommand(const std::vector<std::string>& args) {
     if (withMegakernel) {
         RenderSettings mega = settings;
         mega.megakernel = true;
-        kernels[1].renderer =
-            std::make_unique<WavefrontRenderer>(context, prepared, mega, compiler);
+        kernels[1].renderer = std::make_unique<WavefrontRenderer>(
+            context, prepared, mega, compiler, kernels[0].renderer->sceneBuffers());
         kernels[1].run.kernel = "megakernel";
     }
     for (Timed& k : kernels)

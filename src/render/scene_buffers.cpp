@@ -37,7 +37,8 @@ Buffer uploadTable(const Context& context, const char* name, const std::vector<T
 
 SceneBuffers::SceneBuffers(const Context& context, const PreparedScene& scene,
                            const ShaderVariant& variant)
-    : triangles_(uploadTable(context, "triangles", scene.triangles)),
+    : defines_(variant.defines()),
+      triangles_(uploadTable(context, "triangles", scene.triangles)),
       bvhPairs_(uploadTable(context, "bvh nodes", scene.bvhPairs)),
       materials_(uploadTable(context, "materials", scene.materials)) {
     if (variant.nextEventEstimation)

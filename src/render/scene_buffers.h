@@ -39,6 +39,9 @@ public:
     SceneBuffers(const Context& context, const PreparedScene& scene,
                  const ShaderVariant& variant);
 
+    // The variant's defines the buffers were made for: renderers that share them must match.
+    const ShaderDefines& defines() const { return defines_; }
+
     bool hasEmitters() const { return static_cast<bool>(emitters_); }
     bool hasLights() const { return static_cast<bool>(lights_); }
     bool hasEnvironment() const { return static_cast<bool>(environment_); }
@@ -47,6 +50,7 @@ public:
     void appendMemoryReport(std::vector<std::pair<std::string, uint64_t>>& report) const;
 
 private:
+    ShaderDefines defines_;
     Buffer triangles_;
     Buffer bvhPairs_;
     Buffer materials_;

@@ -34,7 +34,8 @@ gpu_types::vec3 cameraRight(const Camera& camera) {
 
 WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene& scene,
                                      const RenderSettings& settings,
-                                     const ShaderCompiler& compiler)
+                                     const ShaderCompiler& compiler,
+                                     std::shared_ptr<const SceneBuffers> sharedScene)
     : context_(context), settings_(settings), scene_(scene) {
     if (settings.width == 0 || settings.height == 0 || settings.samplesPerPixel == 0 ||
         settings.maxDepth == 0)
@@ -58,7 +59,10 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
     variant_ = chooseVariant(scene, settings);
     variant_.surface = surfaceFeatures(scene.surface, scene.materials, texelPageBytes(context));
     defines_ = variant_.defines();
-    sceneBuffers_ = std::make_unique<SceneBuffers>(context, scene, variant_);
+    if (sharedScene && sharedScene->defines() != defines_)
+        throw InternalError("scene buffers shared between renderers of different variants");
+    sceneBuffers_ = sharedScene ? std::move(sharedScene)
+                                : std::make_shared<const SceneBuffers>(context, scene, variant_);
     const PathStateUse pathState = settings.megakernel ? PathStateUse::Megakernel
                                    : variant_.nextEventEstimation
                                        ? PathStateUse::WavefrontWithShadowRays

@@ -90,8 +90,12 @@ struct WaveProgress {
 
 class WavefrontRenderer {
 public:
+    // `sharedScene`, when given, holds the scene's GPU tables from another renderer of the same
+    // scene and variant (the viewer's preview, the bench's megakernel), which this one then
+    // reads instead of uploading a second copy; InternalError if its variant differs.
     WavefrontRenderer(const Context& context, const PreparedScene& scene,
-                      const RenderSettings& settings, const ShaderCompiler& compiler);
+                      const RenderSettings& settings, const ShaderCompiler& compiler,
+                      std::shared_ptr<const SceneBuffers> sharedScene = nullptr);
     ~WavefrontRenderer();
 
     // Renders the remaining samples of settings.samplesPerPixel, calling `onWave` after each
@@ -130,6 +134,7 @@ public:
     uint32_t pathCapacity() const { return pathCapacity_; } // most paths in one wave
     uint32_t pathsPerWave() const { return wavePaths_; }    // the current target
     std::vector<std::pair<std::string, uint64_t>> memoryReport() const;
+    std::shared_ptr<const SceneBuffers> sceneBuffers() const { return sceneBuffers_; }
 
 private:
     void uploadParams();
@@ -152,7 +157,7 @@ private:
     Camera camera_;
     ShaderDefines defines_;
     RenderStats stats_;
-    std::unique_ptr<SceneBuffers> sceneBuffers_;
+    std::shared_ptr<const SceneBuffers> sceneBuffers_;
     std::unique_ptr<PathBuffers> pathBuffers_;
     std::unique_ptr<DescriptorTable> table_;
     std::unique_ptr<TimestampTimer> timer_;

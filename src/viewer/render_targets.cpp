@@ -48,7 +48,11 @@ RenderTarget RenderTargets::makeTarget(uint32_t divisor) {
     RenderTarget target;
     target.divisor = divisor;
     target.budget = SampleBudget(targetSeconds_);
-    target.renderer = std::make_unique<WavefrontRenderer>(context_, scene_, settings, compiler_);
+    // The preview reads the full-size renderer's scene tables rather than a copy of its own.
+    std::shared_ptr<const SceneBuffers> sharedScene =
+        divisor > 1 && full_.renderer ? full_.renderer->sceneBuffers() : nullptr;
+    target.renderer = std::make_unique<WavefrontRenderer>(context_, scene_, settings, compiler_,
+                                                          std::move(sharedScene));
     target.display = std::make_unique<DisplayPass>(
         context_, compiler_, target.renderer->film(), DisplaySize{settings.width, settings.height},
         *displayBuffer_, DisplaySize{size_.width, size_.height});

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "errors.h"
 #include "gpu_test_util.h"
 #include "render/scene_buffers.h"
 #include "scene/gltf_loader.h"
@@ -73,6 +74,34 @@ TEST(Cornell, WaveSizeDoesNotChangeTheImage) {
     // Sums are taken in another grouping, so allow float rounding, nothing more.
     for (size_t i = 0; i < a.rgb.size(); ++i)
         ASSERT_NEAR(a.rgb[i], b.rgb[i], 1e-4f * (1.0f + a.rgb[i])) << "at " << i;
+}
+
+// A renderer reading another's scene tables (the viewer's preview, the bench's megakernel)
+// renders what it would with its own; one of another variant is refused.
+TEST(Cornell, SharedSceneBuffersGiveTheSameImage) {
+    static ShaderCompiler compiler;
+    PreparedScene prepared = prepareScene(cornell());
+    RenderSettings settings = smallSettings(7);
+    WavefrontRenderer owner(gpuContext(), prepared, settings, compiler);
+    owner.render();
+    RenderSettings smaller = settings;
+    smaller.width = 24;
+    smaller.height = 24;
+    WavefrontRenderer sharing(gpuContext(), prepared, smaller, compiler, owner.sceneBuffers());
+    WavefrontRenderer alone(gpuContext(), prepared, smaller, compiler);
+    EXPECT_EQ(sharing.sceneBuffers(), owner.sceneBuffers());
+    EXPECT_NE(alone.sceneBuffers(), owner.sceneBuffers());
+    sharing.render();
+    alone.render();
+    std::vector<float> a = sharing.readImage(), b = alone.readImage();
+    ASSERT_EQ(a.size(), b.size());
+    EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(float)), 0);
+    RenderSettings otherVariant = smaller;
+    otherVariant.lightSampling = LightSampling::Bsdf; // no emitter table, no shadow rays
+    EXPECT_THROW(WavefrontRenderer(gpuContext(), prepared, otherVariant, compiler,
+                                   owner.sceneBuffers()),
+                 InternalError);
+    EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
 }
 
 TEST(Cornell, QueuesConserveRays) {
