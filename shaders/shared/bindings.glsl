@@ -7,21 +7,6 @@
 #include "light_types.h"
 
 #include "scene_tables.glsl"
-#if WF_HAS_LIGHTS
-layout(std430, binding = WF_BINDING_LIGHTS) readonly buffer LightBuffer {
-    PunctualLight lights[]; // sphere lights first
-};
-#endif
-#if WF_HAS_ENVIRONMENT
-layout(std430, binding = WF_BINDING_ENVIRONMENT) readonly buffer EnvironmentBuffer {
-    vec4 environment[]; // rgb radiance per texel, equirectangular, top row first
-};
-#if WF_HAS_EMITTERS
-layout(std430, binding = WF_BINDING_ENVIRONMENT_ALIAS) readonly buffer EnvironmentAliasBuffer {
-    Emitter environmentAlias[];
-};
-#endif
-#endif
 // A uniform buffer: every invocation reads the same words (std140 lays RenderParams out as
 // std430 does; tests/unit/test_shared_layout.cpp checks it).
 layout(std140, binding = WF_BINDING_PARAMS) uniform ParamsBuffer {

@@ -29,9 +29,12 @@ struct PunctualLight {
     float pad2;
 };
 
+// Read in shaders as RGBA32UI texels (scene_tables.glsl).
+#define WF_PUNCTUAL_LIGHT_TEXELS 4u
+
 #ifdef __cplusplus
 } // namespace wf::gpu_types
-static_assert(sizeof(wf::gpu_types::PunctualLight) == 64);
+static_assert(sizeof(wf::gpu_types::PunctualLight) == 16 * WF_PUNCTUAL_LIGHT_TEXELS);
 static_assert(offsetof(wf::gpu_types::PunctualLight, direction) == 16);
 static_assert(offsetof(wf::gpu_types::PunctualLight, intensity) == 32);
 static_assert(offsetof(wf::gpu_types::PunctualLight, cosInner) == 44);

@@ -12,7 +12,7 @@ uint environmentTexel(vec3 direction) {
     return texel.y * params.environmentWidth + texel.x;
 }
 
-vec3 environmentRadiance(vec3 direction) { return environment[environmentTexel(direction)].rgb; }
+vec3 environmentRadiance(vec3 direction) { return environmentAt(environmentTexel(direction)); }
 #endif
 
 #if WF_HAS_LIGHTS
@@ -208,7 +208,7 @@ LightSample sampleDeltaLight(uint emitter, PunctualLight light, vec3 p) {
 #if WF_HAS_ENVIRONMENT
 float environmentLightPdf(vec3 direction) {
     uint texel = environmentTexel(direction);
-    float pdfUV = environmentAlias[texel].pmf *
+    float pdfUV = environmentAliasAt(texel).pmf *
                   float(params.environmentWidth * params.environmentHeight);
     return emitterAt(params.environmentEmitter).pmf * equirectSolidAnglePdf(pdfUV, direction);
 }
@@ -217,14 +217,14 @@ LightSample sampleEnvironment(float uTexel, vec2 u, vec3 p) {
     uint count = params.environmentWidth * params.environmentHeight;
     float scaled = uTexel * float(count);
     uint slot = min(uint(scaled), count - 1u);
-    uint texel = (scaled - float(slot)) < environmentAlias[slot].aliasProb
-                     ? slot : environmentAlias[slot].alias;
+    uint texel = (scaled - float(slot)) < environmentAliasAt(slot).aliasProb
+                     ? slot : environmentAliasAt(slot).alias;
     uvec2 xy = uvec2(texel % params.environmentWidth, texel / params.environmentWidth);
     vec2 uv = (vec2(xy) + u) / vec2(params.environmentWidth, params.environmentHeight);
     LightSample s;
     s.direction = equirectToDirection(uv);
     s.pdf = environmentLightPdf(s.direction);
-    s.radiance = environment[texel].rgb;
+    s.radiance = environmentAt(texel);
     s.segmentEnd = pointOutsideScene(p, s.direction);
     s.isDelta = false;
     return s.pdf > 0.0 ? s : noLight(p);
@@ -246,7 +246,7 @@ LightSample sampleLight(float uChoice, vec2 uPoint, float uExtra, vec3 p) {
 #endif
 #if WF_HAS_LIGHTS
     if (kind == WF_EMITTER_LIGHT) {
-        PunctualLight light = lights[index];
+        PunctualLight light = lightAt(index);
 #if WF_HAS_SPHERE_LIGHTS
         if (light.type == WF_LIGHT_SPHERE)
             return sampleSphereLight(emitter, light, uPoint, p);

@@ -70,7 +70,7 @@ bool shadeLightHit(inout PathVertex v) {
 #if WF_HAS_SPHERE_LIGHTS
     // Sphere lights are pure emitters: add what leaves the outside and end the path.
     if ((v.hit.w & WF_SPHERE_HIT) != 0u) {
-        PunctualLight light = lights[v.hit.w & ~WF_SPHERE_HIT];
+        PunctualLight light = lightAt(v.hit.w & ~WF_SPHERE_HIT);
         vec3 normal = normalize(v.origin + t * v.direction - light.position);
         float cosLight = dot(normal, -v.direction);
         if (cosLight > 0.0) {

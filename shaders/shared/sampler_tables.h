@@ -1,4 +1,4 @@
-// The sampler table: one read-only buffer of uints that the table-driven samplers read (the
+// The sampler table: one read-only array of uints that the table-driven samplers read (the
 // set size of the finite-set samplers, the primes of Halton and Hammersley, the blue-noise
 // mask). The host builds it (src/render/sampler_tables.cpp: a sieve and a void-and-cluster
 // generator, both run at start-up, nothing stored) and binds it only for samplers that read
@@ -27,10 +27,9 @@ uint samplerTable(uint index);
 } // namespace wf::gpu_types
 #else
 #if WF_SAMPLER_TABLES
-layout(std430, binding = WF_BINDING_SAMPLER_TABLES) readonly buffer SamplerTableBuffer {
-    uint samplerTableData[];
-};
-uint samplerTable(uint index) { return samplerTableData[index]; }
+// An R32UI texel buffer: scattered reads are cheaper as texel fetches (scene_tables.glsl).
+layout(binding = WF_BINDING_SAMPLER_TABLES) uniform usamplerBuffer samplerTableTexels;
+uint samplerTable(uint index) { return texelFetch(samplerTableTexels, int(index)).x; }
 #endif
 #endif
 

@@ -18,7 +18,8 @@ uvec4 intersectClosest(vec3 origin, vec3 direction) {
 #if WF_HAS_SPHERE_LIGHTS
     // Sphere lights are few: test them all rather than put them in the BVH.
     for (uint i = 0u; i < params.sphereLightCount; ++i) {
-        float t = raySphereNear(origin, direction, lights[i].position, lights[i].radius, false);
+        PunctualLight sphere = lightAt(i);
+        float t = raySphereNear(origin, direction, sphere.position, sphere.radius, false);
         if (t > 0.0 && t < closest) {
             closest = t;
             result = uvec4(floatBitsToUint(t), 0u, 0u, WF_SPHERE_HIT | i);
@@ -34,7 +35,7 @@ bool segmentOccluded(vec3 origin, vec3 segment) {
 #if WF_HAS_SPHERE_LIGHTS
     float length_ = length(segment);
     for (uint i = 0u; i < params.sphereLightCount && !occluded; ++i) {
-        float t = raySphereNear(origin, segment / length_, lights[i].position, lights[i].radius,
+        float t = raySphereNear(origin, segment / length_, lightAt(i).position, lightAt(i).radius,
                                 false);
         occluded = t > 0.0 && t < length_;
     }

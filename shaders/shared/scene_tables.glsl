@@ -7,6 +7,17 @@ layout(binding = WF_BINDING_MATERIALS) uniform usamplerBuffer materialTexels;
 #if WF_HAS_EMITTERS
 layout(binding = WF_BINDING_EMITTERS) uniform usamplerBuffer emitterTexels;
 #endif
+#if WF_HAS_LIGHTS
+layout(binding = WF_BINDING_LIGHTS) uniform usamplerBuffer lightTexels; // sphere lights first
+#endif
+#if WF_HAS_ENVIRONMENT
+// RGB radiance per texel (alpha unused), equirectangular, top row first.
+layout(binding = WF_BINDING_ENVIRONMENT) uniform usamplerBuffer environmentTexels;
+#if WF_HAS_EMITTERS
+// Emitter-shaped alias table over the environment's texels.
+layout(binding = WF_BINDING_ENVIRONMENT_ALIAS) uniform usamplerBuffer environmentAliasTexels;
+#endif
+#endif
 
 uvec4 wfTexel(usamplerBuffer table, uint index) { return texelFetch(table, int(index)); }
 
@@ -48,4 +59,27 @@ Emitter emitterAt(uint index) {
     uvec4 t = wfTexel(emitterTexels, index);
     return Emitter(t.x, uintBitsToFloat(t.y), uintBitsToFloat(t.z), t.w);
 }
+#endif
+
+#if WF_HAS_LIGHTS
+PunctualLight lightAt(uint index) {
+    uint base = index * WF_PUNCTUAL_LIGHT_TEXELS;
+    uvec4 a = wfTexel(lightTexels, base);
+    uvec4 b = wfTexel(lightTexels, base + 1u);
+    uvec4 c = wfTexel(lightTexels, base + 2u);
+    uvec4 d = wfTexel(lightTexels, base + 3u);
+    return PunctualLight(uintBitsToFloat(a.xyz), a.w, uintBitsToFloat(b.xyz),
+                         uintBitsToFloat(b.w), uintBitsToFloat(c.xyz), uintBitsToFloat(c.w),
+                         uintBitsToFloat(d.x), d.y, uintBitsToFloat(d.z), uintBitsToFloat(d.w));
+}
+#endif
+
+#if WF_HAS_ENVIRONMENT
+vec3 environmentAt(uint texel) { return uintBitsToFloat(wfTexel(environmentTexels, texel).rgb); }
+#if WF_HAS_EMITTERS
+Emitter environmentAliasAt(uint index) {
+    uvec4 t = wfTexel(environmentAliasTexels, index);
+    return Emitter(t.x, uintBitsToFloat(t.y), uintBitsToFloat(t.z), t.w);
+}
+#endif
 #endif

@@ -67,11 +67,12 @@ void SceneBuffers::appendBindings(
     if (emitters_)
         bindings.push_back({WF_BINDING_EMITTERS, &emitters_, BufferAccess::UintTexels});
     if (lights_)
-        bindings.push_back({WF_BINDING_LIGHTS, &lights_});
+        bindings.push_back({WF_BINDING_LIGHTS, &lights_, BufferAccess::UintTexels});
     if (environment_)
-        bindings.push_back({WF_BINDING_ENVIRONMENT, &environment_});
+        bindings.push_back({WF_BINDING_ENVIRONMENT, &environment_, BufferAccess::UintTexels});
     if (environmentAlias_)
-        bindings.push_back({WF_BINDING_ENVIRONMENT_ALIAS, &environmentAlias_});
+        bindings.push_back(
+            {WF_BINDING_ENVIRONMENT_ALIAS, &environmentAlias_, BufferAccess::UintTexels});
     surface_.appendBindings(bindings);
 }
 

@@ -74,7 +74,8 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
     pathBuffers_->appendBindings(bindings);
     if (samplerReadsTable(settings.sampler)) {
         samplerTable_ = std::make_unique<Buffer>(makeSamplerTableBuffer(context, setSize()));
-        bindings.push_back({WF_BINDING_SAMPLER_TABLES, samplerTable_.get()});
+        bindings.push_back(
+            {WF_BINDING_SAMPLER_TABLES, samplerTable_.get(), BufferAccess::Uint1Texels});
     }
     table_ = std::make_unique<DescriptorTable>(context, bindings);
     // One interval per depth for each of four passes, plus raygen and accumulate.
