@@ -1,9 +1,11 @@
 #version 460
 // shade: one path vertex (shaders/shared/path_vertex.glsl) per ray in the current queue.
-// In: rayQueue[depth & 1] (count in counters.rayArgs.count), hits, path state, scene, lights.
+// In: rayQueue[depth & 1] (count in counters.rayArgs.count), hits (by queue slot), path state,
+// scene, lights.
 // Out: radiance += emission the ray found; appends the path to shadowQueue with a next-event
-// connection (shadowOrigin/Direction/Radiance) and to rayQueue[(depth + 1) & 1] with its
-// BSDF-sampled continuation (rayOrigin/Direction, throughput).
+// connection (shadowOrigin/Direction/Radiance at the same queue slot) and to
+// rayQueue[(depth + 1) & 1] with its BSDF-sampled continuation (rayOrigin/Direction,
+// throughput, by path).
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "bindings.glsl"
@@ -36,7 +38,7 @@ void main() {
         v.pixel = wavePathPixel(pass, path);
         v.sampleIndex = wavePathSample(pass, path);
         v.depth = pass.depth;
-        v.hit = hitAt(path);
+        v.hit = hitAt(index);
         vec4 origin = rayOriginAt(path);
         v.origin = origin.xyz;
         v.previousPdf = origin.w;
@@ -54,13 +56,6 @@ void main() {
             rayDirection[path].xyz = v.direction;
             throughput[path] = vec4(v.beta, v.etaScale);
         }
-#if WF_HAS_EMITTERS
-        if (v.connects) {
-            shadowOrigin[path].xyz = v.shadowOrigin;
-            shadowDirection[path].xyz = v.shadowSegment;
-            shadowRadiance[path].rgb = v.shadowRadiance;
-        }
-#endif
     }
 
     // Appends happen in uniform control flow: every lane of the subgroup takes part.
@@ -69,7 +64,12 @@ void main() {
         rayQueues[((pass.depth + 1u) & 1u) * params.pathCapacity + raySlot] = path;
 #if WF_HAS_EMITTERS
     uint shadowSlot = appendShadow(v.connects);
-    if (v.connects)
+    if (v.connects) {
+        // By queue slot, so that the shadow pass reads its connections in order.
         shadowQueue[shadowSlot] = path;
+        shadowOrigin[shadowSlot].xyz = v.shadowOrigin;
+        shadowDirection[shadowSlot].xyz = v.shadowSegment;
+        shadowRadiance[shadowSlot].rgb = v.shadowRadiance;
+    }
 #endif
 }

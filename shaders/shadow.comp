@@ -1,7 +1,8 @@
 #version 460
 // shadow: any-hit visibility of each NEE connection in the shadow queue.
-// In: shadowQueue (count in counters.shadowArgs.count), shadowOrigin/Direction/Radiance.
-// Out: radiance[path] += shadowRadiance[path] when the segment t in (0, 1) is unoccluded.
+// In: shadowQueue (count in counters.shadowArgs.count), shadowOrigin/Direction/Radiance at
+// the same queue slot.
+// Out: radiance[path] += shadowRadiance[slot] when the segment t in (0, 1) is unoccluded.
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "bindings.glsl"
@@ -17,6 +18,6 @@ void main() {
     uint path = shadowQueue[index];
     // The segment spans the whole connection; both ends are offset off their surfaces, so the
     // light's own surface lies beyond t = 1 and the shading triangle before t = 0.
-    if (!segmentOccluded(shadowOriginAt(path).xyz, shadowDirectionAt(path).xyz))
-        radiance[path].rgb = radianceAt(path).rgb + shadowRadianceAt(path).rgb;
+    if (!segmentOccluded(shadowOriginAt(index).xyz, shadowDirectionAt(index).xyz))
+        radiance[path].rgb = radianceAt(path).rgb + shadowRadianceAt(index).rgb;
 }

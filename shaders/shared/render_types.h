@@ -3,9 +3,10 @@
 //
 // Queue protocol of one wave (see docs/ARCHITECTURE.md):
 //   raygen      writes PathState for paths [0, pathCount), rayQueue[0] = identity
-//   intersect   reads rayQueue[depth & 1] (count in rayArgs.count), writes hits
+//   intersect   reads rayQueue[depth & 1] (count in rayArgs.count), writes hits by queue slot
 //   shade       reads rayQueue[depth & 1] + hits; appends to rayQueue[(depth+1) & 1] (rayCount)
-//               and to shadowQueue (shadowCount); adds emission to radiance
+//               and to shadowQueue (shadowCount; the connection's shadow* data at its slot);
+//               adds emission to radiance
 //   queue       copies rayCount/shadowCount into rayArgs/shadowArgs, zeroes them, keeps stats
 //               (totals and per depth: depthRays[depth + 1], depthShadowRays[depth])
 //   shadow      reads shadowQueue (count in shadowArgs.count); adds unoccluded NEE to radiance
