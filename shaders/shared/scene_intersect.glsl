@@ -35,8 +35,8 @@ bool segmentOccluded(vec3 origin, vec3 segment) {
 #if WF_HAS_SPHERE_LIGHTS
     float length_ = length(segment);
     for (uint i = 0u; i < params.sphereLightCount && !occluded; ++i) {
-        float t = raySphereNear(origin, segment / length_, lightAt(i).position, lightAt(i).radius,
-                                false);
+        PunctualLight sphere = lightAt(i);
+        float t = raySphereNear(origin, segment / length_, sphere.position, sphere.radius, false);
         occluded = t > 0.0 && t < length_;
     }
 #endif
