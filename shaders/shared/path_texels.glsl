@@ -1,28 +1,27 @@
 // Reads of the path state. Each pass writes the state through the storage buffers of
-// bindings.glsl and the next reads it through these texel-buffer views of the same memory,
-// which lavapipe fetches with one gather instead of a loop over lanes (see scene_tables.glsl).
+// bindings.glsl and the next reads it through these storage texel views of the same memory,
+// which lavapipe reads with one inlined gather instead of a loop over lanes (scene_tables.glsl).
 // A pass may read an entry through its view and then overwrite it: an invocation only ever
 // touches its own path's entries, and the barrier between passes makes writes visible.
-layout(binding = WF_BINDING_RAY_ORIGIN_TEXELS) uniform usamplerBuffer rayOriginTexels;
-layout(binding = WF_BINDING_RAY_DIRECTION_TEXELS) uniform usamplerBuffer rayDirectionTexels;
-layout(binding = WF_BINDING_THROUGHPUT_TEXELS) uniform usamplerBuffer throughputTexels;
-layout(binding = WF_BINDING_RADIANCE_TEXELS) uniform usamplerBuffer radianceTexels;
-layout(binding = WF_BINDING_HITS_TEXELS) uniform usamplerBuffer hitTexels;
+layout(binding = WF_BINDING_RAY_ORIGIN_TEXELS, rgba32ui) uniform readonly restrict uimageBuffer rayOriginTexels;
+layout(binding = WF_BINDING_RAY_DIRECTION_TEXELS, rgba32ui) uniform readonly restrict uimageBuffer rayDirectionTexels;
+layout(binding = WF_BINDING_THROUGHPUT_TEXELS, rgba32ui) uniform readonly restrict uimageBuffer throughputTexels;
+layout(binding = WF_BINDING_RADIANCE_TEXELS, rgba32ui) uniform readonly restrict uimageBuffer radianceTexels;
+layout(binding = WF_BINDING_HITS_TEXELS, rgba32ui) uniform readonly restrict uimageBuffer hitTexels;
 #if WF_HAS_EMITTERS
-layout(binding = WF_BINDING_SHADOW_ORIGIN_TEXELS) uniform usamplerBuffer shadowOriginTexels;
-layout(binding = WF_BINDING_SHADOW_DIRECTION_TEXELS) uniform usamplerBuffer shadowDirectionTexels;
-layout(binding = WF_BINDING_SHADOW_RADIANCE_TEXELS) uniform usamplerBuffer shadowRadianceTexels;
+layout(binding = WF_BINDING_SHADOW_ORIGIN_TEXELS, rgba32ui) uniform readonly restrict uimageBuffer shadowOriginTexels;
+layout(binding = WF_BINDING_SHADOW_DIRECTION_TEXELS, rgba32ui) uniform readonly restrict uimageBuffer shadowDirectionTexels;
+layout(binding = WF_BINDING_SHADOW_RADIANCE_TEXELS, rgba32ui) uniform readonly restrict uimageBuffer shadowRadianceTexels;
 #endif
 
-vec4 wfFloatTexel(usamplerBuffer view, uint path) {
-    return uintBitsToFloat(texelFetch(view, int(path)));
-}
+// A macro, as GLSL functions cannot take the images themselves.
+#define wfFloatTexel(view, path) uintBitsToFloat(imageLoad(view, int(path)))
 
 vec4 rayOriginAt(uint path) { return wfFloatTexel(rayOriginTexels, path); }
 vec4 rayDirectionAt(uint path) { return wfFloatTexel(rayDirectionTexels, path); }
 vec4 throughputAt(uint path) { return wfFloatTexel(throughputTexels, path); }
 vec4 radianceAt(uint path) { return wfFloatTexel(radianceTexels, path); }
-uvec4 hitAt(uint path) { return texelFetch(hitTexels, int(path)); }
+uvec4 hitAt(uint path) { return imageLoad(hitTexels, int(path)); }
 #if WF_HAS_EMITTERS
 vec4 shadowOriginAt(uint path) { return wfFloatTexel(shadowOriginTexels, path); }
 vec4 shadowDirectionAt(uint path) { return wfFloatTexel(shadowDirectionTexels, path); }

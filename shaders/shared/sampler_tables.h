@@ -27,9 +27,9 @@ uint samplerTable(uint index);
 } // namespace wf::gpu_types
 #else
 #if WF_SAMPLER_TABLES
-// An R32UI texel buffer: scattered reads are cheaper as texel fetches (scene_tables.glsl).
-layout(binding = WF_BINDING_SAMPLER_TABLES) uniform usamplerBuffer samplerTableTexels;
-uint samplerTable(uint index) { return texelFetch(samplerTableTexels, int(index)).x; }
+// An R32UI storage texel buffer: scattered reads are cheapest as imageLoad (scene_tables.glsl).
+layout(binding = WF_BINDING_SAMPLER_TABLES, r32ui) uniform readonly restrict uimageBuffer samplerTableTexels;
+uint samplerTable(uint index) { return imageLoad(samplerTableTexels, int(index)).x; }
 #endif
 #endif
 

@@ -13,13 +13,13 @@ namespace {
 
 VkDescriptorType descriptorType(BufferAccess access) {
     if (texelBytes(access) != 0)
-        return VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+        return VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER;
     return access == BufferAccess::Uniform ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
                                            : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 }
 
 // Integer formats only: a float format could flush denormals or canonicalise NaNs. All three
-// must support uniform texel buffers on every Vulkan device.
+// must support storage texel buffers on every Vulkan device.
 VkFormat texelFormat(BufferAccess access) {
     switch (access) {
     case BufferAccess::Uint1Texels:

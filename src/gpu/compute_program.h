@@ -14,11 +14,13 @@ namespace wf {
 class Buffer;
 class Context;
 
-// How a shader reads a buffer. Read-only tables that passes fetch at scattered indices are
-// bound as uniform texel buffers of 32-bit uints (GLSL usamplerBuffer): lavapipe turns a texel
-// fetch into one vector gather but a storage-buffer load into a branchy loop over the lanes,
-// 2.5-3x slower per vec4 (docs/architecture.md, "Reading memory on lavapipe"). A table picks
-// the texel that divides its struct: UintTexels (RGBA32UI, 16 bytes), Uint2Texels (RG32UI,
+// How a shader reads a buffer. Read-only tables that passes fetch at scattered indices, and the
+// path state a pass reads, are bound as storage texel buffers of 32-bit uints (GLSL
+// `readonly uimageBuffer`, read with imageLoad): lavapipe turns a storage-buffer load into a
+// branchy loop over the lanes, 2.5-3x slower per vec4, and a texelFetch of a uint format into
+// a call to a sampling function that makes the caller spill its registers, where imageLoad is
+// one inlined gather (docs/architecture.md, "Reading memory on lavapipe"). A table picks the
+// texel that divides its struct: UintTexels (RGBA32UI, 16 bytes), Uint2Texels (RG32UI,
 // 8 bytes) or Uint1Texels (R32UI, 4 bytes); shaders unpack floats with uintBitsToFloat, so the
 // bits are exactly those stored. Small read-only blocks every invocation reads at the same
 // address are uniform buffers (std140).
