@@ -70,6 +70,15 @@ void DescriptorTable::create(const Context& context, const DescriptorBindings& b
         layoutBindings.push_back(layoutBinding);
         ++typeCounts[layoutBinding.descriptorType];
     }
+    const VkPhysicalDeviceLimits& limits = context.properties().limits;
+    if (typeCounts[VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER] >
+            limits.maxPerStageDescriptorStorageImages ||
+        typeCounts[VK_DESCRIPTOR_TYPE_STORAGE_BUFFER] > limits.maxPerStageDescriptorStorageBuffers)
+        throw InternalError("the passes' descriptor set needs " +
+                            std::to_string(typeCounts[VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER]) +
+                            " storage texel buffers and " +
+                            std::to_string(typeCounts[VK_DESCRIPTOR_TYPE_STORAGE_BUFFER]) +
+                            " storage buffers, over this device's per-stage limits");
     VkDescriptorSetLayoutCreateInfo layoutInfo{
         VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     layoutInfo.bindingCount = static_cast<uint32_t>(layoutBindings.size());
