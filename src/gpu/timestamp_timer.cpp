@@ -6,12 +6,12 @@
 
 namespace wf {
 
-TimestampTimer::TimestampTimer(const Context& context, uint32_t maxIntervals)
-    : device_(context.device()), capacity_(maxIntervals),
+TimestampTimer::TimestampTimer(const Context& context, uint32_t maxPasses)
+    : device_(context.device()), capacity_(maxPasses + 1),
       nanosecondsPerTick_(context.properties().limits.timestampPeriod) {
     VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
     info.queryType = VK_QUERY_TYPE_TIMESTAMP;
-    info.queryCount = 2 * maxIntervals;
+    info.queryCount = capacity_;
     VK_CHECK(vkCreateQueryPool(device_, &info, nullptr, &pool_));
     // Timestamps wrap at timestampValidBits; 64 bits on every device we know, but be exact.
     uint32_t familyCount = 0;
@@ -26,35 +26,41 @@ TimestampTimer::TimestampTimer(const Context& context, uint32_t maxIntervals)
 TimestampTimer::~TimestampTimer() { vkDestroyQueryPool(device_, pool_, nullptr); }
 
 void TimestampTimer::reset(VkCommandBuffer cmd) {
-    vkCmdResetQueryPool(cmd, pool_, 0, 2 * capacity_);
+    vkCmdResetQueryPool(cmd, pool_, 0, capacity_);
     names_.clear();
 }
 
-void TimestampTimer::begin(VkCommandBuffer cmd, const char* passName) {
+// Bottom of pipe: written once every earlier command has finished, so a mark ends the pass
+// before it on any device.
+void TimestampTimer::write(VkCommandBuffer cmd, const char* passName) {
     if (names_.size() >= capacity_)
-        throw InternalError("timestamp timer full: more than " + std::to_string(capacity_) +
+        throw InternalError("timestamp timer full: more than " + std::to_string(capacity_ - 1) +
                             " timed passes in one submit");
-    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, pool_,
-                        2 * static_cast<uint32_t>(names_.size()));
+    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool_,
+                        static_cast<uint32_t>(names_.size()));
     names_.push_back(passName);
 }
 
-void TimestampTimer::end(VkCommandBuffer cmd) {
-    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool_,
-                        2 * static_cast<uint32_t>(names_.size()) - 1);
+void TimestampTimer::mark(VkCommandBuffer cmd, const char* passName) { write(cmd, passName); }
+
+void TimestampTimer::finish(VkCommandBuffer cmd) {
+    if (!names_.empty() && names_.back() != nullptr)
+        write(cmd, nullptr);
 }
 
 std::map<std::string, double> TimestampTimer::collect() {
     std::map<std::string, double> milliseconds;
-    if (names_.empty())
+    if (names_.size() < 2)
         return milliseconds;
-    std::vector<uint64_t> ticks(2 * names_.size());
+    std::vector<uint64_t> ticks(names_.size());
     VK_CHECK(vkGetQueryPoolResults(device_, pool_, 0, static_cast<uint32_t>(ticks.size()),
                                    ticks.size() * sizeof(uint64_t), ticks.data(),
                                    sizeof(uint64_t),
                                    VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
-    for (size_t i = 0; i < names_.size(); ++i) {
-        uint64_t elapsed = (ticks[2 * i + 1] - ticks[2 * i]) & validMask_;
+    for (size_t i = 0; i + 1 < names_.size(); ++i) {
+        if (names_[i] == nullptr)
+            continue;
+        uint64_t elapsed = (ticks[i + 1] - ticks[i]) & validMask_;
         milliseconds[names_[i]] += elapsed * nanosecondsPerTick_ * 1e-6;
     }
     return milliseconds;

@@ -1,5 +1,9 @@
-// GPU time per named pass from timestamp queries. A wave brackets each dispatch with
-// begin/end; after the wave's fence, collect() sums the intervals by pass name.
+// GPU time per named pass from timestamp queries. A wave writes one timestamp before each
+// dispatch (mark) and one after the last (finish); the interval from a mark to the next
+// timestamp is the marked pass's, barrier included. After the wave's fence, collect() sums
+// the intervals by pass name. One timestamp per pass rather than two around each: lavapipe
+// runs every timestamp as a rasterizer job that wakes its threads, and halving them was worth
+// several percent of a frame there.
 #pragma once
 #include <cstdint>
 #include <map>
@@ -14,24 +18,27 @@ class Context;
 
 class TimestampTimer {
 public:
-    TimestampTimer(const Context& context, uint32_t maxIntervals);
+    TimestampTimer(const Context& context, uint32_t maxPasses);
     ~TimestampTimer();
     TimestampTimer(const TimestampTimer&) = delete;
     TimestampTimer& operator=(const TimestampTimer&) = delete;
 
-    void reset(VkCommandBuffer cmd); // before the first begin() of a command buffer
-    void begin(VkCommandBuffer cmd, const char* passName);
-    void end(VkCommandBuffer cmd);
+    void reset(VkCommandBuffer cmd); // before the first mark() of a command buffer
+    // Ends the running interval, if any, and starts one for `passName`.
+    void mark(VkCommandBuffer cmd, const char* passName);
+    void finish(VkCommandBuffer cmd); // ends the running interval
     // Milliseconds per pass name for the intervals recorded since reset().
     std::map<std::string, double> collect();
 
 private:
+    void write(VkCommandBuffer cmd, const char* passName);
+
     VkDevice device_;
     VkQueryPool pool_ = VK_NULL_HANDLE;
-    uint32_t capacity_;
+    uint32_t capacity_; // timestamps
     double nanosecondsPerTick_;
     uint64_t validMask_;
-    std::vector<const char*> names_;
+    std::vector<const char*> names_; // per timestamp: the pass it starts, null after finish()
 };
 
 } // namespace wf

@@ -15,17 +15,15 @@ Pass::Pass(const PassResources& resources, const char* name, const char* shaderF
 }
 
 void Pass::dispatch(VkCommandBuffer cmd, uint32_t groups, const PassConstants& constants) const {
-    timer_.begin(cmd, name_);
+    timer_.mark(cmd, name_);
     program_->dispatch(cmd, groups, &constants);
-    timer_.end(cmd);
     computeBarrier(cmd);
 }
 
 void Pass::dispatchIndirect(VkCommandBuffer cmd, VkDeviceSize argsOffset,
                             const PassConstants& constants) const {
-    timer_.begin(cmd, name_);
+    timer_.mark(cmd, name_);
     program_->dispatchIndirect(cmd, counters_, argsOffset, &constants);
-    timer_.end(cmd);
     computeBarrier(cmd);
 }
 

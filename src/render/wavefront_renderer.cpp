@@ -78,7 +78,7 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
             {WF_BINDING_SAMPLER_TABLES, samplerTable_.get(), BufferAccess::Uint1Texels});
     }
     table_ = std::make_unique<DescriptorTable>(context, bindings);
-    // One interval per depth for each of four passes, plus raygen and accumulate.
+    // Four passes per depth, plus raygen and accumulate.
     timer_ = std::make_unique<TimestampTimer>(context, 4 * settings.maxDepth + 2);
 
     PassResources resources{context, compiler, defines_, *table_, pathBuffers_->counters,
@@ -153,6 +153,7 @@ void WavefrontRenderer::recordWave(VkCommandBuffer cmd, const PassConstants& wav
         }
     }
     accumulate_->record(cmd, wave);
+    timer_->finish(cmd);
 }
 
 void WavefrontRenderer::runWave(uint32_t pixelBase, uint32_t pixels, uint32_t samples) {
