@@ -13,6 +13,6 @@ void main() {
     uint index = gl_GlobalInvocationID.x;
     if (index >= counters.rayArgs.count)
         return;
-    uint path = rayQueues[(pass.depth & 1u) * params.pathCapacity + index];
+    uint path = rayQueueAt(pass.depth, index);
     hits[index] = intersectClosest(rayOriginAt(path).xyz, rayDirectionAt(path).xyz);
 }

@@ -30,7 +30,7 @@ WF_DEFINE_QUEUE_APPEND(appendShadow, counters.shadowCount)
 void main() {
     uint index = gl_GlobalInvocationID.x;
     bool inQueue = index < counters.rayArgs.count;
-    uint path = inQueue ? rayQueues[(pass.depth & 1u) * params.pathCapacity + index] : 0u;
+    uint path = inQueue ? rayQueueAt(pass.depth, index) : 0u;
     PathVertex v;
     v.continues = false;
     v.connects = false;

@@ -15,7 +15,7 @@ void main() {
     uint index = gl_GlobalInvocationID.x;
     if (index >= counters.shadowArgs.count)
         return;
-    uint path = shadowQueue[index];
+    uint path = shadowQueueAt(index);
     // The segment spans the whole connection; both ends are offset off their surfaces, so the
     // light's own surface lies beyond t = 1 and the shading triangle before t = 0.
     if (!segmentOccluded(shadowOriginAt(index).xyz, shadowDirectionAt(index).xyz))

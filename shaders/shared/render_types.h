@@ -54,6 +54,8 @@ namespace wf::gpu_types {
 #define WF_BINDING_SHADOW_ORIGIN_TEXELS 45
 #define WF_BINDING_SHADOW_DIRECTION_TEXELS 46
 #define WF_BINDING_SHADOW_RADIANCE_TEXELS 47
+#define WF_BINDING_RAY_QUEUE_TEXELS 48
+#define WF_BINDING_SHADOW_QUEUE_TEXELS 49
 
 struct RenderParams {
     vec3 cameraPosition;

@@ -71,13 +71,16 @@ void DescriptorTable::create(const Context& context, const DescriptorBindings& b
         ++typeCounts[layoutBinding.descriptorType];
     }
     const VkPhysicalDeviceLimits& limits = context.properties().limits;
-    if (typeCounts[VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER] >
-            limits.maxPerStageDescriptorStorageImages ||
-        typeCounts[VK_DESCRIPTOR_TYPE_STORAGE_BUFFER] > limits.maxPerStageDescriptorStorageBuffers)
-        throw InternalError("the passes' descriptor set needs " +
-                            std::to_string(typeCounts[VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER]) +
-                            " storage texel buffers and " +
-                            std::to_string(typeCounts[VK_DESCRIPTOR_TYPE_STORAGE_BUFFER]) +
+    const auto typeCount = [&](VkDescriptorType type) {
+        const auto found = typeCounts.find(type);
+        return found == typeCounts.end() ? 0u : found->second;
+    };
+    const uint32_t texelBuffers = typeCount(VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER);
+    const uint32_t storageBuffers = typeCount(VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+    if (texelBuffers > limits.maxPerStageDescriptorStorageImages ||
+        storageBuffers > limits.maxPerStageDescriptorStorageBuffers)
+        throw InternalError("the passes' descriptor set needs " + std::to_string(texelBuffers) +
+                            " storage texel buffers and " + std::to_string(storageBuffers) +
                             " storage buffers, over this device's per-stage limits");
     VkDescriptorSetLayoutCreateInfo layoutInfo{
         VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};

@@ -53,6 +53,8 @@ void PathBuffers::appendBindings(DescriptorBindings& bindings) const {
         {WF_BINDING_SHADOW_ORIGIN_TEXELS, &shadowOrigin, BufferAccess::UintTexels},
         {WF_BINDING_SHADOW_DIRECTION_TEXELS, &shadowDirection, BufferAccess::UintTexels},
         {WF_BINDING_SHADOW_RADIANCE_TEXELS, &shadowRadiance, BufferAccess::UintTexels},
+        {WF_BINDING_RAY_QUEUE_TEXELS, &rayQueues, BufferAccess::Uint1Texels},
+        {WF_BINDING_SHADOW_QUEUE_TEXELS, &shadowQueue, BufferAccess::Uint1Texels},
     };
     for (const DescriptorBinding& binding : all)
         if (*binding.buffer)
