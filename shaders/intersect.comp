@@ -14,5 +14,5 @@ void main() {
     if (index >= counters.rayArgs.count)
         return;
     uint path = rayQueueAt(pass.depth, index);
-    hits[index] = intersectClosest(rayOriginAt(path).xyz, rayDirectionAt(path).xyz);
+    hits[index] = wfPack(intersectClosest(rayOriginAt(path).xyz, rayDirectionAt(path).xyz));
 }

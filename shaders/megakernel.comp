@@ -68,7 +68,7 @@ void main() {
             if (!v.continues)
                 break;
         }
-        radiance[path] = vec4(total, 0.0);
+        radiance[path] = wfPack(vec4(total, 0.0));
     }
 
     // Statistics as the wavefront keeps them: rays traced per depth, connections per depth.

@@ -18,9 +18,9 @@ void main() {
         return;
     vec3 origin, direction;
     cameraRay(wavePathPixel(pass, path), wavePathSample(pass, path), origin, direction);
-    rayOrigin[path] = vec4(origin, 0.0);
-    rayDirection[path] = vec4(direction, 0.0);
-    throughput[path] = vec4(1.0);
-    radiance[path] = vec4(0.0);
+    rayOrigin[path] = wfPack(vec4(origin, 0.0));
+    rayDirection[path] = wfPack(vec4(direction, 0.0));
+    throughput[path] = wfPack(vec4(1.0));
+    radiance[path] = wfPack(vec4(0.0));
     rayQueues[path] = path;
 }

@@ -50,11 +50,11 @@ void main() {
         // Stores cost a loop over the lanes on lavapipe: skip the ones that change nothing
         // (most vertices find no emission).
         if (any(notEqual(v.radiance, vec3(0.0))))
-            radiance[path].rgb = radianceAt(path).rgb + v.radiance;
+            radiance[path] = wfPack(vec4(radianceAt(path).rgb + v.radiance, 0.0));
         if (v.continues) {
-            rayOrigin[path] = vec4(v.origin, v.previousPdf);
-            rayDirection[path].xyz = v.direction;
-            throughput[path] = vec4(v.beta, v.etaScale);
+            rayOrigin[path] = wfPack(vec4(v.origin, v.previousPdf));
+            rayDirection[path] = wfPack(vec4(v.direction, 0.0));
+            throughput[path] = wfPack(vec4(v.beta, v.etaScale));
         }
     }
 
@@ -67,9 +67,9 @@ void main() {
     if (v.connects) {
         // By queue slot, so that the shadow pass reads its connections in order.
         shadowQueue[shadowSlot] = path;
-        shadowOrigin[shadowSlot].xyz = v.shadowOrigin;
-        shadowDirection[shadowSlot].xyz = v.shadowSegment;
-        shadowRadiance[shadowSlot].rgb = v.shadowRadiance;
+        shadowOrigin[shadowSlot] = wfPack(vec4(v.shadowOrigin, 0.0));
+        shadowDirection[shadowSlot] = wfPack(vec4(v.shadowSegment, 0.0));
+        shadowRadiance[shadowSlot] = wfPack(vec4(v.shadowRadiance, 0.0));
     }
 #endif
 }

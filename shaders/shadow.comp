@@ -19,5 +19,5 @@ void main() {
     // The segment spans the whole connection; both ends are offset off their surfaces, so the
     // light's own surface lies beyond t = 1 and the shading triangle before t = 0.
     if (!segmentOccluded(shadowOriginAt(index).xyz, shadowDirectionAt(index).xyz))
-        radiance[path].rgb = radianceAt(path).rgb + shadowRadianceAt(index).rgb;
+        radiance[path] = wfPack(vec4(radianceAt(path).rgb + shadowRadianceAt(index).rgb, 0.0));
 }

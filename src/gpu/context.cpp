@@ -215,7 +215,13 @@ void Context::createDevice() {
     queueInfo.pQueuePriorities = &priority;
 
     const char* swapchainExtension = VK_KHR_SWAPCHAIN_EXTENSION_NAME;
+    VkPhysicalDeviceFeatures supported{};
+    vkGetPhysicalDeviceFeatures(physicalDevice_, &supported);
+    VkPhysicalDeviceFeatures enabled{};
+    enabled.shaderInt64 = supported.shaderInt64;
+    shaderInt64_ = supported.shaderInt64 == VK_TRUE;
     VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+    info.pEnabledFeatures = &enabled;
     info.queueCreateInfoCount = 1;
     info.pQueueCreateInfos = &queueInfo;
     if (surface_) {

@@ -41,6 +41,8 @@ public:
     VkCommandPool commandPool() const { return commandPool_; }
     const VkPhysicalDeviceProperties& properties() const { return properties_; }
     uint32_t subgroupSize() const { return subgroupSize_; }
+    // 64-bit integers in shaders (enabled when the device has them; WF_PACKED_STORES).
+    bool shaderInt64() const { return shaderInt64_; }
     const std::string& deviceName() const { return deviceName_; }
     const std::string& driverInfo() const { return driverInfo_; }
     bool validationEnabled() const { return messenger_ != VK_NULL_HANDLE; }
@@ -70,6 +72,7 @@ private:
     VkPhysicalDeviceProperties properties_{};
     VkPhysicalDeviceMemoryProperties memoryProperties_{};
     uint32_t subgroupSize_ = 0;
+    bool shaderInt64_ = false;
     std::string deviceName_;
     std::string driverInfo_;
     std::atomic<uint32_t> validationMessages_{0};

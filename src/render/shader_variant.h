@@ -27,6 +27,7 @@ struct ShaderVariant {
     SurfaceFeatures surface;          // textures, normals, alpha: set by the renderer
     SamplerKind sampler = kDefaultSampler; // WF_SAMPLER (rng.h)
     bool randomizeSamples = true;     // WF_SAMPLER_RANDOMIZE: off for --no-randomize
+    bool packedStores = false;        // WF_PACKED_STORES: 64-bit stores, set by the renderer
 
     bool lightsBuffer() const { return sphereLights || deltaLights; }
     ShaderDefines defines() const;
