@@ -192,10 +192,10 @@ void WavefrontRenderer::adaptWaveSize(uint32_t paths, double seconds) {
     if (settings_.submitBudgetSeconds <= 0.0 || 2ull * paths < wavePaths_ || seconds <= 0.0)
         return;
     // The cost per path follows a slowdown at once and a speed-up slowly, as waves over other
-    // pixels (or a busier machine) may cost more; waves aim at three quarters of the budget
-    // and grow at most 4x at a time.
+    // pixels (or a busier machine) may cost more; waves aim at 60% of the budget and grow at
+    // most 4x at a time.
     secondsPerPath_ = std::max(seconds / paths, 0.75 * secondsPerPath_);
-    const double wanted = 0.75 * settings_.submitBudgetSeconds / secondsPerPath_;
+    const double wanted = 0.6 * settings_.submitBudgetSeconds / secondsPerPath_;
     const double grown = std::min(wanted, 4.0 * wavePaths_);
     const uint32_t floor = std::min(pathCapacity_, 1024u);
     wavePaths_ = static_cast<uint32_t>(std::clamp(grown, double(floor), double(pathCapacity_)));
