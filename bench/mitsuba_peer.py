@@ -7,7 +7,8 @@ needs `pip install mitsuba` (into a virtual environment of your own, not the pro
 
     python3 -m venv /tmp/mi && /tmp/mi/bin/pip install mitsuba
     /tmp/mi/bin/python bench/mitsuba_peer.py [--wavefront build/wavefront] [--width 256]
-        [--spp 64] [--max-depth 8] [--reference-spp 512] [--json bench/results/peer.json]
+        [--spp 64] [--max-depth 8] [--reference-spp 512] [--repeats 3]
+        [--json bench/results/peer.json]
 
 The Mitsuba scene is built from scenes/make_cornell_box.py, the generator of
 scenes/cornell_box.gltf: the same quads, node transforms, Lambert albedos, the light's
@@ -92,20 +93,20 @@ def mitsuba_scene(mi, folder, width, height, spp, max_depth, rr_depth):
     return scene
 
 
-def render_mitsuba(mi, folder, width, height, spp, max_depth, rr_depth):
+def render_mitsuba(mi, folder, width, height, spp, max_depth, rr_depth, seed=0):
     scene = mi.load_dict(mitsuba_scene(mi, folder, width, height, spp, max_depth, rr_depth))
     start = time.perf_counter()
-    image = np.array(mi.render(scene, spp=spp), dtype=np.float64)[:, :, :3]
+    image = np.array(mi.render(scene, spp=spp, seed=seed), dtype=np.float64)[:, :, :3]
     return image, time.perf_counter() - start
 
 
-def render_wavefront(mi, exe, folder, width, height, spp, max_depth, rr_depth, tag):
+def render_wavefront(mi, exe, folder, width, height, spp, max_depth, rr_depth, tag, seed=0):
     out = os.path.join(folder, "wavefront_%s.exr" % tag)
     stats = os.path.join(folder, "wavefront_%s.json" % tag)
     subprocess.run([exe, "render", os.path.join(ROOT, "scenes", "cornell_box.gltf"), "-o", out,
                     "--width", str(width), "--height", str(height), "--spp", str(spp),
                     "--max-depth", str(max_depth), "--rr-depth", str(rr_depth), "--json", stats,
-                    "--quiet"], check=True)
+                    "--seed", str(seed), "--quiet"], check=True)
     image = np.array(mi.Bitmap(out), dtype=np.float64)[:, :, :3]
     return image, json.load(open(stats))["seconds"]
 
@@ -135,6 +136,8 @@ def main():
                         help="Wavefront's --rr-depth (bounce index); Mitsuba gets one more, as "
                              "its depth counts from 1")
     parser.add_argument("--reference-spp", type=int, default=512)
+    parser.add_argument("--repeats", type=int, default=3,
+                        help="timed renders of each, alternating (median time, mean relMSE)")
     parser.add_argument("--json", help="write the numbers here")
     args = parser.parse_args()
 
@@ -146,22 +149,30 @@ def main():
                                           args.rr_depth + 1)
         wf_ref, wf_ref_s = render_wavefront(mi, args.wavefront, folder, w, h, args.reference_spp,
                                             depth, args.rr_depth, "reference")
-        mi_img, mi_s = render_mitsuba(mi, folder, w, h, spp, depth, args.rr_depth + 1)
-        wf_img, wf_s = render_wavefront(mi, args.wavefront, folder, w, h, spp, depth,
-                                        args.rr_depth, "test")
+        # Timed renders alternate between the two, each with its own seed, so that a drift in
+        # the machine's speed (other tenants) falls on both; times are medians, errors means.
+        mi_runs, wf_runs = [], []
+        for seed in range(args.repeats):
+            mi_runs.append(render_mitsuba(mi, folder, w, h, spp, depth, args.rr_depth + 1, seed))
+            wf_runs.append(render_wavefront(mi, args.wavefront, folder, w, h, spp, depth,
+                                            args.rr_depth, "test", seed))
         bench = bench_ratio(args.wavefront, folder, w, h, spp, depth)
     paths = w * h * spp
     rows = {}
-    for name, image, ref, seconds in (("Mitsuba 3 scalar_rgb", mi_img, mi_ref, mi_s),
-                                      ("Wavefront", wf_img, wf_ref, wf_s)):
-        err = rel_mse(image, ref)
+    for name, runs, ref in (("Mitsuba 3 scalar_rgb", mi_runs, mi_ref),
+                            ("Wavefront", wf_runs, wf_ref)):
+        seconds = float(np.median([run[1] for run in runs]))
+        err = float(np.mean([rel_mse(run[0], ref) for run in runs]))
         rows[name] = {"seconds": seconds, "pathsPerSecond": paths / seconds, "relMSE": err,
-                      "relMSETimesSeconds": err * seconds, "imageMean": float(image.mean())}
+                      "relMSETimesSeconds": err * seconds,
+                      "imageMean": float(np.mean([run[0].mean() for run in runs])),
+                      "runSeconds": [run[1] for run in runs]}
     ratio = rows["Wavefront"]["pathsPerSecond"] / rows["Mitsuba 3 scalar_rgb"]["pathsPerSecond"]
     efficiency = (rows["Mitsuba 3 scalar_rgb"]["relMSETimesSeconds"] /
                   rows["Wavefront"]["relMSETimesSeconds"])
-    print("Cornell box %dx%d, %d spp, max depth %d; references %d spp" % (
-        w, h, spp, depth, args.reference_spp))
+    print("Cornell box %dx%d, %d spp, max depth %d; references %d spp; %d alternating timed "
+          "renders each (median seconds, mean relMSE)" % (w, h, spp, depth, args.reference_spp,
+                                                        args.repeats))
     print("| renderer | seconds | paths/s | relMSE | relMSE x seconds | image mean |")
     print("|---|---|---|---|---|---|")
     for name, r in rows.items():
@@ -177,7 +188,8 @@ def main():
     if args.json:
         with open(args.json, "w") as f:
             json.dump({"width": w, "height": h, "spp": spp, "maxDepth": depth,
-                       "referenceSpp": args.reference_spp, "renderers": rows,
+                       "referenceSpp": args.reference_spp, "repeats": args.repeats,
+                       "renderers": rows,
                        "referencesRelMSE": check, "wavefrontOverMitsubaPathsPerSecond": ratio,
                        "wavefrontOverMitsubaEfficiency": efficiency,
                        "wavefrontOverMegakernel": bench["wavefrontOverMegakernel"],
