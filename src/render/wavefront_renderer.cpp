@@ -58,7 +58,7 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
                                                            : pathCapacity_;
     variant_ = chooseVariant(scene, settings);
     variant_.surface = surfaceFeatures(scene.surface, scene.materials, texelPageBytes(context));
-    variant_.packedStores = context.shaderInt64();
+    variant_.packedStores = settings.packedStores && context.shaderInt64();
     defines_ = variant_.defines();
     if (sharedScene && sharedScene->defines() != defines_)
         throw InternalError("scene buffers shared between renderers of different variants");

@@ -63,6 +63,9 @@ struct RenderSettings {
     // Finite-set samplers (stratified, multijitter, hammersley): samples in one set, 0 =
     // sppOffset + samplesPerPixel (--spp-total). Parts of one render must agree on it.
     uint32_t sampleSetSize = 0;
+    // Store 16-byte path-state entries as two 64-bit words where the device has shaderInt64
+    // (WF_PACKED_STORES, faster on lavapipe); off, the vec4 stores every device has. Same image.
+    bool packedStores = true;
 };
 
 struct RenderStats {

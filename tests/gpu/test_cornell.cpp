@@ -104,6 +104,26 @@ TEST(Cornell, SharedSceneBuffersGiveTheSameImage) {
     EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
 }
 
+// The packed 64-bit stores (WF_PACKED_STORES) and the plain vec4 stores of devices without
+// shaderInt64 write the same bytes: the images agree bit for bit, megakernel included.
+TEST(Cornell, PackedStoresGiveTheSameImage) {
+    if (!gpuContext().shaderInt64())
+        GTEST_SKIP() << "the device has no shaderInt64: only the vec4 stores exist";
+    for (bool megakernel : {false, true}) {
+        RenderSettings settings = smallSettings(3);
+        settings.megakernel = megakernel;
+        RenderResult packed = renderScene(cornell(), settings);
+        settings.packedStores = false;
+        RenderResult plain = renderScene(cornell(), settings);
+        ASSERT_EQ(packed.rgb.size(), plain.rgb.size());
+        EXPECT_EQ(std::memcmp(packed.rgb.data(), plain.rgb.data(),
+                              packed.rgb.size() * sizeof(float)),
+                  0)
+            << (megakernel ? "megakernel" : "wavefront");
+    }
+    EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
+}
+
 TEST(Cornell, QueuesConserveRays) {
     RenderResult result = renderScene(cornell(), smallSettings(1));
     const uint64_t paths = 48ull * 48 * 16;
