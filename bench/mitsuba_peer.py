@@ -7,7 +7,7 @@ needs `pip install mitsuba` (into a virtual environment of your own, not the pro
 
     python3 -m venv /tmp/mi && /tmp/mi/bin/pip install mitsuba
     /tmp/mi/bin/python bench/mitsuba_peer.py [--wavefront build/wavefront] [--width 256]
-        [--spp 64] [--max-depth 8] [--reference-spp 512] [--repeats 3]
+        [--spp 64] [--max-depth 8] [--reference-spp 512] [--repeats 3] [--sampler NAME]
         [--json bench/results/peer.json]
 
 The Mitsuba scene is built from scenes/make_cornell_box.py, the generator of
@@ -100,13 +100,15 @@ def render_mitsuba(mi, folder, width, height, spp, max_depth, rr_depth, seed=0):
     return image, time.perf_counter() - start
 
 
-def render_wavefront(mi, exe, folder, width, height, spp, max_depth, rr_depth, tag, seed=0):
+def render_wavefront(mi, exe, folder, width, height, spp, max_depth, rr_depth, tag, seed=0,
+                     sampler=None):
     out = os.path.join(folder, "wavefront_%s.exr" % tag)
     stats = os.path.join(folder, "wavefront_%s.json" % tag)
+    extra = ["--sampler", sampler] if sampler else []
     subprocess.run([exe, "render", os.path.join(ROOT, "scenes", "cornell_box.gltf"), "-o", out,
                     "--width", str(width), "--height", str(height), "--spp", str(spp),
                     "--max-depth", str(max_depth), "--rr-depth", str(rr_depth), "--json", stats,
-                    "--seed", str(seed), "--quiet"], check=True)
+                    "--seed", str(seed), "--quiet"] + extra, check=True)
     image = np.array(mi.Bitmap(out), dtype=np.float64)[:, :, :3]
     return image, json.load(open(stats))["seconds"]
 
@@ -136,6 +138,8 @@ def main():
                         help="Wavefront's --rr-depth (bounce index); Mitsuba gets one more, as "
                              "its depth counts from 1")
     parser.add_argument("--reference-spp", type=int, default=512)
+    parser.add_argument("--sampler", help="Wavefront's --sampler (default: its own default; "
+                        "Mitsuba's is independent)")
     parser.add_argument("--repeats", type=int, default=3,
                         help="timed renders of each, alternating (median time, mean relMSE)")
     parser.add_argument("--json", help="write the numbers here")
@@ -145,17 +149,21 @@ def main():
     mi.set_variant("scalar_rgb")
     w, h, spp, depth = args.width, args.height, args.spp, args.max_depth
     with tempfile.TemporaryDirectory() as folder:
+        # The references' seed is none of the timed renders' (0 .. repeats - 1): a reference
+        # that shared a timed render's first samples would understate that render's error.
+        ref_seed = 1000
         mi_ref, mi_ref_s = render_mitsuba(mi, folder, w, h, args.reference_spp, depth,
-                                          args.rr_depth + 1)
+                                          args.rr_depth + 1, ref_seed)
         wf_ref, wf_ref_s = render_wavefront(mi, args.wavefront, folder, w, h, args.reference_spp,
-                                            depth, args.rr_depth, "reference")
+                                            depth, args.rr_depth, "reference", ref_seed,
+                                            args.sampler)
         # Timed renders alternate between the two, each with its own seed, so that a drift in
         # the machine's speed (other tenants) falls on both; times are medians, errors means.
         mi_runs, wf_runs = [], []
         for seed in range(args.repeats):
             mi_runs.append(render_mitsuba(mi, folder, w, h, spp, depth, args.rr_depth + 1, seed))
             wf_runs.append(render_wavefront(mi, args.wavefront, folder, w, h, spp, depth,
-                                            args.rr_depth, "test", seed))
+                                            args.rr_depth, "test", seed, args.sampler))
         bench = bench_ratio(args.wavefront, folder, w, h, spp, depth)
     paths = w * h * spp
     rows = {}
@@ -189,6 +197,7 @@ def main():
         with open(args.json, "w") as f:
             json.dump({"width": w, "height": h, "spp": spp, "maxDepth": depth,
                        "referenceSpp": args.reference_spp, "repeats": args.repeats,
+                       "wavefrontSampler": args.sampler or "default",
                        "renderers": rows,
                        "referencesRelMSE": check, "wavefrontOverMitsubaPathsPerSecond": ratio,
                        "wavefrontOverMitsubaEfficiency": efficiency,
