@@ -60,6 +60,7 @@ const CommandSpec& renderSpec() {
         "  WAVEFRONT_SHADER_DIR=DIR  GLSL sources (default: next to the binary, else the source "
         "tree)\n"
         "  WAVEFRONT_CACHE_DIR=DIR   SPIR-V cache (default ~/.cache/wavefront; empty: none)\n"
+        "  LP_NUM_THREADS=N          lavapipe's threads (default here: twice the CPU cores)\n"
         "\n"
         "Exit codes: 0 done, 2 bad usage or bad input, 1 internal or device failure.\n"};
     return spec;
