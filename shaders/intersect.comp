@@ -1,7 +1,8 @@
 #version 460
 // intersect: closest hit of every ray in the current ray queue.
 // In: rayQueue[depth & 1] (count in counters.rayArgs.count), rayOrigin, rayDirection, BVH.
-// Out: hits[index] (by queue slot: shade reads the same queue) = (t, b1, b2, triangle), (t, -, -, WF_SPHERE_HIT | light) or WF_MISS.
+// Out: hits[index] (by queue slot: shade reads the same queue) = (t, b1, b2, triangle),
+// (t, -, -, WF_SPHERE_HIT | light) or WF_MISS.
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "bindings.glsl"

@@ -6,17 +6,24 @@
 // views are not `restrict`: they alias the storage buffers). The queues are read the same way:
 // a storage-buffer load of one uint is a loop over the lanes too (+8% paths/s on the Cornell
 // box for the three queue reads of intersect, shade and shadow).
-layout(binding = WF_BINDING_RAY_ORIGIN_TEXELS, rgba32ui) uniform readonly uimageBuffer rayOriginTexels;
-layout(binding = WF_BINDING_RAY_DIRECTION_TEXELS, rgba32ui) uniform readonly uimageBuffer rayDirectionTexels;
-layout(binding = WF_BINDING_THROUGHPUT_TEXELS, rgba32ui) uniform readonly uimageBuffer throughputTexels;
+layout(binding = WF_BINDING_RAY_ORIGIN_TEXELS, rgba32ui) uniform readonly uimageBuffer
+    rayOriginTexels;
+layout(binding = WF_BINDING_RAY_DIRECTION_TEXELS, rgba32ui) uniform readonly uimageBuffer
+    rayDirectionTexels;
+layout(binding = WF_BINDING_THROUGHPUT_TEXELS, rgba32ui) uniform readonly uimageBuffer
+    throughputTexels;
 layout(binding = WF_BINDING_RADIANCE_TEXELS, rgba32ui) uniform readonly uimageBuffer radianceTexels;
 layout(binding = WF_BINDING_HITS_TEXELS, rgba32ui) uniform readonly uimageBuffer hitTexels;
 layout(binding = WF_BINDING_RAY_QUEUE_TEXELS, r32ui) uniform readonly uimageBuffer rayQueueTexels;
 #if WF_HAS_EMITTERS
-layout(binding = WF_BINDING_SHADOW_QUEUE_TEXELS, r32ui) uniform readonly uimageBuffer shadowQueueTexels;
-layout(binding = WF_BINDING_SHADOW_ORIGIN_TEXELS, rgba32ui) uniform readonly uimageBuffer shadowOriginTexels;
-layout(binding = WF_BINDING_SHADOW_DIRECTION_TEXELS, rgba32ui) uniform readonly uimageBuffer shadowDirectionTexels;
-layout(binding = WF_BINDING_SHADOW_RADIANCE_TEXELS, rgba32ui) uniform readonly uimageBuffer shadowRadianceTexels;
+layout(binding = WF_BINDING_SHADOW_QUEUE_TEXELS, r32ui) uniform readonly uimageBuffer
+    shadowQueueTexels;
+layout(binding = WF_BINDING_SHADOW_ORIGIN_TEXELS, rgba32ui) uniform readonly uimageBuffer
+    shadowOriginTexels;
+layout(binding = WF_BINDING_SHADOW_DIRECTION_TEXELS, rgba32ui) uniform readonly uimageBuffer
+    shadowDirectionTexels;
+layout(binding = WF_BINDING_SHADOW_RADIANCE_TEXELS, rgba32ui) uniform readonly uimageBuffer
+    shadowRadianceTexels;
 #endif
 
 // A macro, as GLSL functions cannot take the images themselves.

@@ -136,7 +136,8 @@ static_assert(offsetof(wf::gpu_types::QueueCounters, rayArgs) == 16);
 static_assert(offsetof(wf::gpu_types::QueueCounters, shadowArgs) == 32);
 static_assert(offsetof(wf::gpu_types::QueueCounters, nonFiniteSamples) == 56);
 static_assert(offsetof(wf::gpu_types::QueueCounters, depthRays) == 64);
-static_assert(offsetof(wf::gpu_types::QueueCounters, depthShadowRays) == 64 + 4 * WF_TRACKED_DEPTHS);
+static_assert(offsetof(wf::gpu_types::QueueCounters, depthShadowRays) ==
+              64 + 4 * WF_TRACKED_DEPTHS);
 static_assert(sizeof(wf::gpu_types::PassConstants) == 32);
 static_assert(offsetof(wf::gpu_types::PassConstants, wavePixels) == 20);
 #endif

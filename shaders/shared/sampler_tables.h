@@ -28,7 +28,8 @@ uint samplerTable(uint index);
 #else
 #if WF_SAMPLER_TABLES
 // An R32UI storage texel buffer: scattered reads are cheapest as imageLoad (scene_tables.glsl).
-layout(binding = WF_BINDING_SAMPLER_TABLES, r32ui) uniform readonly restrict uimageBuffer samplerTableTexels;
+layout(binding = WF_BINDING_SAMPLER_TABLES, r32ui) uniform readonly restrict uimageBuffer
+    samplerTableTexels;
 uint samplerTable(uint index) { return imageLoad(samplerTableTexels, int(index)).x; }
 #endif
 #endif

@@ -2,21 +2,28 @@
 // storage texel buffers read with imageLoad (src/gpu/compute_program.h says why) and unpacked
 // into the structs of scene_types.h. Unused fields cost nothing: the compiler drops loads whose
 // texel is unread.
-layout(binding = WF_BINDING_TRIANGLES, rgba32ui) uniform readonly restrict uimageBuffer triangleTexels;
-layout(binding = WF_BINDING_BVH_NODES, rgba32ui) uniform readonly restrict uimageBuffer bvhNodeTexels;
-layout(binding = WF_BINDING_MATERIALS, rgba32ui) uniform readonly restrict uimageBuffer materialTexels;
+layout(binding = WF_BINDING_TRIANGLES, rgba32ui) uniform readonly restrict uimageBuffer
+    triangleTexels;
+layout(binding = WF_BINDING_BVH_NODES, rgba32ui) uniform readonly restrict uimageBuffer
+    bvhNodeTexels;
+layout(binding = WF_BINDING_MATERIALS, rgba32ui) uniform readonly restrict uimageBuffer
+    materialTexels;
 #if WF_HAS_EMITTERS
-layout(binding = WF_BINDING_EMITTERS, rgba32ui) uniform readonly restrict uimageBuffer emitterTexels;
+layout(binding = WF_BINDING_EMITTERS, rgba32ui) uniform readonly restrict uimageBuffer
+    emitterTexels;
 #endif
 #if WF_HAS_LIGHTS
-layout(binding = WF_BINDING_LIGHTS, rgba32ui) uniform readonly restrict uimageBuffer lightTexels; // sphere lights first
+// Sphere lights first.
+layout(binding = WF_BINDING_LIGHTS, rgba32ui) uniform readonly restrict uimageBuffer lightTexels;
 #endif
 #if WF_HAS_ENVIRONMENT
 // RGB radiance per texel (alpha unused), equirectangular, top row first.
-layout(binding = WF_BINDING_ENVIRONMENT, rgba32ui) uniform readonly restrict uimageBuffer environmentTexels;
+layout(binding = WF_BINDING_ENVIRONMENT, rgba32ui) uniform readonly restrict uimageBuffer
+    environmentTexels;
 #if WF_HAS_EMITTERS
 // Emitter-shaped alias table over the environment's texels.
-layout(binding = WF_BINDING_ENVIRONMENT_ALIAS, rgba32ui) uniform readonly restrict uimageBuffer environmentAliasTexels;
+layout(binding = WF_BINDING_ENVIRONMENT_ALIAS, rgba32ui) uniform readonly restrict uimageBuffer
+    environmentAliasTexels;
 #endif
 #endif
 

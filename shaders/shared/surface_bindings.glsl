@@ -1,8 +1,8 @@
 // Per-triangle vertex attributes and textures (bindings 20-31, texture_types.h), bound as
 // uint storage texel buffers like the scene tables (src/gpu/compute_program.h says why) and
-// unpacked here into the structs of texture_types.h with the bits as stored: normals, tangents and texture
-// references RGBA32UI, UVs RG32UI (a corner a texel), texel pages R32UI (an RGBA8 texel a
-// texel). Each is declared only in the variants that read it, so a scene without textures
+// unpacked here into the structs of texture_types.h with the bits as stored: normals, tangents
+// and texture references RGBA32UI, UVs RG32UI (a corner a texel), texel pages R32UI (an RGBA8
+// texel a texel). Each is declared only in the variants that read it, so a scene without textures
 // binds no texel, texture-reference or UV buffer. Include after bindings.glsl.
 #ifndef WF_SURFACE_BINDINGS_GLSL
 #define WF_SURFACE_BINDINGS_GLSL
@@ -18,7 +18,8 @@ TriangleNormals triangleNormalsAt(uint triangle) {
 #endif
 
 #if WF_HAS_NORMAL_MAPS
-layout(binding = WF_BINDING_TANGENTS, rgba32ui) uniform readonly restrict uimageBuffer tangentTexels;
+layout(binding = WF_BINDING_TANGENTS, rgba32ui) uniform readonly restrict uimageBuffer
+    tangentTexels;
 
 TriangleTangents triangleTangentsAt(uint triangle) {
     uvec4 t = imageLoad(tangentTexels, int(triangle * WF_TRIANGLE_TANGENTS_TEXELS));
@@ -27,10 +28,13 @@ TriangleTangents triangleTangentsAt(uint triangle) {
 #endif
 
 #if WF_HAS_TEXTURES
-layout(binding = WF_BINDING_TEXTURE_REFS, rgba32ui) uniform readonly restrict uimageBuffer textureRefTexels;
-layout(binding = WF_BINDING_TEXCOORDS0, rg32ui) uniform readonly restrict uimageBuffer texcoord0Texels;
+layout(binding = WF_BINDING_TEXTURE_REFS, rgba32ui) uniform readonly restrict uimageBuffer
+    textureRefTexels;
+layout(binding = WF_BINDING_TEXCOORDS0, rg32ui) uniform readonly restrict uimageBuffer
+    texcoord0Texels;
 #if WF_HAS_TEXCOORD1
-layout(binding = WF_BINDING_TEXCOORDS1, rg32ui) uniform readonly restrict uimageBuffer texcoord1Texels;
+layout(binding = WF_BINDING_TEXCOORDS1, rg32ui) uniform readonly restrict uimageBuffer
+    texcoord1Texels;
 #endif
 layout(binding = WF_BINDING_TEXELS0, r32ui) uniform readonly restrict uimageBuffer texelPage0;
 #if WF_TEXEL_PAGES > 1

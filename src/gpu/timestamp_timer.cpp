@@ -32,7 +32,7 @@ void TimestampTimer::reset(VkCommandBuffer cmd) {
 
 // Bottom of pipe: written once every earlier command has finished, so a mark ends the pass
 // before it on any device.
-void TimestampTimer::write(VkCommandBuffer cmd, const char* passName) {
+void TimestampTimer::mark(VkCommandBuffer cmd, const char* passName) {
     if (names_.size() >= capacity_)
         throw InternalError("timestamp timer full: more than " + std::to_string(capacity_ - 1) +
                             " timed passes in one submit");
@@ -41,11 +41,9 @@ void TimestampTimer::write(VkCommandBuffer cmd, const char* passName) {
     names_.push_back(passName);
 }
 
-void TimestampTimer::mark(VkCommandBuffer cmd, const char* passName) { write(cmd, passName); }
-
 void TimestampTimer::finish(VkCommandBuffer cmd) {
     if (!names_.empty() && names_.back() != nullptr)
-        write(cmd, nullptr);
+        mark(cmd, nullptr); // a timestamp that starts no pass
 }
 
 std::map<std::string, double> TimestampTimer::collect() {

@@ -24,15 +24,13 @@ public:
     TimestampTimer& operator=(const TimestampTimer&) = delete;
 
     void reset(VkCommandBuffer cmd); // before the first mark() of a command buffer
-    // Ends the running interval, if any, and starts one for `passName`.
+    // Ends the running interval, if any, and starts one for `passName` (null: none).
     void mark(VkCommandBuffer cmd, const char* passName);
     void finish(VkCommandBuffer cmd); // ends the running interval
     // Milliseconds per pass name for the intervals recorded since reset().
     std::map<std::string, double> collect();
 
 private:
-    void write(VkCommandBuffer cmd, const char* passName);
-
     VkDevice device_;
     VkQueryPool pool_ = VK_NULL_HANDLE;
     uint32_t capacity_; // timestamps
