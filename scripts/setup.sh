@@ -8,7 +8,7 @@ cd "$(dirname "$0")/.."
 packages=(
     build-essential cmake ninja-build pkg-config
     libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers
-    glslang-dev libglm-dev libtinygltf-dev libopenexr-dev libstb-dev
+    glslang-dev glslang-tools libglm-dev libtinygltf-dev libopenexr-dev libstb-dev
     libglfw3-dev libimgui-dev # wavefront view (WF_BUILD_VIEWER)
     python3-matplotlib # wavefront converge's charts (scripts/plot_convergence.py)
 )
