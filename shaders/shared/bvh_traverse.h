@@ -12,6 +12,8 @@
 //   WF_BVH_PAIR(i)      an expression yielding BvhPair i (e.g. a texel-buffer fetch)
 //   WF_BVH_TRIANGLE(i)  an expression yielding Triangle i
 //   WF_BVH_STACK_SIZE   optional, default 64; the builder keeps depth <= WF_BVH_STACK_SIZE - 1
+//   WF_BVH_REGISTER_STACK  optional, default 0; 1 where the tree never holds more than
+//                       WF_BVH_REGISTER_STACK_SIZE entries on the stack (bvhStackNeed)
 // With WF_HAS_ALPHA_MASK (GLSL only), every candidate hit must also pass
 //   bool wfAlphaPasses(uint triangle, float b1, float b2, vec3 o, vec3 d)
 // so cut-outs stop no ray, closest-hit or shadow; the includer may define it (and
@@ -33,6 +35,10 @@
 #include "alpha_mask.glsl"
 #endif
 
+#ifndef WF_BVH_REGISTER_STACK
+#define WF_BVH_REGISTER_STACK 0
+#endif
+
 #define WF_NO_TRIANGLE 0xffffffffu
 
 #ifdef __cplusplus
@@ -47,10 +53,46 @@ struct HitRecord {
     uint triangle; // WF_NO_TRIANGLE on a miss
 };
 
+// A traversal stack of up to 8 entries held in vectors and shifted on push and pop. Mesa 22.3's
+// llvmpipe runs a dynamically indexed private array as a loop over the lanes, a load or store
+// at a time; a shift is a few selects. The host picks it where the tree's stack need fits.
+struct BvhRegisterStack {
+    uvec4 pairs0; // top of the stack in .x
+    uvec4 pairs1;
+    vec4 entries0; // entry distances, alongside
+    vec4 entries1;
+};
+
+WF_INLINE BvhRegisterStack bvhRegisterStack() {
+    BvhRegisterStack s;
+    s.pairs0 = uvec4(0u);
+    s.pairs1 = uvec4(0u);
+    s.entries0 = vec4(0.0f);
+    s.entries1 = vec4(0.0f);
+    return s;
+}
+
+// Past 8 entries the bottom one falls off: wrong, but the host never lets that happen.
+WF_INLINE void bvhRegisterPush(WF_INOUT(BvhRegisterStack) s, uint pair, float entry) {
+    s.pairs1 = uvec4(s.pairs0.w, s.pairs1.x, s.pairs1.y, s.pairs1.z);
+    s.pairs0 = uvec4(pair, s.pairs0.x, s.pairs0.y, s.pairs0.z);
+    s.entries1 = vec4(s.entries0.w, s.entries1.x, s.entries1.y, s.entries1.z);
+    s.entries0 = vec4(entry, s.entries0.x, s.entries0.y, s.entries0.z);
+}
+
+// Removes the top entry (read it from pairs0.x and entries0.x first).
+WF_INLINE void bvhRegisterPop(WF_INOUT(BvhRegisterStack) s) {
+    s.pairs0 = uvec4(s.pairs0.y, s.pairs0.z, s.pairs0.w, s.pairs1.x);
+    s.pairs1 = uvec4(s.pairs1.y, s.pairs1.z, s.pairs1.w, 0u);
+    s.entries0 = vec4(s.entries0.y, s.entries0.z, s.entries0.w, s.entries1.x);
+    s.entries1 = vec4(s.entries1.y, s.entries1.z, s.entries1.w, 0.0f);
+}
+
 #ifdef __cplusplus
 struct BvhTraversal {
     const BvhPair* pairs = nullptr;
     const Triangle* triangles = nullptr;
+    uint deepestStack = 0u; // the most entries the stack held, for the tests of bvhStackNeed
 #ifndef WF_BVH_PAIR
 #define WF_BVH_PAIR(i) pairs[i]
 #define WF_BVH_TRIANGLE(i) triangles[i]
@@ -113,8 +155,12 @@ WF_INLINE bool traceClosest(vec3 o, vec3 d, float tMax, WF_OUT(HitRecord) hit) {
     hit.b2 = 0.0f;
     hit.triangle = WF_NO_TRIANGLE;
     vec3 invDir = 1.0f / d;
+#if WF_BVH_REGISTER_STACK
+    BvhRegisterStack stack = bvhRegisterStack();
+#else
     uint stackPair[WF_BVH_STACK_SIZE];
     float stackEntry[WF_BVH_STACK_SIZE];
+#endif
     uint stackSize = 0u;
     uint current = 0u; // pair entry 0: the root's children
     bool haveCurrent = true;
@@ -145,10 +191,27 @@ WF_INLINE bool traceClosest(vec3 o, vec3 d, float tMax, WF_OUT(HitRecord) hit) {
         current = (nearNext ? step.nearChild : step.farChild) >> WF_BVH_COUNT_BITS;
         // The builder bounds the depth, so the size check only guards against a foreign tree:
         // dropping a subtree is wrong but cannot write out of bounds.
+#if WF_BVH_REGISTER_STACK
+        if (nearNext && farNext) {
+            bvhRegisterPush(stack, step.farChild >> WF_BVH_COUNT_BITS, step.farEntry);
+            ++stackSize;
+        }
+        while (!haveCurrent && stackSize > 0u) {
+            --stackSize;
+            if (stack.entries0.x <= hit.t) {
+                current = stack.pairs0.x;
+                haveCurrent = true;
+            }
+            bvhRegisterPop(stack);
+        }
+#else
         if (nearNext && farNext && stackSize < uint(WF_BVH_STACK_SIZE)) {
             stackPair[stackSize] = step.farChild >> WF_BVH_COUNT_BITS;
             stackEntry[stackSize] = step.farEntry;
             ++stackSize;
+#ifdef __cplusplus
+            deepestStack = max(deepestStack, stackSize);
+#endif
         }
         while (!haveCurrent && stackSize > 0u) {
             --stackSize;
@@ -157,6 +220,7 @@ WF_INLINE bool traceClosest(vec3 o, vec3 d, float tMax, WF_OUT(HitRecord) hit) {
                 haveCurrent = true;
             }
         }
+#endif
     }
     return hit.triangle != WF_NO_TRIANGLE;
 }
@@ -164,7 +228,11 @@ WF_INLINE bool traceClosest(vec3 o, vec3 d, float tMax, WF_OUT(HitRecord) hit) {
 // Any hit with t in (0, tMax), for shadow rays: order does not matter, the first hit ends it.
 WF_INLINE bool traceAny(vec3 o, vec3 d, float tMax) {
     vec3 invDir = 1.0f / d;
+#if WF_BVH_REGISTER_STACK
+    BvhRegisterStack stack = bvhRegisterStack();
+#else
     uint stackPair[WF_BVH_STACK_SIZE];
+#endif
     uint stackSize = 0u;
     uint current = 0u;
     bool haveCurrent = true;
@@ -186,15 +254,31 @@ WF_INLINE bool traceAny(vec3 o, vec3 d, float tMax) {
         }
         haveCurrent = step.nearInner || step.farInner;
         current = (step.nearInner ? step.nearChild : step.farChild) >> WF_BVH_COUNT_BITS;
+#if WF_BVH_REGISTER_STACK
+        if (step.nearInner && step.farInner) {
+            bvhRegisterPush(stack, step.farChild >> WF_BVH_COUNT_BITS, 0.0f);
+            ++stackSize;
+        }
+        if (!haveCurrent && stackSize > 0u) {
+            --stackSize;
+            current = stack.pairs0.x;
+            haveCurrent = true;
+            bvhRegisterPop(stack);
+        }
+#else
         if (step.nearInner && step.farInner && stackSize < uint(WF_BVH_STACK_SIZE)) {
             stackPair[stackSize] = step.farChild >> WF_BVH_COUNT_BITS;
             ++stackSize;
+#ifdef __cplusplus
+            deepestStack = max(deepestStack, stackSize);
+#endif
         }
         if (!haveCurrent && stackSize > 0u) {
             --stackSize;
             current = stackPair[stackSize];
             haveCurrent = true;
         }
+#endif
     }
     return false;
 }

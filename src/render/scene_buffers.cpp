@@ -16,6 +16,7 @@ PreparedScene prepareScene(Scene scene) {
     tagTriangles(prepared.triangles); // the per-triangle arrays follow the BVH's order
     prepared.bvhStats = buildBvh(prepared.triangles, prepared.nodes);
     prepared.bvhPairs = pairBvhNodes(prepared.nodes);
+    prepared.bvhStats.stackNeed = bvhStackNeed(prepared.bvhPairs);
     followTriangleOrder(prepared.triangles, prepared.surface);
     prepared.bounds = sceneBounds(prepared.triangles, prepared.punctualLights);
     prepared.lights = buildLightTable(prepared.triangles, prepared.materials,

@@ -26,6 +26,8 @@ ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& se
         scene.materials.begin(), scene.materials.end(), [](const Material& m) {
             return m.metallic <= 0.0f && m.specular <= 0.0f && m.transmission <= 0.0f;
         });
+    variant.registerStack =
+        settings.registerStack && scene.bvhStats.stackNeed <= WF_BVH_REGISTER_STACK_SIZE;
     variant.sampler = settings.sampler;
     variant.randomizeSamples = settings.randomizeSamples;
     return variant;
@@ -52,7 +54,8 @@ ShaderDefines ShaderVariant::defines() const {
             {"WF_HAS_ALPHA_MASK", flag(surface.alphaMask)},
             {"WF_SAMPLER", std::to_string(static_cast<uint32_t>(sampler))},
             {"WF_SAMPLER_RANDOMIZE", flag(randomizeSamples)},
-            {"WF_PACKED_STORES", flag(packedStores)}};
+            {"WF_PACKED_STORES", flag(packedStores)},
+            {"WF_BVH_REGISTER_STACK", flag(registerStack)}};
 }
 
 std::string ShaderVariant::describe() const {

@@ -383,4 +383,25 @@ std::vector<BvhPair> pairBvhNodes(const std::vector<BvhNode>& nodes) {
     return BvhPairer(nodes).pair();
 }
 
+std::uint32_t bvhStackNeed(const std::vector<BvhPair>& pairs) {
+    // Children come after their parents (BvhPairer), so one backward sweep sees them first.
+    std::vector<std::uint32_t> need(pairs.size(), 0);
+    auto interior = [](std::uint32_t child) {
+        return child != WF_BVH_NO_CHILD && (child & WF_BVH_MAX_LEAF_COUNT) == 0;
+    };
+    for (std::size_t i = pairs.size(); i-- > 0;) {
+        const std::uint32_t children[2] = {pairs[i].child0, pairs[i].child1};
+        std::uint32_t deepest = 0;
+        for (const std::uint32_t child : children) {
+            if (!interior(child))
+                continue;
+            const std::size_t entry = child >> WF_BVH_COUNT_BITS;
+            assert(entry > i && entry < pairs.size() && "pair entries follow their parents");
+            deepest = std::max(deepest, need[entry]);
+        }
+        need[i] = deepest + (interior(children[0]) && interior(children[1]) ? 1 : 0);
+    }
+    return pairs.empty() ? 0 : need[0];
+}
+
 } // namespace wf

@@ -26,6 +26,7 @@ struct BvhBuildStats {
     std::uint32_t nodeCount = 0;
     std::uint32_t leafCount = 0;
     std::uint32_t maxDepth = 0; // deepest node; the root is depth 0
+    std::uint32_t stackNeed = 0; // bvhStackNeed of the paired tree (filled in by its caller)
 };
 
 // Builds `nodes` (cleared first) and reorders `triangles` in place so every leaf indexes a
@@ -38,5 +39,9 @@ BvhBuildStats buildBvh(std::vector<Triangle>& triangles, std::vector<BvhNode>& n
 // The layout traversal walks (BvhPair in scene_types.h): one entry per interior node of
 // `nodes` (from buildBvh), or a single entry for a leaf root or an empty scene.
 std::vector<BvhPair> pairBvhNodes(const std::vector<BvhNode>& nodes);
+
+// The most entries traversal (bvh_traverse.h) can hold on its stack for these pairs, whatever
+// the ray: an entry whose children are both interior pushes one and descends into the other.
+std::uint32_t bvhStackNeed(const std::vector<BvhPair>& pairs);
 
 } // namespace wf

@@ -2,6 +2,7 @@
 // bvh_traverse.h), for tests and tools. Pairs the nodes from buildBvh and borrows the
 // triangle array, which must outlive it (in leaf order, as buildBvh leaves it).
 #pragma once
+#include <algorithm>
 #include <cassert>
 #include <vector>
 
@@ -26,18 +27,27 @@ public:
     // Closest hit with t in (0, tMax); hit.triangle indexes the reordered triangle array.
     bool traceClosest(glm::vec3 o, glm::vec3 d, float tMax, HitRecord& hit) const {
         gpu_types::BvhTraversal traversal = traversal_; // the shared code is not const-qualified
-        return traversal.traceClosest(o, d, tMax, hit);
+        const bool found = traversal.traceClosest(o, d, tMax, hit);
+        deepestStack_ = std::max(deepestStack_, traversal.deepestStack);
+        return found;
     }
 
     // Whether anything is hit with t in (0, tMax).
     bool traceAny(glm::vec3 o, glm::vec3 d, float tMax) const {
         gpu_types::BvhTraversal traversal = traversal_;
-        return traversal.traceAny(o, d, tMax);
+        const bool found = traversal.traceAny(o, d, tMax);
+        deepestStack_ = std::max(deepestStack_, traversal.deepestStack);
+        return found;
     }
+
+    // The most entries the traversal stack has held over all queries so far.
+    std::uint32_t deepestStack() const { return deepestStack_; }
+    std::uint32_t stackNeed() const { return bvhStackNeed(pairs_); }
 
 private:
     std::vector<BvhPair> pairs_;
     gpu_types::BvhTraversal traversal_;
+    mutable std::uint32_t deepestStack_ = 0;
 };
 
 } // namespace wf

@@ -2,6 +2,7 @@
 // same seed, independent seeds agreeing within noise, and waves of any size giving one image.
 #include <cmath>
 #include <cstring>
+#include <random>
 
 #include <gtest/gtest.h>
 
@@ -121,6 +122,59 @@ TEST(Cornell, PackedStoresGiveTheSameImage) {
                   0)
             << (megakernel ? "megakernel" : "wavefront");
     }
+    EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
+}
+
+// The Cornell box with `count` small random triangles floating in the room: a deeper tree.
+Scene cornellWithSoup(int count) {
+    Scene scene = cornell();
+    std::mt19937 rng(7u);
+    std::uniform_real_distribution<float> inside(1.0f, 4.5f), edge(-0.15f, 0.15f);
+    for (int i = 0; i < count; ++i) {
+        glm::vec3 p(inside(rng), inside(rng), inside(rng));
+        Triangle tri = scene.triangles[0]; // its material, emitter tag and all
+        tri.p0 = p;
+        tri.p1 = p + glm::vec3(edge(rng), edge(rng), edge(rng));
+        tri.p2 = p + glm::vec3(edge(rng), edge(rng), edge(rng));
+        scene.triangles.push_back(tri);
+    }
+    return scene;
+}
+
+// The register stack (WF_BVH_REGISTER_STACK) holds exactly what the private array holds: on a
+// tree whose stack need is the register stack's whole size, closest hits and shadow rays give
+// the same image bit for bit; one entry more and the renderer keeps the array.
+TEST(Cornell, RegisterStackGivesTheSameImage) {
+    int full = -1, over = -1;
+    for (int count = 10; count <= 4000 && over < 0; count += 10) {
+        const uint32_t need = prepareScene(cornellWithSoup(count)).bvhStats.stackNeed;
+        if (need == WF_BVH_REGISTER_STACK_SIZE && full < 0)
+            full = count;
+        if (need > WF_BVH_REGISTER_STACK_SIZE)
+            over = count;
+    }
+    ASSERT_GT(full, 0) << "no soup size gave a stack need of exactly 8";
+    ASSERT_GT(over, 0);
+    static ShaderCompiler compiler;
+    for (bool megakernel : {false, true}) {
+        RenderSettings settings = smallSettings(5);
+        settings.samplesPerPixel = 4;
+        settings.megakernel = megakernel;
+        const PreparedScene prepared = prepareScene(cornellWithSoup(full));
+        WavefrontRenderer registers(gpuContext(), prepared, settings, compiler);
+        settings.registerStack = false;
+        WavefrontRenderer array(gpuContext(), prepared, settings, compiler);
+        ASSERT_TRUE(registers.variant().registerStack);
+        ASSERT_FALSE(array.variant().registerStack);
+        registers.render();
+        array.render();
+        std::vector<float> a = registers.readImage(), b = array.readImage();
+        ASSERT_EQ(a.size(), b.size());
+        EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(float)), 0)
+            << (megakernel ? "megakernel" : "wavefront");
+    }
+    const PreparedScene deeper = prepareScene(cornellWithSoup(over));
+    EXPECT_FALSE(chooseVariant(deeper, smallSettings(5)).registerStack);
     EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
 }
 

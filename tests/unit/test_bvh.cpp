@@ -164,6 +164,8 @@ void compareWithBruteForce(std::vector<Triangle> tris, int rays, std::uint32_t s
         EXPECT_EQ(b2, hit.b2);
     }
     EXPECT_GT(hits, rays / 20) << "too few hits for the comparison to mean much";
+    // The bound the host uses to choose the register stack is never exceeded.
+    EXPECT_LE(bvh.deepestStack(), bvh.stackNeed());
     if (coplanar) {
         std::printf("coplanar mesh: %d of %d hits have exactly the brute-force t\n", exact, hits);
     }
@@ -314,6 +316,47 @@ TEST(Bvh, OversizedLeavesAreSplitForTraversal) {
                     referenced += child & WF_BVH_MAX_LEAF_COUNT;
         EXPECT_EQ(referenced, tris.size()) << "maxDepth " << maxDepth;
         compareWithBruteForce(randomSoup(1000, 5u), 3000, 18u + maxDepth, false, opts);
+    }
+}
+
+// The need is the depth in "both children interior" levels: a balanced tree of 2^k well-apart
+// clusters of 4 triangles (one leaf each) needs k - 1 entries, and some ray reaches them all.
+TEST(Bvh, StackNeedOfABalancedTree) {
+    for (std::uint32_t k : {1u, 3u, 6u}) {
+        std::vector<Triangle> tris;
+        for (std::uint32_t c = 0; c < (1u << k); ++c) {
+            vec3 base(10.0f * float(c), 0.0f, 0.0f);
+            for (int i = 0; i < 4; ++i) {
+                vec3 p = base + vec3(0.1f * float(i), 0.0f, 0.0f);
+                tris.push_back(makeTriangle(p, p + vec3(0, 1, 0), p + vec3(0, 0, 1)));
+            }
+        }
+        std::vector<BvhNode> nodes;
+        wf::BvhBuildStats stats = wf::buildBvh(tris, nodes);
+        EXPECT_EQ(stats.maxDepth, k);
+        wf::CpuBvh bvh(nodes, tris);
+        EXPECT_EQ(bvh.stackNeed(), k - 1);
+        // A ray along the row enters every cluster's box and misses every triangle (y + z > 1):
+        // the traversal fills the stack.
+        EXPECT_FALSE(bvh.traceAny(vec3(-5.0f, 0.9f, 0.9f), vec3(1, 0, 0), INF));
+        EXPECT_EQ(bvh.deepestStack(), k - 1);
+    }
+    std::vector<Triangle> one = {makeTriangle(vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0))};
+    std::vector<BvhNode> nodes;
+    wf::buildBvh(one, nodes);
+    EXPECT_EQ(wf::bvhStackNeed(wf::pairBvhNodes(nodes)), 0u);
+}
+
+// The register stack is a stack: last in, first out, over its 8 entries, distances alongside.
+TEST(Bvh, RegisterStackIsLastInFirstOut) {
+    using namespace wf::gpu_types;
+    BvhRegisterStack stack = bvhRegisterStack();
+    for (uint i = 0; i < WF_BVH_REGISTER_STACK_SIZE; ++i)
+        bvhRegisterPush(stack, 100u + i, 0.5f * float(i));
+    for (uint i = WF_BVH_REGISTER_STACK_SIZE; i-- > 0;) {
+        EXPECT_EQ(stack.pairs0.x, 100u + i);
+        EXPECT_EQ(stack.entries0.x, 0.5f * float(i));
+        bvhRegisterPop(stack);
     }
 }
 
