@@ -56,36 +56,29 @@ struct HitRecord {
 // A traversal stack of up to 8 entries held in vectors and shifted on push and pop. Mesa 22.3's
 // llvmpipe runs a dynamically indexed private array as a loop over the lanes, a load or store
 // at a time; a shift is a few selects. The host picks it where the tree's stack need fits.
+// Pair entries only: closest-hit traversal with it pops without the entry-distance cull.
 struct BvhRegisterStack {
     uvec4 pairs0; // top of the stack in .x
     uvec4 pairs1;
-    vec4 entries0; // entry distances, alongside
-    vec4 entries1;
 };
 
 WF_INLINE BvhRegisterStack bvhRegisterStack() {
     BvhRegisterStack s;
     s.pairs0 = uvec4(0u);
     s.pairs1 = uvec4(0u);
-    s.entries0 = vec4(0.0f);
-    s.entries1 = vec4(0.0f);
     return s;
 }
 
 // Past 8 entries the bottom one falls off: wrong, but the host never lets that happen.
-WF_INLINE void bvhRegisterPush(WF_INOUT(BvhRegisterStack) s, uint pair, float entry) {
+WF_INLINE void bvhRegisterPush(WF_INOUT(BvhRegisterStack) s, uint pair) {
     s.pairs1 = uvec4(s.pairs0.w, s.pairs1.x, s.pairs1.y, s.pairs1.z);
     s.pairs0 = uvec4(pair, s.pairs0.x, s.pairs0.y, s.pairs0.z);
-    s.entries1 = vec4(s.entries0.w, s.entries1.x, s.entries1.y, s.entries1.z);
-    s.entries0 = vec4(entry, s.entries0.x, s.entries0.y, s.entries0.z);
 }
 
-// Removes the top entry (read it from pairs0.x and entries0.x first).
+// Removes the top entry (read it from pairs0.x first).
 WF_INLINE void bvhRegisterPop(WF_INOUT(BvhRegisterStack) s) {
     s.pairs0 = uvec4(s.pairs0.y, s.pairs0.z, s.pairs0.w, s.pairs1.x);
     s.pairs1 = uvec4(s.pairs1.y, s.pairs1.z, s.pairs1.w, 0u);
-    s.entries0 = vec4(s.entries0.y, s.entries0.z, s.entries0.w, s.entries1.x);
-    s.entries1 = vec4(s.entries1.y, s.entries1.z, s.entries1.w, 0.0f);
 }
 
 #ifdef __cplusplus
@@ -193,15 +186,16 @@ WF_INLINE bool traceClosest(vec3 o, vec3 d, float tMax, WF_OUT(HitRecord) hit) {
         // dropping a subtree is wrong but cannot write out of bounds.
 #if WF_BVH_REGISTER_STACK
         if (nearNext && farNext) {
-            bvhRegisterPush(stack, step.farChild >> WF_BVH_COUNT_BITS, step.farEntry);
+            bvhRegisterPush(stack, step.farChild >> WF_BVH_COUNT_BITS);
             ++stackSize;
         }
-        while (!haveCurrent && stackSize > 0u) {
+        // One pop a step, without the cull: an entry behind the closest hit costs one step
+        // whose child boxes all start behind it too (nested boxes), so it tests nothing, and
+        // that is cheaper on 8-wide SIMD than a pop loop that runs for every step.
+        if (!haveCurrent && stackSize > 0u) {
             --stackSize;
-            if (stack.entries0.x <= hit.t) {
-                current = stack.pairs0.x;
-                haveCurrent = true;
-            }
+            current = stack.pairs0.x;
+            haveCurrent = true;
             bvhRegisterPop(stack);
         }
 #else
@@ -256,7 +250,7 @@ WF_INLINE bool traceAny(vec3 o, vec3 d, float tMax) {
         current = (step.nearInner ? step.nearChild : step.farChild) >> WF_BVH_COUNT_BITS;
 #if WF_BVH_REGISTER_STACK
         if (step.nearInner && step.farInner) {
-            bvhRegisterPush(stack, step.farChild >> WF_BVH_COUNT_BITS, 0.0f);
+            bvhRegisterPush(stack, step.farChild >> WF_BVH_COUNT_BITS);
             ++stackSize;
         }
         if (!haveCurrent && stackSize > 0u) {
