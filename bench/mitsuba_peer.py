@@ -16,6 +16,11 @@ emission (front face only) and albedo, the same camera (yfov, position, looking 
 box pixel filter. Each renderer's relMSE is measured against its own high-spp reference (so a
 small systematic difference between the two does not count as noise); the two references'
 relMSE against each other is printed as a check that the scenes match.
+
+A third row times Wavefront with Mitsuba's own estimator (`--sampler independent
+--triangle-sampling area`: independent random numbers, the light sampled by area, as Mitsuba's
+path integrator does), so that paths/s compares the same work; its relMSE is measured against
+Wavefront's reference (the same expectation).
 """
 import argparse
 import json
@@ -100,11 +105,15 @@ def render_mitsuba(mi, folder, width, height, spp, max_depth, rr_depth, seed=0):
     return image, time.perf_counter() - start
 
 
+# Wavefront's flags for the estimator Mitsuba's path integrator uses on this scene.
+MITSUBA_ESTIMATOR = ["--sampler", "independent", "--triangle-sampling", "area"]
+
+
 def render_wavefront(mi, exe, folder, width, height, spp, max_depth, rr_depth, tag, seed=0,
-                     sampler=None):
+                     sampler=None, flags=()):
     out = os.path.join(folder, "wavefront_%s.exr" % tag)
     stats = os.path.join(folder, "wavefront_%s.json" % tag)
-    extra = ["--sampler", sampler] if sampler else []
+    extra = (["--sampler", sampler] if sampler else []) + list(flags)
     subprocess.run([exe, "render", os.path.join(ROOT, "scenes", "cornell_box.gltf"), "-o", out,
                     "--width", str(width), "--height", str(height), "--spp", str(spp),
                     "--max-depth", str(max_depth), "--rr-depth", str(rr_depth), "--json", stats,
@@ -159,16 +168,20 @@ def main():
                                             args.sampler)
         # Timed renders alternate between the two, each with its own seed, so that a drift in
         # the machine's speed (other tenants) falls on both; times are medians, errors means.
-        mi_runs, wf_runs = [], []
+        mi_runs, wf_runs, matched_runs = [], [], []
         for seed in range(args.repeats):
             mi_runs.append(render_mitsuba(mi, folder, w, h, spp, depth, args.rr_depth + 1, seed))
             wf_runs.append(render_wavefront(mi, args.wavefront, folder, w, h, spp, depth,
                                             args.rr_depth, "test", seed, args.sampler))
+            matched_runs.append(render_wavefront(mi, args.wavefront, folder, w, h, spp, depth,
+                                                 args.rr_depth, "matched", seed,
+                                                 flags=MITSUBA_ESTIMATOR))
         bench = bench_ratio(args.wavefront, folder, w, h, spp, depth)
     paths = w * h * spp
     rows = {}
+    matched_name = "Wavefront, Mitsuba's estimator"
     for name, runs, ref in (("Mitsuba 3 scalar_rgb", mi_runs, mi_ref),
-                            ("Wavefront", wf_runs, wf_ref)):
+                            ("Wavefront", wf_runs, wf_ref), (matched_name, matched_runs, wf_ref)):
         seconds = float(np.median([run[1] for run in runs]))
         err = float(np.mean([rel_mse(run[0], ref) for run in runs]))
         rows[name] = {"seconds": seconds, "pathsPerSecond": paths / seconds, "relMSE": err,
@@ -178,6 +191,7 @@ def main():
     ratio = rows["Wavefront"]["pathsPerSecond"] / rows["Mitsuba 3 scalar_rgb"]["pathsPerSecond"]
     efficiency = (rows["Mitsuba 3 scalar_rgb"]["relMSETimesSeconds"] /
                   rows["Wavefront"]["relMSETimesSeconds"])
+    matched = rows[matched_name]["pathsPerSecond"] / rows["Mitsuba 3 scalar_rgb"]["pathsPerSecond"]
     print("Cornell box %dx%d, %d spp, max depth %d; references %d spp; %d alternating timed "
           "renders each (median seconds, mean relMSE)" % (w, h, spp, depth, args.reference_spp,
                                                         args.repeats))
@@ -192,6 +206,7 @@ def main():
         check, wf_ref.mean(), mi_ref.mean()))
     print("Wavefront / Mitsuba: %.3f paths/s, %.3f efficiency (1 / relMSE x time)" % (
         ratio, efficiency))
+    print("Wavefront with Mitsuba's estimator / Mitsuba: %.3f paths/s" % matched)
     print("wavefront / megakernel (bench, same run): %.3f" % bench["wavefrontOverMegakernel"])
     if args.json:
         with open(args.json, "w") as f:
@@ -201,6 +216,8 @@ def main():
                        "renderers": rows,
                        "referencesRelMSE": check, "wavefrontOverMitsubaPathsPerSecond": ratio,
                        "wavefrontOverMitsubaEfficiency": efficiency,
+                       "wavefrontMatchedOverMitsubaPathsPerSecond": matched,
+                       "wavefrontMatchedFlags": MITSUBA_ESTIMATOR,
                        "wavefrontOverMegakernel": bench["wavefrontOverMegakernel"],
                        "device": bench["device"], "bench": bench}, f, indent=1)
 
