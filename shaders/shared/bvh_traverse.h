@@ -81,6 +81,26 @@ WF_INLINE void bvhRegisterPop(WF_INOUT(BvhRegisterStack) s) {
     s.pairs1 = uvec4(s.pairs1.y, s.pairs1.z, s.pairs1.w, 0u);
 }
 
+// The end of a step on the register stack: push `far` where both children go on, and take the
+// top entry where neither does. One pop a step, without an entry-distance cull: an entry
+// behind the closest hit costs one step whose child boxes all start behind it too (nested
+// boxes), so it tests nothing, and that is cheaper on 8-wide SIMD than a pop loop run on every
+// step. The size saturates, so a foreign tree deeper than the stack loses subtrees but never
+// pops the zeros below the bottom (entry 0 again: a walk without end).
+WF_INLINE void bvhRegisterNext(WF_INOUT(BvhRegisterStack) s, WF_INOUT(uint) size, bool pushFar,
+                               uint far, WF_INOUT(bool) haveCurrent, WF_INOUT(uint) current) {
+    if (pushFar) {
+        bvhRegisterPush(s, far);
+        size = min(size + 1u, WF_BVH_REGISTER_STACK_SIZE);
+    }
+    if (!haveCurrent && size > 0u) {
+        --size;
+        current = s.pairs0.x;
+        haveCurrent = true;
+        bvhRegisterPop(s);
+    }
+}
+
 #ifdef __cplusplus
 struct BvhTraversal {
     const BvhPair* pairs = nullptr;
@@ -182,23 +202,12 @@ WF_INLINE bool traceClosest(vec3 o, vec3 d, float tMax, WF_OUT(HitRecord) hit) {
         bool farNext = step.farInner && step.farEntry <= hit.t;
         haveCurrent = nearNext || farNext;
         current = (nearNext ? step.nearChild : step.farChild) >> WF_BVH_COUNT_BITS;
+#if WF_BVH_REGISTER_STACK
+        bvhRegisterNext(stack, stackSize, nearNext && farNext,
+                        step.farChild >> WF_BVH_COUNT_BITS, haveCurrent, current);
+#else
         // The builder bounds the depth, so the size check only guards against a foreign tree:
         // dropping a subtree is wrong but cannot write out of bounds.
-#if WF_BVH_REGISTER_STACK
-        if (nearNext && farNext) {
-            bvhRegisterPush(stack, step.farChild >> WF_BVH_COUNT_BITS);
-            ++stackSize;
-        }
-        // One pop a step, without the cull: an entry behind the closest hit costs one step
-        // whose child boxes all start behind it too (nested boxes), so it tests nothing, and
-        // that is cheaper on 8-wide SIMD than a pop loop that runs for every step.
-        if (!haveCurrent && stackSize > 0u) {
-            --stackSize;
-            current = stack.pairs0.x;
-            haveCurrent = true;
-            bvhRegisterPop(stack);
-        }
-#else
         if (nearNext && farNext && stackSize < uint(WF_BVH_STACK_SIZE)) {
             stackPair[stackSize] = step.farChild >> WF_BVH_COUNT_BITS;
             stackEntry[stackSize] = step.farEntry;
@@ -249,16 +258,8 @@ WF_INLINE bool traceAny(vec3 o, vec3 d, float tMax) {
         haveCurrent = step.nearInner || step.farInner;
         current = (step.nearInner ? step.nearChild : step.farChild) >> WF_BVH_COUNT_BITS;
 #if WF_BVH_REGISTER_STACK
-        if (step.nearInner && step.farInner) {
-            bvhRegisterPush(stack, step.farChild >> WF_BVH_COUNT_BITS);
-            ++stackSize;
-        }
-        if (!haveCurrent && stackSize > 0u) {
-            --stackSize;
-            current = stack.pairs0.x;
-            haveCurrent = true;
-            bvhRegisterPop(stack);
-        }
+        bvhRegisterNext(stack, stackSize, step.nearInner && step.farInner,
+                        step.farChild >> WF_BVH_COUNT_BITS, haveCurrent, current);
 #else
         if (step.nearInner && step.farInner && stackSize < uint(WF_BVH_STACK_SIZE)) {
             stackPair[stackSize] = step.farChild >> WF_BVH_COUNT_BITS;
