@@ -12,8 +12,9 @@
 //   WF_BVH_PAIR(i)      an expression yielding BvhPair i (e.g. a texel-buffer fetch)
 //   WF_BVH_TRIANGLE(i)  an expression yielding Triangle i
 //   WF_BVH_STACK_SIZE   optional, default 64; the builder keeps depth <= WF_BVH_STACK_SIZE - 1
-//   WF_BVH_REGISTER_STACK  optional, default 0; 1 where the tree never holds more than
-//                       WF_BVH_REGISTER_STACK_SIZE entries on the stack (bvhStackNeed)
+//   WF_BVH_REGISTER_STACK  optional, default 0; 8 or 16 where the tree never holds more
+//                       entries than that on its stack (bvhStackNeed): any-hit traversal then
+//                       keeps its stack in vectors, closest-hit traversal only at 8
 // With WF_HAS_ALPHA_MASK (GLSL only), every candidate hit must also pass
 //   bool wfAlphaPasses(uint triangle, float b1, float b2, vec3 o, vec3 d)
 // so cut-outs stop no ray, closest-hit or shadow; the includer may define it (and
@@ -53,32 +54,46 @@ struct HitRecord {
     uint triangle; // WF_NO_TRIANGLE on a miss
 };
 
-// A traversal stack of up to 8 entries held in vectors and shifted on push and pop. Mesa 22.3's
-// llvmpipe runs a dynamically indexed private array as a loop over the lanes, a load or store
-// at a time; a shift is a few selects. The host picks it where the tree's stack need fits.
-// Pair entries only: closest-hit traversal with it pops without the entry-distance cull.
+// A traversal stack of up to 8 or 16 entries (`capacity`, a constant at every call) held in
+// vectors and shifted on push and pop. Mesa 22.3's llvmpipe runs a dynamically indexed private
+// array as a loop over the lanes, a load or store at a time; a shift is a few selects per
+// vector. The host picks it where the tree's stack need fits. Pair entries only: closest-hit
+// traversal with it pops without the entry-distance cull. Measured: the 16-entry stack speeds
+// shadow rays up by 20% but slowed closest hits (then with entry distances) by as much.
 struct BvhRegisterStack {
     uvec4 pairs0; // top of the stack in .x
     uvec4 pairs1;
+    uvec4 pairs2; // entries 8-15, only at capacity 16
+    uvec4 pairs3;
 };
 
 WF_INLINE BvhRegisterStack bvhRegisterStack() {
     BvhRegisterStack s;
     s.pairs0 = uvec4(0u);
     s.pairs1 = uvec4(0u);
+    s.pairs2 = uvec4(0u);
+    s.pairs3 = uvec4(0u);
     return s;
 }
 
-// Past 8 entries the bottom one falls off: wrong, but the host never lets that happen.
-WF_INLINE void bvhRegisterPush(WF_INOUT(BvhRegisterStack) s, uint pair) {
+// Past `capacity` entries the bottom one falls off: wrong, but the host never lets that happen.
+WF_INLINE void bvhRegisterPush(WF_INOUT(BvhRegisterStack) s, uint pair, uint capacity) {
+    if (capacity > 8u) {
+        s.pairs3 = uvec4(s.pairs2.w, s.pairs3.x, s.pairs3.y, s.pairs3.z);
+        s.pairs2 = uvec4(s.pairs1.w, s.pairs2.x, s.pairs2.y, s.pairs2.z);
+    }
     s.pairs1 = uvec4(s.pairs0.w, s.pairs1.x, s.pairs1.y, s.pairs1.z);
     s.pairs0 = uvec4(pair, s.pairs0.x, s.pairs0.y, s.pairs0.z);
 }
 
 // Removes the top entry (read it from pairs0.x first).
-WF_INLINE void bvhRegisterPop(WF_INOUT(BvhRegisterStack) s) {
+WF_INLINE void bvhRegisterPop(WF_INOUT(BvhRegisterStack) s, uint capacity) {
     s.pairs0 = uvec4(s.pairs0.y, s.pairs0.z, s.pairs0.w, s.pairs1.x);
-    s.pairs1 = uvec4(s.pairs1.y, s.pairs1.z, s.pairs1.w, 0u);
+    s.pairs1 = uvec4(s.pairs1.y, s.pairs1.z, s.pairs1.w, capacity > 8u ? s.pairs2.x : 0u);
+    if (capacity > 8u) {
+        s.pairs2 = uvec4(s.pairs2.y, s.pairs2.z, s.pairs2.w, s.pairs3.x);
+        s.pairs3 = uvec4(s.pairs3.y, s.pairs3.z, s.pairs3.w, 0u);
+    }
 }
 
 // The end of a step on the register stack: push `far` where both children go on, and take the
@@ -88,16 +103,17 @@ WF_INLINE void bvhRegisterPop(WF_INOUT(BvhRegisterStack) s) {
 // step. The size saturates, so a foreign tree deeper than the stack loses subtrees but never
 // pops the zeros below the bottom (entry 0 again: a walk without end).
 WF_INLINE void bvhRegisterNext(WF_INOUT(BvhRegisterStack) s, WF_INOUT(uint) size, bool pushFar,
-                               uint far, WF_INOUT(bool) haveCurrent, WF_INOUT(uint) current) {
+                               uint far, WF_INOUT(bool) haveCurrent, WF_INOUT(uint) current,
+                               uint capacity) {
     if (pushFar) {
-        bvhRegisterPush(s, far);
-        size = min(size + 1u, WF_BVH_REGISTER_STACK_SIZE);
+        bvhRegisterPush(s, far, capacity);
+        size = min(size + 1u, capacity);
     }
     if (!haveCurrent && size > 0u) {
         --size;
         current = s.pairs0.x;
         haveCurrent = true;
-        bvhRegisterPop(s);
+        bvhRegisterPop(s, capacity);
     }
 }
 
@@ -168,7 +184,7 @@ WF_INLINE bool traceClosest(vec3 o, vec3 d, float tMax, WF_OUT(HitRecord) hit) {
     hit.b2 = 0.0f;
     hit.triangle = WF_NO_TRIANGLE;
     vec3 invDir = 1.0f / d;
-#if WF_BVH_REGISTER_STACK
+#if WF_BVH_REGISTER_STACK == 8
     BvhRegisterStack stack = bvhRegisterStack();
 #else
     uint stackPair[WF_BVH_STACK_SIZE];
@@ -202,9 +218,9 @@ WF_INLINE bool traceClosest(vec3 o, vec3 d, float tMax, WF_OUT(HitRecord) hit) {
         bool farNext = step.farInner && step.farEntry <= hit.t;
         haveCurrent = nearNext || farNext;
         current = (nearNext ? step.nearChild : step.farChild) >> WF_BVH_COUNT_BITS;
-#if WF_BVH_REGISTER_STACK
+#if WF_BVH_REGISTER_STACK == 8
         bvhRegisterNext(stack, stackSize, nearNext && farNext,
-                        step.farChild >> WF_BVH_COUNT_BITS, haveCurrent, current);
+                        step.farChild >> WF_BVH_COUNT_BITS, haveCurrent, current, 8u);
 #else
         // The builder bounds the depth, so the size check only guards against a foreign tree:
         // dropping a subtree is wrong but cannot write out of bounds.
@@ -259,7 +275,8 @@ WF_INLINE bool traceAny(vec3 o, vec3 d, float tMax) {
         current = (step.nearInner ? step.nearChild : step.farChild) >> WF_BVH_COUNT_BITS;
 #if WF_BVH_REGISTER_STACK
         bvhRegisterNext(stack, stackSize, step.nearInner && step.farInner,
-                        step.farChild >> WF_BVH_COUNT_BITS, haveCurrent, current);
+                        step.farChild >> WF_BVH_COUNT_BITS, haveCurrent, current,
+                        uint(WF_BVH_REGISTER_STACK));
 #else
         if (step.nearInner && step.farInner && stackSize < uint(WF_BVH_STACK_SIZE)) {
             stackPair[stackSize] = step.farChild >> WF_BVH_COUNT_BITS;

@@ -50,8 +50,8 @@ struct BvhPair {
 
 #define WF_BVH_COUNT_BITS 5u
 #define WF_BVH_MAX_LEAF_COUNT 31u // (1 << WF_BVH_COUNT_BITS) - 1
-// Stack entries that BvhRegisterStack (bvh_traverse.h) holds.
-#define WF_BVH_REGISTER_STACK_SIZE 8u
+// Stack entries that BvhRegisterStack (bvh_traverse.h) holds: 8, or 16 for any-hit rays.
+#define WF_BVH_REGISTER_STACK_SIZE 16u
 #define WF_BVH_NO_CHILD 0xffffffffu
 
 #define WF_MATERIAL_DOUBLE_SIDED 1u

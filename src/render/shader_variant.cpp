@@ -26,8 +26,12 @@ ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& se
         scene.materials.begin(), scene.materials.end(), [](const Material& m) {
             return m.metallic <= 0.0f && m.specular <= 0.0f && m.transmission <= 0.0f;
         });
-    variant.registerStack =
-        settings.registerStack && scene.bvhStats.stackNeed <= WF_BVH_REGISTER_STACK_SIZE;
+    // The smallest register stack that holds the tree's stack need (bvh_traverse.h).
+    const uint32_t need = scene.bvhStats.stackNeed;
+    variant.registerStack = !settings.registerStack               ? 0u
+                            : need <= 8u                          ? 8u
+                            : need <= WF_BVH_REGISTER_STACK_SIZE ? WF_BVH_REGISTER_STACK_SIZE
+                                                                  : 0u;
     variant.sampler = settings.sampler;
     variant.randomizeSamples = settings.randomizeSamples;
     return variant;
@@ -55,7 +59,7 @@ ShaderDefines ShaderVariant::defines() const {
             {"WF_SAMPLER", std::to_string(static_cast<uint32_t>(sampler))},
             {"WF_SAMPLER_RANDOMIZE", flag(randomizeSamples)},
             {"WF_PACKED_STORES", flag(packedStores)},
-            {"WF_BVH_REGISTER_STACK", flag(registerStack)}};
+            {"WF_BVH_REGISTER_STACK", std::to_string(registerStack)}};
 }
 
 std::string ShaderVariant::describe() const {

@@ -28,7 +28,7 @@ struct ShaderVariant {
     SamplerKind sampler = kDefaultSampler; // WF_SAMPLER (rng.h)
     bool randomizeSamples = true;     // WF_SAMPLER_RANDOMIZE: off for --no-randomize
     bool packedStores = false;        // WF_PACKED_STORES: 64-bit stores, set by the renderer
-    bool registerStack = false;       // WF_BVH_REGISTER_STACK: the tree's stack fits in vectors
+    uint32_t registerStack = 0;       // WF_BVH_REGISTER_STACK: 8 or 16 entries in vectors, or 0
 
     bool lightsBuffer() const { return sphereLights || deltaLights; }
     ShaderDefines defines() const;

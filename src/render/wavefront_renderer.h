@@ -66,8 +66,9 @@ struct RenderSettings {
     // Store 16-byte path-state entries as two 64-bit words where the device has shaderInt64
     // (WF_PACKED_STORES, faster on lavapipe); off, the vec4 stores every device has. Same image.
     bool packedStores = true;
-    // Keep the traversal stack in vectors where the tree's stack need fits in 8 entries
-    // (WF_BVH_REGISTER_STACK, faster on lavapipe); off, a private array. Same image.
+    // Keep the traversal stack in vectors where the tree's stack need fits in 8 entries, and
+    // any-hit traversal's where it fits in 16 (WF_BVH_REGISTER_STACK, faster on lavapipe);
+    // off, a private array. Same image.
     bool registerStack = true;
 };
 

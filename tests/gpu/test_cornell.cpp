@@ -141,40 +141,46 @@ Scene cornellWithSoup(int count) {
     return scene;
 }
 
-// The register stack (WF_BVH_REGISTER_STACK) holds exactly what the private array holds: on a
-// tree whose stack need is the register stack's whole size, closest hits and shadow rays give
-// the same image bit for bit; one entry more and the renderer keeps the array.
+// The register stack (WF_BVH_REGISTER_STACK) holds exactly what the private array holds: on
+// trees whose stack need is the whole of its 8 entries (closest hits and shadow rays on it) and
+// close to its 16 (shadow rays only), the images are the same bit for bit; past 16 the renderer
+// keeps the array.
 TEST(Cornell, RegisterStackGivesTheSameImage) {
-    int full = -1, over = -1;
-    for (int count = 10; count <= 4000 && over < 0; count += 10) {
+    int need8 = -1, need16 = -1, over = -1;
+    for (int count = 10; count <= 200000 && over < 0; count += 10 + count / 8) {
         const uint32_t need = prepareScene(cornellWithSoup(count)).bvhStats.stackNeed;
-        if (need == WF_BVH_REGISTER_STACK_SIZE && full < 0)
-            full = count;
-        if (need > WF_BVH_REGISTER_STACK_SIZE)
+        if (need == 8 && need8 < 0)
+            need8 = count;
+        if (need >= 15 && need <= 16 && need16 < 0)
+            need16 = count;
+        if (need > 16)
             over = count;
     }
-    ASSERT_GT(full, 0) << "no soup size gave a stack need of exactly 8";
+    ASSERT_GT(need8, 0) << "no soup size gave a stack need of exactly 8";
+    ASSERT_GT(need16, 0) << "no soup size gave a stack need of 15 or 16";
     ASSERT_GT(over, 0);
     static ShaderCompiler compiler;
-    for (bool megakernel : {false, true}) {
-        RenderSettings settings = smallSettings(5);
-        settings.samplesPerPixel = 4;
-        settings.megakernel = megakernel;
-        const PreparedScene prepared = prepareScene(cornellWithSoup(full));
-        WavefrontRenderer registers(gpuContext(), prepared, settings, compiler);
-        settings.registerStack = false;
-        WavefrontRenderer array(gpuContext(), prepared, settings, compiler);
-        ASSERT_TRUE(registers.variant().registerStack);
-        ASSERT_FALSE(array.variant().registerStack);
-        registers.render();
-        array.render();
-        std::vector<float> a = registers.readImage(), b = array.readImage();
-        ASSERT_EQ(a.size(), b.size());
-        EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(float)), 0)
-            << (megakernel ? "megakernel" : "wavefront");
+    for (auto [count, capacity] : {std::pair{need8, 8u}, std::pair{need16, 16u}}) {
+        for (bool megakernel : {false, true}) {
+            RenderSettings settings = smallSettings(5);
+            settings.samplesPerPixel = 4;
+            settings.megakernel = megakernel;
+            const PreparedScene prepared = prepareScene(cornellWithSoup(count));
+            WavefrontRenderer registers(gpuContext(), prepared, settings, compiler);
+            settings.registerStack = false;
+            WavefrontRenderer array(gpuContext(), prepared, settings, compiler);
+            ASSERT_EQ(registers.variant().registerStack, capacity);
+            ASSERT_EQ(array.variant().registerStack, 0u);
+            registers.render();
+            array.render();
+            std::vector<float> a = registers.readImage(), b = array.readImage();
+            ASSERT_EQ(a.size(), b.size());
+            EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(float)), 0)
+                << (megakernel ? "megakernel" : "wavefront") << ", capacity " << capacity;
+        }
     }
     const PreparedScene deeper = prepareScene(cornellWithSoup(over));
-    EXPECT_FALSE(chooseVariant(deeper, smallSettings(5)).registerStack);
+    EXPECT_EQ(chooseVariant(deeper, smallSettings(5)).registerStack, 0u);
     EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
 }
 

@@ -347,15 +347,19 @@ TEST(Bvh, StackNeedOfABalancedTree) {
     EXPECT_EQ(wf::bvhStackNeed(wf::pairBvhNodes(nodes)), 0u);
 }
 
-// The register stack is a stack: last in, first out, over its 8 entries.
+// The register stack is a stack: last in, first out, over its 8 or 16 entries; one push past
+// the capacity loses the bottom entry and nothing else.
 TEST(Bvh, RegisterStackIsLastInFirstOut) {
     using namespace wf::gpu_types;
-    BvhRegisterStack stack = bvhRegisterStack();
-    for (uint i = 0; i < WF_BVH_REGISTER_STACK_SIZE; ++i)
-        bvhRegisterPush(stack, 100u + i);
-    for (uint i = WF_BVH_REGISTER_STACK_SIZE; i-- > 0;) {
-        EXPECT_EQ(stack.pairs0.x, 100u + i);
-        bvhRegisterPop(stack);
+    for (uint capacity : {8u, 16u}) {
+        BvhRegisterStack stack = bvhRegisterStack();
+        for (uint i = 0; i <= capacity; ++i)
+            bvhRegisterPush(stack, 100u + i, capacity);
+        for (uint i = capacity + 1; i-- > 1;) {
+            EXPECT_EQ(stack.pairs0.x, 100u + i) << "capacity " << capacity;
+            bvhRegisterPop(stack, capacity);
+        }
+        EXPECT_EQ(stack.pairs0.x, 0u) << "capacity " << capacity;
     }
 }
 
