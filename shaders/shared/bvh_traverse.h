@@ -43,6 +43,7 @@
 #define WF_NO_TRIANGLE 0xffffffffu
 
 #ifdef __cplusplus
+#include <vector>
 namespace wf::gpu_types {
 using namespace glm;
 #endif
@@ -122,6 +123,9 @@ struct BvhTraversal {
     const BvhPair* pairs = nullptr;
     const Triangle* triangles = nullptr;
     uint deepestStack = 0u; // the most entries the stack held, for the tests of bvhStackNeed
+    // When set, each step appends how many triangles it tested (bvh_tuning.cpp models SIMD
+    // batches from these).
+    std::vector<uint>* stepTests = nullptr;
 #ifndef WF_BVH_PAIR
 #define WF_BVH_PAIR(i) pairs[i]
 #define WF_BVH_TRIANGLE(i) triangles[i]
@@ -195,9 +199,15 @@ WF_INLINE bool traceClosest(vec3 o, vec3 d, float tMax, WF_OUT(HitRecord) hit) {
     bool haveCurrent = true;
     while (haveCurrent) {
         BvhStep step = bvhStep(WF_BVH_PAIR(current), o, invDir, hit.t);
+#ifdef __cplusplus
+        uint tested = 0u;
+#endif
         for (uint k = 0u; k < step.nearCount + step.farCount; ++k) {
             if (k == step.nearCount && step.farEntry > hit.t)
                 break; // the near leaf hit something before the far leaf begins
+#ifdef __cplusplus
+            ++tested;
+#endif
             uint i = bvhStepTriangle(step, k);
             Triangle tri = WF_BVH_TRIANGLE(i);
             float t;
@@ -214,6 +224,10 @@ WF_INLINE bool traceClosest(vec3 o, vec3 d, float tMax, WF_OUT(HitRecord) hit) {
                 hit.triangle = i;
             }
         }
+#ifdef __cplusplus
+        if (stepTests)
+            stepTests->push_back(tested);
+#endif
         bool nearNext = step.nearInner && step.nearEntry <= hit.t;
         bool farNext = step.farInner && step.farEntry <= hit.t;
         haveCurrent = nearNext || farNext;
@@ -268,9 +282,17 @@ WF_INLINE bool traceAny(vec3 o, vec3 d, float tMax) {
                 if (!wfAlphaPasses(i, b1, b2, o, d))
                     continue;
 #endif
+#ifdef __cplusplus
+                if (stepTests)
+                    stepTests->push_back(k + 1u);
+#endif
                 return true;
             }
         }
+#ifdef __cplusplus
+        if (stepTests)
+            stepTests->push_back(step.nearCount + step.farCount);
+#endif
         haveCurrent = step.nearInner || step.farInner;
         current = (step.nearInner ? step.nearChild : step.farChild) >> WF_BVH_COUNT_BITS;
 #if WF_BVH_REGISTER_STACK

@@ -149,10 +149,11 @@ int runBenchCommand(const std::vector<std::string>& args) {
     std::printf("device: %s (%s)\nshader variant: %s\n", setup.device.c_str(),
                 setup.driver.c_str(), setup.variant.c_str());
     std::printf("scene: %llu triangles, %llu materials; BVH %u nodes, %u leaves, depth %u, "
-                "stack need %u, SAH cost %.2f, built in %.1f ms\n\n",
+                "stack need %u, traversal cost %g, SAH cost %.2f, built in %.1f ms\n\n",
                 static_cast<unsigned long long>(setup.triangles),
                 static_cast<unsigned long long>(setup.materials), setup.bvh.nodeCount,
-                setup.bvh.leafCount, setup.bvh.maxDepth, setup.bvh.stackNeed, setup.bvh.sahCost,
+                setup.bvh.leafCount, setup.bvh.maxDepth, setup.bvh.stackNeed,
+                setup.bvh.traversalCost, setup.bvh.sahCost,
                 setup.bvh.buildSeconds * 1e3);
     // --megakernel shows the megakernel's table, --compare-megakernel both.
     if (!withMegakernel || compare)

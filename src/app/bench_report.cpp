@@ -244,7 +244,7 @@ std::string benchJson(const BenchSetup& setup, const std::vector<BenchRun>& runs
         << ",\n  \"materials\": " << setup.materials << ",\n  \"bvh\": {\"nodes\": "
         << setup.bvh.nodeCount << ", \"leaves\": " << setup.bvh.leafCount
         << ", \"depth\": " << setup.bvh.maxDepth << ", \"stackNeed\": " << setup.bvh.stackNeed
-        << ", \"sahCost\": "
+        << ", \"traversalCost\": " << jsonNumber(setup.bvh.traversalCost) << ", \"sahCost\": "
         << jsonNumber(setup.bvh.sahCost) << ", \"buildSeconds\": "
         << jsonNumber(setup.bvh.buildSeconds) << "},\n  \"runs\": {";
     for (size_t i = 0; i < runs.size(); ++i)

@@ -1,5 +1,6 @@
 #include "render/scene_buffers.h"
 
+#include "scene/bvh_tuning.h"
 #include "shaders/shared/render_types.h"
 
 namespace wf {
@@ -14,7 +15,8 @@ PreparedScene prepareScene(Scene scene) {
     prepared.environment = std::move(scene.environment);
     prepared.surface = std::move(scene.surface);
     tagTriangles(prepared.triangles); // the per-triangle arrays follow the BVH's order
-    prepared.bvhStats = buildBvh(prepared.triangles, prepared.nodes);
+    prepared.bvhStats = buildTunedBvh(prepared.triangles, prepared.nodes, prepared.materials,
+                                      prepared.camera);
     prepared.bvhPairs = pairBvhNodes(prepared.nodes);
     prepared.bvhStats.stackNeed = bvhStackNeed(prepared.bvhPairs);
     followTriangleOrder(prepared.triangles, prepared.surface);

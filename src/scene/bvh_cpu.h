@@ -25,16 +25,21 @@ public:
     CpuBvh& operator=(const CpuBvh&) = delete;
 
     // Closest hit with t in (0, tMax); hit.triangle indexes the reordered triangle array.
-    bool traceClosest(glm::vec3 o, glm::vec3 d, float tMax, HitRecord& hit) const {
+    // With `stepTests`, each traversal step appends how many triangles it tested.
+    bool traceClosest(glm::vec3 o, glm::vec3 d, float tMax, HitRecord& hit,
+                      std::vector<std::uint32_t>* stepTests = nullptr) const {
         gpu_types::BvhTraversal traversal = traversal_; // the shared code is not const-qualified
+        traversal.stepTests = stepTests;
         const bool found = traversal.traceClosest(o, d, tMax, hit);
         deepestStack_ = std::max(deepestStack_, traversal.deepestStack);
         return found;
     }
 
     // Whether anything is hit with t in (0, tMax).
-    bool traceAny(glm::vec3 o, glm::vec3 d, float tMax) const {
+    bool traceAny(glm::vec3 o, glm::vec3 d, float tMax,
+                  std::vector<std::uint32_t>* stepTests = nullptr) const {
         gpu_types::BvhTraversal traversal = traversal_;
+        traversal.stepTests = stepTests;
         const bool found = traversal.traceAny(o, d, tMax);
         deepestStack_ = std::max(deepestStack_, traversal.deepestStack);
         return found;
