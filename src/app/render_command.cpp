@@ -113,10 +113,10 @@ void printVerbose(const PreparedScene& scene, const WavefrontRenderer& renderer,
     std::fprintf(stderr, "wavefront: scene: %s\n", describe(summary).c_str());
     std::fprintf(stderr,
                  "wavefront: %zu triangles, %zu materials, %zu emitters; BVH %u nodes, depth %u, "
-                 "SAH cost %.2f, built in %.3f s\n",
+                 "traversal cost %g, SAH cost %.2f, built in %.3f s\n",
                  scene.triangles.size(), scene.materials.size(), scene.lights.emitters.size(),
-                 scene.bvhStats.nodeCount, scene.bvhStats.maxDepth, scene.bvhStats.sahCost,
-                 scene.bvhStats.buildSeconds);
+                 scene.bvhStats.nodeCount, scene.bvhStats.maxDepth, scene.bvhStats.traversalCost,
+                 scene.bvhStats.sahCost, scene.bvhStats.buildSeconds);
     std::fprintf(stderr, "wavefront: shader variant: %s; up to %u paths per wave\n",
                  renderer.variant().describe().c_str(), renderer.pathCapacity());
     uint64_t total = 0;
