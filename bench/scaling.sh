@@ -45,13 +45,14 @@ for d in rows:
         r["pathsPerSecond"] / 1e6, r["frameMilliseconds"]["median"],
         r["longestSubmitSeconds"] * 1e3))
 print()
-print("| triangles | BVH SAH cost | build ms | wavefront paths/s | megakernel paths/s | "
-      "wavefront / megakernel | rays/s (wavefront) |")
-print("|---|---|---|---|---|---|---|")
+print("| triangles | traversal cost | BVH SAH cost | build ms | wavefront paths/s | "
+      "megakernel paths/s | wavefront / megakernel | rays/s (wavefront) |")
+print("|---|---|---|---|---|---|---|---|")
 for d in load(label + "_scene_*.json"):
     w, m = d["runs"]["wavefront"], d["runs"]["megakernel"]
-    print("| %d | %.1f | %.0f | %.3f M | %.3f M | %.2f | %.2f M |" % (
-        d["triangles"], d["bvh"]["sahCost"], d["bvh"]["buildSeconds"] * 1e3,
+    print("| %d | %g | %.1f | %.0f | %.3f M | %.3f M | %.2f | %.2f M |" % (
+        d["triangles"], d["bvh"].get("traversalCost", 1.0), d["bvh"]["sahCost"],
+        d["bvh"]["buildSeconds"] * 1e3,
         w["pathsPerSecond"] / 1e6, m["pathsPerSecond"] / 1e6, d["wavefrontOverMegakernel"],
         w["raysPerSecond"]["total"] / 1e6))
 print()
