@@ -2,8 +2,8 @@
 // shade: one path vertex (shaders/shared/path_vertex.glsl) per ray in the current queue.
 // In: rayQueue[depth & 1] (count in counters.rayArgs.count), hits (by queue slot), path state,
 // scene, lights.
-// Out: radiance += emission the ray found; appends the path to shadowQueue with a next-event
-// connection (shadowOrigin/Direction/Radiance at the same queue slot) and to
+// Out: radiance += emission the ray found; appends the path to the shadow queue with a
+// next-event connection (shadowOrigin/Direction/Radiance at its queue slot) and to
 // rayQueue[(depth + 1) & 1] with its BSDF-sampled continuation (rayOrigin/Direction,
 // throughput, by path).
 #extension GL_GOOGLE_include_directive : require
@@ -65,9 +65,9 @@ void main() {
 #if WF_HAS_EMITTERS
     uint shadowSlot = appendShadow(v.connects);
     if (v.connects) {
-        // By queue slot, so that the shadow pass reads its connections in order.
-        shadowQueue[shadowSlot] = path;
-        shadowOrigin[shadowSlot] = wfPack(vec4(v.shadowOrigin, 0.0));
+        // By queue slot, so that the shadow pass reads its connections in order; the path
+        // rides in the origin's w.
+        shadowOrigin[shadowSlot] = wfPack(uvec4(floatBitsToUint(v.shadowOrigin), path));
         shadowDirection[shadowSlot] = wfPack(vec4(v.shadowSegment, 0.0));
         shadowRadiance[shadowSlot] = wfPack(vec4(v.shadowRadiance, 0.0));
     }

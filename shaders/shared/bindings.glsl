@@ -48,17 +48,16 @@ layout(std430, binding = WF_BINDING_RAY_QUEUES) buffer RayQueueBuffer {
     uint rayQueues[]; // two queues of pathCapacity path indices, by depth parity
 };
 #if WF_HAS_EMITTERS
+// The shadow queue is these three arrays, by slot: the record carries the path it connects, so
+// the pass that appends it stores no separate queue entry (one store loop fewer on lavapipe).
 layout(std430, binding = WF_BINDING_SHADOW_ORIGIN) buffer ShadowOriginBuffer {
-    WfEntry shadowOrigin[];
+    WfUintEntry shadowOrigin[]; // xyz: origin as float bits, w: the path
 };
 layout(std430, binding = WF_BINDING_SHADOW_DIRECTION) buffer ShadowDirectionBuffer {
     WfEntry shadowDirection[]; // xyz: target - origin, so the segment is t in (0, 1)
 };
 layout(std430, binding = WF_BINDING_SHADOW_RADIANCE) buffer ShadowRadianceBuffer {
     WfEntry shadowRadiance[]; // radiance added if the segment is unoccluded
-};
-layout(std430, binding = WF_BINDING_SHADOW_QUEUE) buffer ShadowQueueBuffer {
-    uint shadowQueue[];
 };
 #endif
 #include "path_texels.glsl"

@@ -16,8 +16,6 @@ layout(binding = WF_BINDING_RADIANCE_TEXELS, rgba32ui) uniform readonly uimageBu
 layout(binding = WF_BINDING_HITS_TEXELS, rgba32ui) uniform readonly uimageBuffer hitTexels;
 layout(binding = WF_BINDING_RAY_QUEUE_TEXELS, r32ui) uniform readonly uimageBuffer rayQueueTexels;
 #if WF_HAS_EMITTERS
-layout(binding = WF_BINDING_SHADOW_QUEUE_TEXELS, r32ui) uniform readonly uimageBuffer
-    shadowQueueTexels;
 layout(binding = WF_BINDING_SHADOW_ORIGIN_TEXELS, rgba32ui) uniform readonly uimageBuffer
     shadowOriginTexels;
 layout(binding = WF_BINDING_SHADOW_DIRECTION_TEXELS, rgba32ui) uniform readonly uimageBuffer
@@ -39,8 +37,8 @@ uint rayQueueAt(uint depth, uint index) {
 }
 uvec4 hitAt(uint path) { return imageLoad(hitTexels, int(path)); }
 #if WF_HAS_EMITTERS
-uint shadowQueueAt(uint index) { return imageLoad(shadowQueueTexels, int(index)).x; }
-vec4 shadowOriginAt(uint path) { return wfFloatTexel(shadowOriginTexels, path); }
-vec4 shadowDirectionAt(uint path) { return wfFloatTexel(shadowDirectionTexels, path); }
-vec4 shadowRadianceAt(uint path) { return wfFloatTexel(shadowRadianceTexels, path); }
+// xyz: the connection's origin as float bits, w: its path.
+uvec4 shadowOriginAt(uint slot) { return imageLoad(shadowOriginTexels, int(slot)); }
+vec4 shadowDirectionAt(uint slot) { return wfFloatTexel(shadowDirectionTexels, slot); }
+vec4 shadowRadianceAt(uint slot) { return wfFloatTexel(shadowRadianceTexels, slot); }
 #endif

@@ -5,11 +5,12 @@
 //   raygen      writes PathState for paths [0, pathCount), rayQueue[0] = identity
 //   intersect   reads rayQueue[depth & 1] (count in rayArgs.count), writes hits by queue slot
 //   shade       reads rayQueue[depth & 1] + hits; appends to rayQueue[(depth+1) & 1] (rayCount)
-//               and to shadowQueue (shadowCount; the connection's shadow* data at its slot);
-//               adds emission to radiance
+//               and to the shadow queue (shadowCount): the connection's shadow* data at its
+//               slot, its path in shadowOrigin.w; adds emission to radiance
 //   queue       copies rayCount/shadowCount into rayArgs/shadowArgs, zeroes them, keeps stats
 //               (totals and per depth: depthRays[depth + 1], depthShadowRays[depth])
-//   shadow      reads shadowQueue (count in shadowArgs.count); adds unoccluded NEE to radiance
+//   shadow      reads the shadow queue (count in shadowArgs.count); adds unoccluded NEE to
+//               radiance
 //   accumulate  adds each pixel's paths into the film, zeroing NaN/Inf samples
 #ifndef WF_RENDER_TYPES_H
 #define WF_RENDER_TYPES_H
@@ -39,13 +40,12 @@ namespace wf::gpu_types {
 #define WF_BINDING_SHADOW_DIRECTION 13
 #define WF_BINDING_SHADOW_RADIANCE 14
 #define WF_BINDING_RAY_QUEUES 15
-#define WF_BINDING_SHADOW_QUEUE 16
 // Lights beyond emissive triangles
 #define WF_BINDING_LIGHTS 17
 #define WF_BINDING_ENVIRONMENT 18       // vec4 radiance per texel
 #define WF_BINDING_ENVIRONMENT_ALIAS 19 // Emitter-shaped alias table over texels
 // 20-31: per-vertex attributes and textures (only for scenes that use them); 32: sampler tables
-// 40-47: the path state again, as RGBA32UI texel buffers for reading (path_texels.glsl)
+// 40-48: the path state again, as texel buffers for reading (path_texels.glsl)
 #define WF_BINDING_RAY_ORIGIN_TEXELS 40
 #define WF_BINDING_RAY_DIRECTION_TEXELS 41
 #define WF_BINDING_THROUGHPUT_TEXELS 42
@@ -55,7 +55,6 @@ namespace wf::gpu_types {
 #define WF_BINDING_SHADOW_DIRECTION_TEXELS 46
 #define WF_BINDING_SHADOW_RADIANCE_TEXELS 47
 #define WF_BINDING_RAY_QUEUE_TEXELS 48
-#define WF_BINDING_SHADOW_QUEUE_TEXELS 49
 
 struct RenderParams {
     vec3 cameraPosition;

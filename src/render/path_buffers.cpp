@@ -26,7 +26,6 @@ PathBuffers::PathBuffers(const Context& context, uint32_t pathCapacity, uint32_t
     shadowOrigin = Buffer(context, "shadow origins", uint64_t(pathCapacity) * 16);
     shadowDirection = Buffer(context, "shadow directions", uint64_t(pathCapacity) * 16);
     shadowRadiance = Buffer(context, "shadow radiance", uint64_t(pathCapacity) * 16);
-    shadowQueue = Buffer(context, "shadow queue", uint64_t(pathCapacity) * 4);
 }
 
 void PathBuffers::appendBindings(DescriptorBindings& bindings) const {
@@ -43,7 +42,6 @@ void PathBuffers::appendBindings(DescriptorBindings& bindings) const {
         {WF_BINDING_SHADOW_ORIGIN, &shadowOrigin},
         {WF_BINDING_SHADOW_DIRECTION, &shadowDirection},
         {WF_BINDING_SHADOW_RADIANCE, &shadowRadiance},
-        {WF_BINDING_SHADOW_QUEUE, &shadowQueue},
         // The path state again as texel views, through which the passes read it.
         {WF_BINDING_RAY_ORIGIN_TEXELS, &rayOrigin, BufferAccess::UintTexels},
         {WF_BINDING_RAY_DIRECTION_TEXELS, &rayDirection, BufferAccess::UintTexels},
@@ -54,7 +52,6 @@ void PathBuffers::appendBindings(DescriptorBindings& bindings) const {
         {WF_BINDING_SHADOW_DIRECTION_TEXELS, &shadowDirection, BufferAccess::UintTexels},
         {WF_BINDING_SHADOW_RADIANCE_TEXELS, &shadowRadiance, BufferAccess::UintTexels},
         {WF_BINDING_RAY_QUEUE_TEXELS, &rayQueues, BufferAccess::Uint1Texels},
-        {WF_BINDING_SHADOW_QUEUE_TEXELS, &shadowQueue, BufferAccess::Uint1Texels},
     };
     for (const DescriptorBinding& binding : all)
         if (*binding.buffer)
@@ -65,7 +62,7 @@ void PathBuffers::appendMemoryReport(
     std::vector<std::pair<std::string, uint64_t>>& report) const {
     for (const Buffer* buffer :
          {&params, &counters, &film, &rayOrigin, &rayDirection, &throughput, &radiance, &hits,
-          &shadowOrigin, &shadowDirection, &shadowRadiance, &rayQueues, &shadowQueue})
+          &shadowOrigin, &shadowDirection, &shadowRadiance, &rayQueues})
         if (*buffer)
             report.emplace_back(buffer->name(), buffer->size());
 }

@@ -35,7 +35,6 @@ struct PathBuffers {
     Buffer shadowDirection;
     Buffer shadowRadiance;
     Buffer rayQueues;
-    Buffer shadowQueue;
 };
 
 } // namespace wf

@@ -1,5 +1,5 @@
 // Per-scene specialisation: a scene without emitters compiles the no-NEE variant and binds no
-// emitter table, shadow queue or shadow buffers, and still renders (to black).
+// emitter table or shadow-queue buffers, and still renders (to black).
 #include <algorithm>
 
 #include <gtest/gtest.h>
@@ -47,7 +47,7 @@ TEST(Variants, SceneWithEmittersBindsTheLightTable) {
     EXPECT_TRUE(std::any_of(report.begin(), report.end(),
                             [](const auto& entry) { return entry.first == "emitters"; }));
     EXPECT_TRUE(std::any_of(report.begin(), report.end(),
-                            [](const auto& entry) { return entry.first == "shadow queue"; }));
+                            [](const auto& entry) { return entry.first == "shadow origins"; }));
 }
 
 } // namespace
