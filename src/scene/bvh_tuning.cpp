@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <iterator>
+#include <limits>
 #include <random>
 
 #include "scene/bvh_cpu.h"
@@ -150,26 +150,28 @@ SimdTraversalWork simdTraversalWork(const std::vector<BvhNode>& nodes,
 
 BvhBuildStats buildTunedBvh(std::vector<Triangle>& triangles, std::vector<BvhNode>& nodes,
                             const std::vector<Material>& materials, const Camera& camera) {
-    const auto start = std::chrono::steady_clock::now();
-    const std::vector<Triangle> input = triangles;
     BvhBuildOptions options;
     options.traversalCost = kTunedTraversalCosts[0];
-    BvhBuildStats best = buildBvh(triangles, nodes, options);
-    best.traversalCost = options.traversalCost;
-    if (input.size() > kMaxTunedTriangles)
-        return best;
-    double bestCost = simdTraversalWork(nodes, triangles, materials, camera).cost();
-    for (std::size_t i = 1; i < std::size(kTunedTraversalCosts); ++i) {
+    if (triangles.size() > kMaxTunedTriangles) {
+        BvhBuildStats stats = buildBvh(triangles, nodes, options);
+        stats.traversalCost = options.traversalCost;
+        return stats;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<Triangle> input = triangles;
+    BvhBuildStats best;
+    double bestCost = std::numeric_limits<double>::infinity();
+    for (const float traversalCost : kTunedTraversalCosts) {
         std::vector<Triangle> candidateTriangles = input;
         std::vector<BvhNode> candidateNodes;
-        options.traversalCost = kTunedTraversalCosts[i];
-        BvhBuildStats stats = buildBvh(candidateTriangles, candidateNodes, options);
+        options.traversalCost = traversalCost;
+        const BvhBuildStats stats = buildBvh(candidateTriangles, candidateNodes, options);
         const double cost =
             simdTraversalWork(candidateNodes, candidateTriangles, materials, camera).cost();
-        if (cost < bestCost) {
+        if (cost < bestCost) { // strictly: the first of equals stays
             bestCost = cost;
             best = stats;
-            best.traversalCost = options.traversalCost;
+            best.traversalCost = traversalCost;
             triangles = std::move(candidateTriangles);
             nodes = std::move(candidateNodes);
         }
