@@ -68,7 +68,8 @@ void main() {
         // By queue slot, so that the shadow pass reads its connections in order; the path
         // rides in the origin's w.
         shadowOrigin[shadowSlot] = wfPack(uvec4(floatBitsToUint(v.shadowOrigin), path));
-        shadowDirection[shadowSlot] = wfPack(vec4(v.shadowSegment, 0.0));
+        shadowDirection[shadowSlot] =
+            wfPack(vec4(v.shadowSegment, shadowTargetToFloat(v.shadowTarget)));
         shadowRadiance[shadowSlot] = wfPack(vec4(v.shadowRadiance, 0.0));
     }
 #endif

@@ -28,6 +28,7 @@ struct LightSample {
     float pdf;       // solid-angle density with the light choice; for Dirac lights the choice only
     vec3 radiance;   // incident radiance (Dirac lights: irradiance at normal incidence)
     vec3 segmentEnd; // where the shadow ray stops: just off the light, or outside the scene
+    uint target;     // the emitter's source (kind | index): the shadow ray does not test it
     bool isDelta;
 };
 
@@ -43,6 +44,7 @@ LightSample noLight(vec3 p) {
     s.pdf = 0.0;
     s.radiance = vec3(0.0);
     s.segmentEnd = p;
+    s.target = WF_EMITTER_ENVIRONMENT;
     s.isDelta = false;
     return s;
 }
@@ -120,6 +122,7 @@ LightSample sampleTriangleLight(uint emitter, uint triangleIndex, vec2 u, vec3 p
     s.radiance = surfaceEmission(triangleIndex, material, b.x, b.y); // textured emission too
     vec3 qError = triangleSpawnError(tri.p0, tri.p1, tri.p2, b.x, b.y);
     s.segmentEnd = offsetRayOrigin(q, qError, nl, -direction);
+    s.target = WF_EMITTER_TRIANGLE | triangleIndex;
     s.isDelta = false;
     return s;
 }
@@ -148,7 +151,8 @@ vec3 spherePointError(PunctualLight light) {
     return (abs(light.position) + vec3(light.radius)) * WF_GAMMA(6.0);
 }
 
-LightSample sampleSphereLight(uint emitter, PunctualLight light, vec2 u, vec3 p) {
+LightSample sampleSphereLight(uint emitter, uint lightIndex, PunctualLight light, vec2 u,
+                              vec3 p) {
     vec3 q;
     if (sphereUsesCone(light, p)) {
         vec3 toCenter = light.position - p;
@@ -171,6 +175,7 @@ LightSample sampleSphereLight(uint emitter, PunctualLight light, vec2 u, vec3 p)
     s.pdf = sphereLightPdf(emitter, light, p, distance, cosLight);
     s.radiance = sphereRadiance(light);
     s.segmentEnd = offsetRayOrigin(q, spherePointError(light), nl, nl);
+    s.target = WF_EMITTER_LIGHT | lightIndex;
     s.isDelta = false;
     return s;
 }
@@ -180,6 +185,7 @@ LightSample sampleSphereLight(uint emitter, PunctualLight light, vec2 u, vec3 p)
 LightSample sampleDeltaLight(uint emitter, PunctualLight light, vec3 p) {
     LightSample s;
     s.pdf = emitterAt(emitter).pmf;
+    s.target = emitterAt(emitter).source; // no geometry: nothing to leave out of the shadow test
     s.isDelta = true;
     if (light.type == WF_LIGHT_DIRECTIONAL) {
         s.direction = -light.direction;
@@ -226,6 +232,7 @@ LightSample sampleEnvironment(float uTexel, vec2 u, vec3 p) {
     s.pdf = environmentLightPdf(s.direction);
     s.radiance = environmentAt(texel);
     s.segmentEnd = pointOutsideScene(p, s.direction);
+    s.target = WF_EMITTER_ENVIRONMENT;
     s.isDelta = false;
     return s.pdf > 0.0 ? s : noLight(p);
 }
@@ -249,7 +256,7 @@ LightSample sampleLight(float uChoice, vec2 uPoint, float uExtra, vec3 p) {
         PunctualLight light = lightAt(index);
 #if WF_HAS_SPHERE_LIGHTS
         if (light.type == WF_LIGHT_SPHERE)
-            return sampleSphereLight(emitter, light, uPoint, p);
+            return sampleSphereLight(emitter, index, light, uPoint, p);
 #endif
 #if WF_HAS_DELTA_LIGHTS
         return sampleDeltaLight(emitter, light, p);

@@ -35,12 +35,13 @@ public:
         return found;
     }
 
-    // Whether anything is hit with t in (0, tMax).
+    // Whether anything but triangle `skipTriangle` is hit with t in (0, tMax).
     bool traceAny(glm::vec3 o, glm::vec3 d, float tMax,
-                  std::vector<std::uint32_t>* stepTests = nullptr) const {
+                  std::vector<std::uint32_t>* stepTests = nullptr,
+                  std::uint32_t skipTriangle = WF_NO_TRIANGLE) const {
         gpu_types::BvhTraversal traversal = traversal_;
         traversal.stepTests = stepTests;
-        const bool found = traversal.traceAny(o, d, tMax);
+        const bool found = traversal.traceAny(o, d, tMax, skipTriangle);
         deepestStack_ = std::max(deepestStack_, traversal.deepestStack);
         return found;
     }
