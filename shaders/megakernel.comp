@@ -61,7 +61,7 @@ void main() {
                     shadowBits |= 1u << depth;
                 else
                     ++deepShadows;
-                if (!segmentOccluded(v.shadowOrigin, v.shadowSegment, v.shadowTarget))
+                if (!segmentOccluded(v.shadowOrigin, v.shadowSegment, v.shadowSphere))
                     total += v.shadowRadiance;
             }
 #endif

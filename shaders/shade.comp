@@ -69,7 +69,7 @@ void main() {
         // rides in the origin's w.
         shadowOrigin[shadowSlot] = wfPack(uvec4(floatBitsToUint(v.shadowOrigin), path));
         shadowDirection[shadowSlot] =
-            wfPack(vec4(v.shadowSegment, shadowTargetToFloat(v.shadowTarget)));
+            wfPack(vec4(v.shadowSegment, float(v.shadowSphere + 1u)));
         shadowRadiance[shadowSlot] = wfPack(vec4(v.shadowRadiance, 0.0));
     }
 #endif

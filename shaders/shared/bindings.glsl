@@ -54,27 +54,14 @@ layout(std430, binding = WF_BINDING_SHADOW_ORIGIN) buffer ShadowOriginBuffer {
     WfUintEntry shadowOrigin[]; // xyz: origin as float bits, w: the path
 };
 layout(std430, binding = WF_BINDING_SHADOW_DIRECTION) buffer ShadowDirectionBuffer {
-    // xyz: target - origin, so the segment is t in (0, 1); w: the light it ends on, which the
-    // shadow pass does not test (shadowTargetToFloat).
+    // xyz: target - origin, so the segment is t in (0, 1); w: 1 + the sphere light it ends on
+    // as a float (exact below 2^24; raw bits could be denormals, which a device may flush), 0
+    // when it ends elsewhere: uint(w) - 1 is that light or WF_NO_SPHERE.
     WfEntry shadowDirection[];
 };
 layout(std430, binding = WF_BINDING_SHADOW_RADIANCE) buffer ShadowRadianceBuffer {
     WfEntry shadowRadiance[]; // radiance added if the segment is unoccluded
 };
-
-// An emitter source (WF_EMITTER_* | index) as a float that survives any store: triangle i is
-// i + 1, light i is -(i + 1), the environment 0. Exact while indices stay below 2^24, the
-// loader's triangle limit; raw bits could be denormals, which a device may flush.
-float shadowTargetToFloat(uint source) {
-    float index = float(source & WF_EMITTER_INDEX_MASK) + 1.0;
-    uint kind = source & WF_EMITTER_KIND_MASK;
-    return kind == WF_EMITTER_TRIANGLE ? index : (kind == WF_EMITTER_LIGHT ? -index : 0.0);
-}
-
-uint shadowTargetFromFloat(float w) {
-    return w > 0.0 ? WF_EMITTER_TRIANGLE | (uint(w) - 1u)
-                   : (w < 0.0 ? WF_EMITTER_LIGHT | (uint(-w) - 1u) : WF_EMITTER_ENVIRONMENT);
-}
 #endif
 #include "path_texels.glsl"
 #if WF_PACKED_STORES
@@ -87,3 +74,4 @@ vec4 wfPack(vec4 v) { return v; }
 
 #define WF_MISS 0xffffffffu
 #define WF_SPHERE_HIT 0x80000000u // hits.w = WF_SPHERE_HIT | sphere light index
+#define WF_NO_SPHERE 0xffffffffu

@@ -259,9 +259,7 @@ WF_INLINE bool traceClosest(vec3 o, vec3 d, float tMax, WF_OUT(HitRecord) hit) {
 }
 
 // Any hit with t in (0, tMax), for shadow rays: order does not matter, the first hit ends it.
-// `skipTriangle` (or WF_NO_TRIANGLE) is the light the segment ends on: a flat triangle cannot
-// block a segment that ends on it, but rounding far from it can make it seem to.
-WF_INLINE bool traceAny(vec3 o, vec3 d, float tMax, uint skipTriangle) {
+WF_INLINE bool traceAny(vec3 o, vec3 d, float tMax) {
     vec3 invDir = 1.0f / d;
 #if WF_BVH_REGISTER_STACK
     BvhRegisterStack stack = bvhRegisterStack();
@@ -279,8 +277,7 @@ WF_INLINE bool traceAny(vec3 o, vec3 d, float tMax, uint skipTriangle) {
             float t;
             float b1;
             float b2;
-            if (i != skipTriangle &&
-                intersectTriangle(o, d, tri.p0, tri.p1, tri.p2, tMax, t, b1, b2)) {
+            if (intersectTriangle(o, d, tri.p0, tri.p1, tri.p2, tMax, t, b1, b2)) {
 #if WF_HAS_ALPHA_MASK
                 if (!wfAlphaPasses(i, b1, b2, o, d))
                     continue;

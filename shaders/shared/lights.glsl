@@ -28,7 +28,7 @@ struct LightSample {
     float pdf;       // solid-angle density with the light choice; for Dirac lights the choice only
     vec3 radiance;   // incident radiance (Dirac lights: irradiance at normal incidence)
     vec3 segmentEnd; // where the shadow ray stops: just off the light, or outside the scene
-    uint target;     // the emitter's source (kind | index): the shadow ray does not test it
+    uint sphere;     // the sphere light it ends on, left out of the shadow test, or WF_NO_SPHERE
     bool isDelta;
 };
 
@@ -44,7 +44,7 @@ LightSample noLight(vec3 p) {
     s.pdf = 0.0;
     s.radiance = vec3(0.0);
     s.segmentEnd = p;
-    s.target = WF_EMITTER_ENVIRONMENT;
+    s.sphere = WF_NO_SPHERE;
     s.isDelta = false;
     return s;
 }
@@ -122,7 +122,7 @@ LightSample sampleTriangleLight(uint emitter, uint triangleIndex, vec2 u, vec3 p
     s.radiance = surfaceEmission(triangleIndex, material, b.x, b.y); // textured emission too
     vec3 qError = triangleSpawnError(tri.p0, tri.p1, tri.p2, b.x, b.y);
     s.segmentEnd = offsetRayOrigin(q, qError, nl, -direction);
-    s.target = WF_EMITTER_TRIANGLE | triangleIndex;
+    s.sphere = WF_NO_SPHERE;
     s.isDelta = false;
     return s;
 }
@@ -175,7 +175,7 @@ LightSample sampleSphereLight(uint emitter, uint lightIndex, PunctualLight light
     s.pdf = sphereLightPdf(emitter, light, p, distance, cosLight);
     s.radiance = sphereRadiance(light);
     s.segmentEnd = offsetRayOrigin(q, spherePointError(light), nl, nl);
-    s.target = WF_EMITTER_LIGHT | lightIndex;
+    s.sphere = lightIndex;
     s.isDelta = false;
     return s;
 }
@@ -185,7 +185,7 @@ LightSample sampleSphereLight(uint emitter, uint lightIndex, PunctualLight light
 LightSample sampleDeltaLight(uint emitter, PunctualLight light, vec3 p) {
     LightSample s;
     s.pdf = emitterAt(emitter).pmf;
-    s.target = emitterAt(emitter).source; // no geometry: nothing to leave out of the shadow test
+    s.sphere = WF_NO_SPHERE;
     s.isDelta = true;
     if (light.type == WF_LIGHT_DIRECTIONAL) {
         s.direction = -light.direction;
@@ -232,7 +232,7 @@ LightSample sampleEnvironment(float uTexel, vec2 u, vec3 p) {
     s.pdf = environmentLightPdf(s.direction);
     s.radiance = environmentAt(texel);
     s.segmentEnd = pointOutsideScene(p, s.direction);
-    s.target = WF_EMITTER_ENVIRONMENT;
+    s.sphere = WF_NO_SPHERE;
     s.isDelta = false;
     return s.pdf > 0.0 ? s : noLight(p);
 }

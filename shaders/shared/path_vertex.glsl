@@ -23,7 +23,7 @@ struct PathVertex {
     bool connects;
     vec3 shadowOrigin;
     vec3 shadowSegment;  // to the light point: t in (0, 1)
-    uint shadowTarget;   // the light it ends on (segmentOccluded leaves it out)
+    uint shadowSphere;   // the sphere light it ends on (segmentOccluded leaves it out)
     vec3 shadowRadiance; // added if the segment is unoccluded
 };
 
@@ -152,7 +152,7 @@ void shadePathVertex(inout PathVertex v) {
             v.shadowOrigin =
                 offsetRayOrigin(surface.p, surface.pError, geometricOutside, light.direction);
             v.shadowSegment = light.segmentEnd - v.shadowOrigin;
-            v.shadowTarget = light.target;
+            v.shadowSphere = light.sphere;
             v.shadowRadiance = clampContribution(contribution);
             v.connects = any(greaterThan(contribution, vec3(0.0)));
         }

@@ -29,24 +29,20 @@ uvec4 intersectClosest(vec3 origin, vec3 direction) {
     return result;
 }
 
-// Whether anything but the light it ends on blocks the segment origin + t * segment, t in (0, 1).
-// `target` is that light's emitter source (WF_EMITTER_* | index). The light itself cannot block
-// it: a triangle is flat, and the segment reaches a sphere's near side from outside. Testing
-// it anyway lets rounding decide: from far away the computed t of a sphere or a small triangle
-// errs by more than the segment end's offset off its surface, and a share of the samples went
-// dark (issue 13: sphere lights 20-30% low away from them).
-bool segmentOccluded(vec3 origin, vec3 segment, uint target) {
-    uint targetKind = target & WF_EMITTER_KIND_MASK;
-    uint targetIndex = target & WF_EMITTER_INDEX_MASK;
-    bool occluded = traceAny(origin, segment, 1.0,
-                             targetKind == WF_EMITTER_TRIANGLE ? targetIndex : WF_NO_TRIANGLE);
+// Whether anything blocks the segment origin + t * segment, t in (0, 1), that ends on sphere
+// light `targetSphere` (or WF_NO_SPHERE). That sphere cannot block it, since the segment
+// reaches its near side from outside; testing it anyway let rounding decide, and from far away
+// the computed t errs by more than the segment end's offset off the sphere, so 20-30% of the
+// samples went dark (issue 13). Triangles keep the plain test: their ends are offset by the
+// intersector's own error bound.
+bool segmentOccluded(vec3 origin, vec3 segment, uint targetSphere) {
+    bool occluded = traceAny(origin, segment, 1.0);
 #if WF_HAS_SPHERE_LIGHTS
     float length_ = length(segment);
-    uint skipSphere = targetKind == WF_EMITTER_LIGHT ? targetIndex : ~0u;
     for (uint i = 0u; i < params.sphereLightCount && !occluded; ++i) {
         PunctualLight sphere = lightAt(i);
         float t = raySphereNear(origin, segment / length_, sphere.position, sphere.radius, false);
-        occluded = i != skipSphere && t > 0.0 && t < length_;
+        occluded = i != targetSphere && t > 0.0 && t < length_;
     }
 #endif
     return occluded;

@@ -35,13 +35,12 @@ public:
         return found;
     }
 
-    // Whether anything but triangle `skipTriangle` is hit with t in (0, tMax).
+    // Whether anything is hit with t in (0, tMax).
     bool traceAny(glm::vec3 o, glm::vec3 d, float tMax,
-                  std::vector<std::uint32_t>* stepTests = nullptr,
-                  std::uint32_t skipTriangle = WF_NO_TRIANGLE) const {
+                  std::vector<std::uint32_t>* stepTests = nullptr) const {
         gpu_types::BvhTraversal traversal = traversal_;
         traversal.stepTests = stepTests;
-        const bool found = traversal.traceAny(o, d, tMax, skipTriangle);
+        const bool found = traversal.traceAny(o, d, tMax);
         deepestStack_ = std::max(deepestStack_, traversal.deepestStack);
         return found;
     }
