@@ -38,6 +38,39 @@ uint chooseEmitter(float u) {
     return (scaled - float(slot)) < emitterAt(slot).aliasProb ? slot : emitterAt(slot).alias;
 }
 
+#if WF_LIGHT_TREE
+#define WF_LIGHT_TREE_NODE(i) lightTreeNodeAt(i)
+#include "light_tree.h"
+#endif
+
+// The emitter next-event estimation connects p to, and the probability of choosing it there:
+// from the alias table, and with --light-selection tree through the tree's slot (the last)
+// down the tree with uTree. WF_LIGHT_TREE_LEAF with pmf 0 when no light can reach p.
+uint chooseLight(float uChoice, float uTree, vec3 p, out float pmf) {
+    uint slot = chooseEmitter(uChoice);
+    pmf = emitterAt(slot).pmf;
+#if WF_LIGHT_TREE
+    if (slot == params.emitterCount - 1u) {
+        float treePmf;
+        uint emitter = lightTreeSample(p, uTree, treePmf);
+        pmf *= treePmf;
+        return emitter;
+    }
+#endif
+    return slot;
+}
+
+// The probability that chooseLight picks `emitter` at p: what MIS needs when a BSDF-sampled
+// ray from p finds that light.
+float lightPmf(uint emitter, vec3 p) {
+#if WF_LIGHT_TREE
+    uvec4 trail = lightTreeTrailAt(emitter);
+    if (trail.z != 0u)
+        return emitterAt(params.emitterCount - 1u).pmf * lightTreePmf(p, trail.xy);
+#endif
+    return emitterAt(emitter).pmf;
+}
+
 LightSample noLight(vec3 p) {
     LightSample s;
     s.direction = vec3(0.0, 0.0, 1.0);
@@ -55,9 +88,9 @@ vec3 pointOutsideScene(vec3 p, vec3 direction) {
 }
 
 #if WF_HAS_TRIANGLE_EMITTERS
-// Density of reaching triangle `tri` from `from` along a direction hitting it at distance t.
-float triangleLightPdf(uint emitter, Triangle tri, vec3 from, float t, float cosLight) {
-    float pmf = emitterAt(emitter).pmf;
+// Density of reaching triangle `tri` from `from` along a direction hitting it at distance t,
+// chosen with probability pmf.
+float triangleLightPdf(float pmf, Triangle tri, vec3 from, float t, float cosLight) {
 #if WF_TRIANGLE_SOLID_ANGLE
     float omega = triangleSolidAngle(from, tri.p0, tri.p1, tri.p2);
     if (useSphericalTriangleSampling(omega))
@@ -79,7 +112,7 @@ vec2 planeBarycentrics(Triangle tri, vec3 q) {
     return b / max(1.0, b.x + b.y);
 }
 
-LightSample sampleTriangleLight(uint emitter, uint triangleIndex, vec2 u, vec3 p) {
+LightSample sampleTriangleLight(float pmf, uint triangleIndex, vec2 u, vec3 p) {
     Triangle tri = triangleAt(triangleIndex);
     Material material = materialAt(tri.material);
     vec3 cross12 = cross(tri.p1 - tri.p0, tri.p2 - tri.p0);
@@ -117,8 +150,7 @@ LightSample sampleTriangleLight(uint emitter, uint triangleIndex, vec2 u, vec3 p
         return noLight(p); // the back of a one-sided emitter: no light this way
     LightSample s;
     s.direction = direction;
-    s.pdf = solidAngle ? emitterAt(emitter).pmf / omega
-                       : triangleLightPdf(emitter, tri, p, distance, cosLight);
+    s.pdf = solidAngle ? pmf / omega : triangleLightPdf(pmf, tri, p, distance, cosLight);
     s.radiance = surfaceEmission(triangleIndex, material, b.x, b.y); // textured emission too
     vec3 qError = triangleSpawnError(tri.p0, tri.p1, tri.p2, b.x, b.y);
     s.segmentEnd = offsetRayOrigin(q, qError, nl, -direction);
@@ -137,8 +169,7 @@ bool sphereUsesCone(PunctualLight light, vec3 from) {
 #endif
 }
 
-float sphereLightPdf(uint emitter, PunctualLight light, vec3 from, float t, float cosLight) {
-    float pmf = emitterAt(emitter).pmf;
+float sphereLightPdf(float pmf, PunctualLight light, vec3 from, float t, float cosLight) {
     if (sphereUsesCone(light, from))
         return pmf / (2.0 * WF_PI *
                       sphereConeOneMinusCos(light.radius, length(light.position - from)));
@@ -151,8 +182,7 @@ vec3 spherePointError(PunctualLight light) {
     return (abs(light.position) + vec3(light.radius)) * WF_GAMMA(6.0);
 }
 
-LightSample sampleSphereLight(uint emitter, uint lightIndex, PunctualLight light, vec2 u,
-                              vec3 p) {
+LightSample sampleSphereLight(float pmf, uint lightIndex, PunctualLight light, vec2 u, vec3 p) {
     vec3 q;
     if (sphereUsesCone(light, p)) {
         vec3 toCenter = light.position - p;
@@ -172,7 +202,7 @@ LightSample sampleSphereLight(uint emitter, uint lightIndex, PunctualLight light
     float cosLight = dot(nl, -s.direction);
     if (!(cosLight > 0.0))
         return noLight(p); // the far side of the sphere faces away
-    s.pdf = sphereLightPdf(emitter, light, p, distance, cosLight);
+    s.pdf = sphereLightPdf(pmf, light, p, distance, cosLight);
     s.radiance = sphereRadiance(light);
     s.segmentEnd = offsetRayOrigin(q, spherePointError(light), nl, nl);
     s.sphere = lightIndex;
@@ -182,9 +212,9 @@ LightSample sampleSphereLight(uint emitter, uint lightIndex, PunctualLight light
 #endif
 
 #if WF_HAS_DELTA_LIGHTS
-LightSample sampleDeltaLight(uint emitter, PunctualLight light, vec3 p) {
+LightSample sampleDeltaLight(float pmf, PunctualLight light, vec3 p) {
     LightSample s;
-    s.pdf = emitterAt(emitter).pmf;
+    s.pdf = pmf;
     s.sphere = WF_NO_SPHERE;
     s.isDelta = true;
     if (light.type == WF_LIGHT_DIRECTIONAL) {
@@ -239,13 +269,16 @@ LightSample sampleEnvironment(float uTexel, vec2 u, vec3 p) {
 #endif
 
 LightSample sampleLight(float uChoice, vec2 uPoint, float uExtra, vec3 p) {
-    uint emitter = chooseEmitter(uChoice);
+    float pmf;
+    uint emitter = chooseLight(uChoice, uExtra, p, pmf);
+    if (!(pmf > 0.0))
+        return noLight(p);
     uint source = emitterAt(emitter).source;
     uint index = source & WF_EMITTER_INDEX_MASK;
     uint kind = source & WF_EMITTER_KIND_MASK;
 #if WF_HAS_TRIANGLE_EMITTERS
     if (kind == WF_EMITTER_TRIANGLE)
-        return sampleTriangleLight(emitter, index, uPoint, p);
+        return sampleTriangleLight(pmf, index, uPoint, p);
 #endif
 #if WF_HAS_ENVIRONMENT
     if (kind == WF_EMITTER_ENVIRONMENT)
@@ -256,10 +289,10 @@ LightSample sampleLight(float uChoice, vec2 uPoint, float uExtra, vec3 p) {
         PunctualLight light = lightAt(index);
 #if WF_HAS_SPHERE_LIGHTS
         if (light.type == WF_LIGHT_SPHERE)
-            return sampleSphereLight(emitter, index, light, uPoint, p);
+            return sampleSphereLight(pmf, index, light, uPoint, p);
 #endif
 #if WF_HAS_DELTA_LIGHTS
-        return sampleDeltaLight(emitter, light, p);
+        return sampleDeltaLight(pmf, light, p);
 #endif
     }
 #endif

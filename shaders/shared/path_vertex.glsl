@@ -78,7 +78,8 @@ bool shadeLightHit(inout PathVertex v) {
             float lightPdf = 0.0;
 #if WF_HAS_EMITTERS && WF_LIGHT_SAMPLING != 0
             if (light.emitter != WF_NO_EMITTER)
-                lightPdf = sphereLightPdf(light.emitter, light, v.origin, t, cosLight);
+                lightPdf = sphereLightPdf(lightPmf(light.emitter, v.origin), light, v.origin, t,
+                                          cosLight);
 #endif
             v.radiance += clampContribution(v.beta * sphereRadiance(light) *
                                             emissionWeight(v.previousPdf, lightPdf));
@@ -116,8 +117,8 @@ void shadePathVertex(inout PathVertex v) {
         float lightPdf = 0.0;
 #if WF_HAS_TRIANGLE_EMITTERS && WF_LIGHT_SAMPLING != 0
         if (v.previousPdf > 0.0 && surface.emitter != WF_NO_EMITTER)
-            lightPdf = triangleLightPdf(surface.emitter, triangleAt(v.hit.w), v.origin, t,
-                                        abs(dot(surface.ng, wo)));
+            lightPdf = triangleLightPdf(lightPmf(surface.emitter, v.origin), triangleAt(v.hit.w),
+                                        v.origin, t, abs(dot(surface.ng, wo)));
 #endif
         v.radiance += clampContribution(v.beta * surface.emission *
                                         emissionWeight(v.previousPdf, lightPdf));

@@ -41,6 +41,8 @@ namespace wf::gpu_types {
 #define WF_BINDING_SHADOW_RADIANCE 14
 #define WF_BINDING_RAY_QUEUES 15
 // Lights beyond emissive triangles
+#define WF_BINDING_LIGHT_TREE 16         // LightTreeNode texels (light_tree.h)
+#define WF_BINDING_LIGHT_TREE_TRAILS 33  // uvec4 per emitter: trail bits, in-tree flag
 #define WF_BINDING_LIGHTS 17
 #define WF_BINDING_ENVIRONMENT 18       // vec4 radiance per texel
 #define WF_BINDING_ENVIRONMENT_ALIAS 19 // Emitter-shaped alias table over texels

@@ -12,6 +12,12 @@ layout(binding = WF_BINDING_MATERIALS, rgba32ui) uniform readonly restrict uimag
 layout(binding = WF_BINDING_EMITTERS, rgba32ui) uniform readonly restrict uimageBuffer
     emitterTexels;
 #endif
+#if WF_HAS_EMITTERS && WF_LIGHT_TREE
+layout(binding = WF_BINDING_LIGHT_TREE, rgba32ui) uniform readonly restrict uimageBuffer
+    lightTreeTexels;
+layout(binding = WF_BINDING_LIGHT_TREE_TRAILS, rgba32ui) uniform readonly restrict uimageBuffer
+    lightTreeTrailTexels;
+#endif
 #if WF_HAS_LIGHTS
 // Sphere lights first.
 layout(binding = WF_BINDING_LIGHTS, rgba32ui) uniform readonly restrict uimageBuffer lightTexels;
@@ -68,6 +74,22 @@ Emitter emitterAt(uint index) {
     uvec4 t = wfTexel(emitterTexels, index);
     return Emitter(t.x, uintBitsToFloat(t.y), uintBitsToFloat(t.z), t.w);
 }
+#endif
+
+#if WF_HAS_EMITTERS && WF_LIGHT_TREE
+LightTreeNode lightTreeNodeAt(uint index) {
+    uint base = index * WF_LIGHT_TREE_NODE_TEXELS;
+    uvec4 a = wfTexel(lightTreeTexels, base);
+    uvec4 b = wfTexel(lightTreeTexels, base + 1u);
+    uvec4 c = wfTexel(lightTreeTexels, base + 2u);
+    uvec4 d = wfTexel(lightTreeTexels, base + 3u);
+    return LightTreeNode(uintBitsToFloat(a.xyz), uintBitsToFloat(a.w), uintBitsToFloat(b.xyz),
+                         b.w, uintBitsToFloat(c.xyz), uintBitsToFloat(c.w),
+                         uintBitsToFloat(d.x), d.y, 0.0, 0.0);
+}
+
+// xy: the emitter's trail from the root, z: 1 if it is in the tree.
+uvec4 lightTreeTrailAt(uint emitter) { return wfTexel(lightTreeTrailTexels, emitter); }
 #endif
 
 #if WF_HAS_LIGHTS

@@ -86,6 +86,7 @@ struct Material {
 #define WF_EMITTER_TRIANGLE 0x00000000u    // | triangle index
 #define WF_EMITTER_LIGHT 0x40000000u       // | index into the punctual/sphere light table
 #define WF_EMITTER_ENVIRONMENT 0x80000000u
+#define WF_EMITTER_TREE 0xc0000000u // the light tree's slot in the table: walk the tree
 #define WF_EMITTER_KIND_MASK 0xc0000000u
 #define WF_EMITTER_INDEX_MASK 0x3fffffffu
 

@@ -33,6 +33,9 @@ std::vector<OptionSpec> samplingOptions() {
     return {
         {"--light-sampling", "", "MODE", "bsdf (emission found by BSDF rays), nee (light "
                                          "sampling only) or mis (default)"},
+        {"--light-selection", "", "MODE", "how NEE picks a light: uniform, power or tree (the "
+                                          "light tree; default: tree with 8 or more lights "
+                                          "that have a place, else power)"},
         {"--triangle-sampling", "", "MODE", "area or solid-angle (spherical triangles; "
                                             "default)"},
         {"--sphere-sampling", "", "MODE", "area or solid-angle (the cone; default)"},
@@ -75,6 +78,9 @@ void applyRenderFlags(const ParsedArgs& parsed, uint32_t defaultMaxDepth,
     settings.seed = parsed.uintValue("--seed", 0, 0, 0xffffffffu);
     settings.lightSampling =
         parseLightSampling(parsed.choiceValue("--light-sampling", "mis", {"bsdf", "nee", "mis"}));
+    if (parsed.has("--light-selection"))
+        settings.lightSelection = parseLightSelection(
+            parsed.choiceValue("--light-selection", "power", {"uniform", "power", "tree"}));
     settings.triangleSolidAngle = parsed.choiceValue("--triangle-sampling", "solid-angle",
                                                      {"area", "solid-angle"}) == "solid-angle";
     settings.sphereSolidAngle = parsed.choiceValue("--sphere-sampling", "solid-angle",

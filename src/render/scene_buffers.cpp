@@ -24,10 +24,41 @@ PreparedScene prepareScene(Scene scene) {
     prepared.lights = buildLightTable(prepared.triangles, prepared.materials,
                                       prepared.punctualLights, prepared.environment,
                                       prepared.bounds);
+    prepared.lightTree = buildLightTree(prepared.lights, prepared.triangles, prepared.materials,
+                                        prepared.punctualLights);
+    if (prepared.lightTree.lights < 2)
+        prepared.lightTree = LightTree{}; // one light needs no tree
     return prepared;
 }
 
 namespace {
+
+// The emitter table as the shaders choose from it: by power as built; with equal weights; or,
+// for the tree, the lights beside it by power and one more slot, last, that stands for the
+// tree with the power of its lights (theirs are 0 there: the tree chooses among them).
+std::vector<Emitter> selectionTable(const LightTable& table, const LightTree& tree,
+                                    LightSelection selection,
+                                    const std::vector<PunctualLight>& lights) {
+    if (selection == LightSelection::Power)
+        return table.emitters;
+    std::vector<double> weights;
+    std::vector<uint32_t> sources;
+    for (const Emitter& emitter : table.emitters) {
+        const bool inTree = selection == LightSelection::Tree && inLightTree(emitter.source, lights);
+        weights.push_back(selection == LightSelection::Uniform ? 1.0
+                          : inTree ? 0.0
+                                   : double(emitter.pmf) * table.totalPower);
+        sources.push_back(emitter.source);
+    }
+    if (selection == LightSelection::Tree) {
+        weights.push_back(tree.power);
+        sources.push_back(WF_EMITTER_TREE);
+    }
+    std::vector<Emitter> chosen = buildAliasTable(weights);
+    for (size_t i = 0; i < chosen.size(); ++i)
+        chosen[i].source = sources[i];
+    return chosen;
+}
 
 template <typename T>
 Buffer uploadTable(const Context& context, const char* name, const std::vector<T>& values) {
@@ -45,7 +76,13 @@ SceneBuffers::SceneBuffers(const Context& context, const PreparedScene& scene,
       bvhPairs_(uploadTable(context, "bvh nodes", scene.bvhPairs)),
       materials_(uploadTable(context, "materials", scene.materials)) {
     if (variant.nextEventEstimation)
-        emitters_ = uploadTable(context, "emitters", scene.lights.emitters);
+        emitters_ = uploadTable(context, "emitters",
+                                selectionTable(scene.lights, scene.lightTree,
+                                               variant.lightSelection, scene.punctualLights));
+    if (variant.lightTree()) {
+        lightTree_ = uploadTable(context, "light tree", scene.lightTree.nodes);
+        lightTreeTrails_ = uploadTable(context, "light tree trails", scene.lightTree.trails);
+    }
     if (variant.lightsBuffer())
         lights_ = uploadTable(context, "lights", scene.punctualLights);
     surface_ = SurfaceBuffers(context, scene.surface, variant.surface);
@@ -69,6 +106,11 @@ void SceneBuffers::appendBindings(
     bindings.push_back({WF_BINDING_MATERIALS, &materials_, BufferAccess::UintTexels});
     if (emitters_)
         bindings.push_back({WF_BINDING_EMITTERS, &emitters_, BufferAccess::UintTexels});
+    if (lightTree_) {
+        bindings.push_back({WF_BINDING_LIGHT_TREE, &lightTree_, BufferAccess::UintTexels});
+        bindings.push_back(
+            {WF_BINDING_LIGHT_TREE_TRAILS, &lightTreeTrails_, BufferAccess::UintTexels});
+    }
     if (lights_)
         bindings.push_back({WF_BINDING_LIGHTS, &lights_, BufferAccess::UintTexels});
     if (environment_)
@@ -81,8 +123,8 @@ void SceneBuffers::appendBindings(
 
 void SceneBuffers::appendMemoryReport(
     std::vector<std::pair<std::string, uint64_t>>& report) const {
-    for (const Buffer* buffer : {&triangles_, &bvhPairs_, &materials_, &emitters_, &lights_,
-                                 &environment_, &environmentAlias_})
+    for (const Buffer* buffer : {&triangles_, &bvhPairs_, &materials_, &emitters_, &lightTree_,
+                                 &lightTreeTrails_, &lights_, &environment_, &environmentAlias_})
         if (*buffer)
             report.emplace_back(buffer->name(), buffer->size());
     surface_.appendMemoryReport(report);

@@ -8,6 +8,7 @@
 #include "gpu/compute_program.h"
 #include "scene/bvh_builder.h"
 #include "scene/light_table.h"
+#include "scene/light_tree.h"
 #include "render/shader_variant.h"
 #include "render/surface_buffers.h"
 #include "scene/scene.h"
@@ -23,6 +24,7 @@ struct PreparedScene {
     std::vector<BvhPair> bvhPairs; // what traversal reads
     std::vector<Material> materials;
     LightTable lights;
+    LightTree lightTree; // over the lights that have a place, when there are two or more
     std::vector<PunctualLight> punctualLights; // spheres first, as the light table orders them
     Environment environment;
     SurfaceData surface; // per-triangle arrays in BVH order, textures
@@ -55,6 +57,8 @@ private:
     Buffer bvhPairs_;
     Buffer materials_;
     Buffer emitters_; // empty handle when the scene has no emitters
+    Buffer lightTree_;       // nodes and each emitter's trail, with --light-selection tree
+    Buffer lightTreeTrails_;
     Buffer lights_;   // punctual and sphere lights, if any
     Buffer environment_;
     Buffer environmentAlias_;

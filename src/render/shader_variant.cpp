@@ -19,6 +19,13 @@ ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& se
     variant.sphereLights = lights.sphereLights > 0;
     variant.deltaLights = variant.nextEventEstimation && lights.deltaLights > 0;
     variant.environment = lights.environmentEmitter != WF_NO_EMITTER;
+    variant.lightSelection = settings.lightSelection;
+    if (variant.lightSelection == LightSelection::Auto)
+        variant.lightSelection = scene.lightTree.lights >= kLightTreeMinLights
+                                     ? LightSelection::Tree
+                                     : LightSelection::Power;
+    if (variant.lightSelection == LightSelection::Tree && scene.lightTree.nodes.empty())
+        variant.lightSelection = LightSelection::Power; // only lights beside a tree
     variant.triangleSolidAngle = settings.triangleSolidAngle;
     variant.sphereSolidAngle = settings.sphereSolidAngle;
     // Texture factors multiply these, so zero factors stay zero whatever the textures hold.
@@ -47,6 +54,7 @@ ShaderDefines ShaderVariant::defines() const {
             {"WF_HAS_DELTA_LIGHTS", flag(deltaLights)},
             {"WF_HAS_LIGHTS", flag(lightsBuffer())},
             {"WF_HAS_ENVIRONMENT", flag(environment)},
+            {"WF_LIGHT_TREE", flag(lightTree())},
             {"WF_TRIANGLE_SOLID_ANGLE", flag(triangleSolidAngle)},
             {"WF_SPHERE_SOLID_ANGLE", flag(sphereSolidAngle)},
             {"WF_BSDF_DIFFUSE_ONLY", flag(diffuseOnly)},
@@ -84,6 +92,25 @@ const char* lightSamplingName(LightSampling mode) {
     case LightSampling::Bsdf: return "bsdf";
     case LightSampling::Nee: return "nee";
     default: return "mis";
+    }
+}
+
+LightSelection parseLightSelection(const std::string& name) {
+    if (name == "uniform")
+        return LightSelection::Uniform;
+    if (name == "power")
+        return LightSelection::Power;
+    if (name == "tree")
+        return LightSelection::Tree;
+    throw UsageError("--light-selection expects uniform, power or tree, got '" + name + "'");
+}
+
+const char* lightSelectionName(LightSelection selection) {
+    switch (selection) {
+    case LightSelection::Uniform: return "uniform";
+    case LightSelection::Power: return "power";
+    case LightSelection::Tree: return "tree";
+    default: return "auto";
     }
 }
 

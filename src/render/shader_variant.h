@@ -14,6 +14,12 @@ struct RenderSettings;
 
 enum class LightSampling { Bsdf = 0, Nee = 1, Mis = 2 };
 
+// How next-event estimation picks a light (--light-selection): uniformly, by power from one
+// alias table, or by the light tree's importance at the shading point. Auto: the tree where
+// the scene has kLightTreeMinLights or more lights for it, else power.
+enum class LightSelection { Auto, Uniform, Power, Tree };
+constexpr uint32_t kLightTreeMinLights = 8;
+
 struct ShaderVariant {
     LightSampling lightSampling = LightSampling::Mis;
     bool nextEventEstimation = false; // a light table to sample, and shadow rays
@@ -21,6 +27,7 @@ struct ShaderVariant {
     bool sphereLights = false;        // intersected by every ray, whatever the estimator
     bool deltaLights = false;         // point, spot, directional: reachable by NEE only
     bool environment = false;
+    LightSelection lightSelection = LightSelection::Power; // never Auto: chooseVariant decides
     bool triangleSolidAngle = true;
     bool sphereSolidAngle = true;
     bool diffuseOnly = false;         // every material Lambertian: no specular layer code
@@ -31,6 +38,9 @@ struct ShaderVariant {
     uint32_t registerStack = 0;       // WF_BVH_REGISTER_STACK: 8 or 16 entries in vectors, or 0
 
     bool lightsBuffer() const { return sphereLights || deltaLights; }
+    bool lightTree() const {
+        return nextEventEstimation && lightSelection == LightSelection::Tree;
+    }
     ShaderDefines defines() const;
     std::string describe() const;
 };
@@ -39,5 +49,7 @@ ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& se
 
 LightSampling parseLightSampling(const std::string& name); // UsageError if unknown
 const char* lightSamplingName(LightSampling mode);
+LightSelection parseLightSelection(const std::string& name); // UsageError if unknown
+const char* lightSelectionName(LightSelection selection);
 
 } // namespace wf

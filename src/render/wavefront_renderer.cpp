@@ -118,7 +118,8 @@ void WavefrontRenderer::uploadParams() {
     params.height = settings_.height;
     params.pixelCount = pixelCount_;
     params.rrDepth = settings_.rrDepth;
-    params.emitterCount = static_cast<uint32_t>(scene_.lights.emitters.size());
+    params.emitterCount = static_cast<uint32_t>(scene_.lights.emitters.size()) +
+                          (variant_.lightTree() ? 1u : 0u); // the tree's own slot
     params.pathCapacity = pathCapacity_;
     params.sphereLightCount = scene_.lights.sphereLights;
     params.environmentEmitter = scene_.lights.environmentEmitter;

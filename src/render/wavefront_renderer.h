@@ -53,6 +53,7 @@ struct RenderSettings {
     // passes: the baseline `wavefront bench` compares against. Same samples, same image.
     bool megakernel = false;
     LightSampling lightSampling = LightSampling::Mis;
+    LightSelection lightSelection = LightSelection::Auto; // --light-selection
     bool triangleSolidAngle = true; // --triangle-sampling solid-angle (else area)
     bool sphereSolidAngle = true;   // --sphere-sampling solid-angle (else area)
     float minThroughput = 0.0f;     // --min-throughput: biased termination, 0 = off

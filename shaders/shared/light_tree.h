@@ -1,0 +1,133 @@
+// The light tree (Conty Estevez and Kulla 2018, as pbrt-v4's BVHLightSampler): a binary BVH
+// over the emitters that have a place (emissive triangles, sphere, point and spot lights),
+// each node bounding its lights' positions, power and emission directions. Next-event
+// estimation walks it from the root, choosing a child in proportion to an importance that
+// bounds power x cos(at the light) / distance^2 from the shading point, so the lights near and
+// facing a point are chosen most. The pmf of a given light at a point is the product of the
+// choices on its path, which its trail (bit d: second child at depth d) replays, so a BSDF ray
+// that hits a light gets the same pmf its sampling would have had.
+// Shared by the shade pass (GLSL) and the CPU tests and builder (src/scene/light_tree.cpp).
+//
+// GLSL includers define WF_LIGHT_TREE_NODE(i), an expression yielding LightTreeNode i; in C++
+// the traversal functions are members of LightTreeTraversal, which reads a vector.
+#ifndef WF_LIGHT_TREE_H
+#define WF_LIGHT_TREE_H
+
+#include "glsl_cpp.h"
+#include "light_types.h"
+
+#ifdef __cplusplus
+#include <vector>
+namespace wf::gpu_types {
+using namespace glm;
+#endif
+
+WF_INLINE float lightTreeSafeSqrt(float x) { return sqrt(max(x, 0.0f)); }
+
+// An upper bound of power x cos(at the light) / distance^2 over the node's lights as seen from
+// p (the receiver's own cosine is left out, so a bound never needs the shading normal). Zero
+// only where no light of the node can send p anything: the walk stays unbiased.
+WF_INLINE float lightTreeImportance(LightTreeNode node, vec3 p) {
+    if (!(node.power > 0.0f))
+        return 0.0f;
+    vec3 center = 0.5f * (node.lo + node.hi);
+    vec3 toPoint = p - center;
+    float distance2 = dot(toPoint, toPoint);
+    float radius2 = 0.25f * dot(node.hi - node.lo, node.hi - node.lo);
+    // Inside the box's bounding sphere every direction is possible; the distance is taken as
+    // the sphere's radius there, so a point on a light does not get an infinite weight.
+    if (distance2 <= radius2)
+        return node.power / max(radius2, 1e-30f);
+    float cosThetaW = dot(node.axis, toPoint * inversesqrt(distance2));
+    if (node.twoSided != 0u)
+        cosThetaW = abs(cosThetaW);
+    float sinThetaW = lightTreeSafeSqrt(1.0f - cosThetaW * cosThetaW);
+    // The angle between p and the cone, less the cone's half-angle and the half-angle the box
+    // subtends from p, clamped at zero: cos(max(0, thetaW - thetaO - thetaB)).
+    float sinThetaO = lightTreeSafeSqrt(1.0f - node.cosThetaO * node.cosThetaO);
+    float cosThetaX = 1.0f, sinThetaX = 0.0f;
+    if (cosThetaW < node.cosThetaO) {
+        cosThetaX = cosThetaW * node.cosThetaO + sinThetaW * sinThetaO;
+        sinThetaX = sinThetaW * node.cosThetaO - cosThetaW * sinThetaO;
+    }
+    float sin2ThetaB = radius2 / distance2;
+    float cosThetaB = lightTreeSafeSqrt(1.0f - sin2ThetaB);
+    float cosThetaP = 1.0f;
+    if (cosThetaX < cosThetaB)
+        cosThetaP = cosThetaX * cosThetaB + sinThetaX * sqrt(sin2ThetaB);
+    if (cosThetaP < node.cosThetaE)
+        return 0.0f;
+    return node.power * max(cosThetaP, 0.0f) / distance2;
+}
+
+// Probability of the first child at a node whose children weigh i0 and i1; -1 when both are
+// 0 (no light below reaches the point).
+WF_INLINE float lightTreeFirstChildProbability(float i0, float i1) {
+    return i0 + i1 > 0.0f ? i0 / (i0 + i1) : -1.0f;
+}
+
+#ifdef __cplusplus
+struct LightTreeTraversal {
+    const std::vector<LightTreeNode>* nodes = nullptr;
+#define WF_LIGHT_TREE_NODE(i) (*nodes)[i]
+#endif
+
+// Walks from the root to a leaf for the shading point p, reusing u after each choice. Returns
+// the leaf's emitter and its pmf, or WF_LIGHT_TREE_LEAF with pmf 0 when no light reaches p.
+WF_INLINE uint lightTreeSample(vec3 p, float u, WF_OUT(float) pmf) {
+    pmf = 1.0f;
+    uint node = 0u;
+    for (uint depth = 0u; depth < WF_LIGHT_TREE_MAX_DEPTH; ++depth) {
+        uint child = WF_LIGHT_TREE_NODE(node).child;
+        if ((child & WF_LIGHT_TREE_LEAF) != 0u)
+            return child & ~WF_LIGHT_TREE_LEAF;
+        float first = lightTreeFirstChildProbability(
+            lightTreeImportance(WF_LIGHT_TREE_NODE(node + 1u), p),
+            lightTreeImportance(WF_LIGHT_TREE_NODE(child), p));
+        if (first < 0.0f)
+            break;
+        if (u < first) {
+            pmf *= first;
+            u = min(u / first, 0.99999994f);
+            node = node + 1u;
+        } else {
+            float second = 1.0f - first;
+            if (!(second > 0.0f))
+                break;
+            pmf *= second;
+            u = min((u - first) / second, 0.99999994f);
+            node = child;
+        }
+    }
+    pmf = 0.0f;
+    return WF_LIGHT_TREE_LEAF;
+}
+
+// The pmf lightTreeSample gives the light whose trail is `trail` (x: depths 0-31, y: 32-63).
+WF_INLINE float lightTreePmf(vec3 p, uvec2 trail) {
+    float pmf = 1.0f;
+    uint node = 0u;
+    for (uint depth = 0u; depth < WF_LIGHT_TREE_MAX_DEPTH; ++depth) {
+        uint child = WF_LIGHT_TREE_NODE(node).child;
+        if ((child & WF_LIGHT_TREE_LEAF) != 0u)
+            return pmf;
+        float first = lightTreeFirstChildProbability(
+            lightTreeImportance(WF_LIGHT_TREE_NODE(node + 1u), p),
+            lightTreeImportance(WF_LIGHT_TREE_NODE(child), p));
+        if (first < 0.0f)
+            return 0.0f;
+        uint bits = depth < 32u ? trail.x : trail.y;
+        bool second = ((bits >> (depth & 31u)) & 1u) != 0u;
+        pmf *= second ? 1.0f - first : first;
+        node = second ? child : node + 1u;
+    }
+    return 0.0f;
+}
+
+#ifdef __cplusplus
+#undef WF_LIGHT_TREE_NODE
+}; // struct LightTreeTraversal
+} // namespace wf::gpu_types
+#endif
+
+#endif

@@ -1,0 +1,268 @@
+#include "scene/light_tree.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace wf {
+namespace {
+
+// A light's or a node's bounds, in double while building.
+struct LightBounds {
+    glm::dvec3 lo{1e300}, hi{-1e300};
+    double power = 0.0;
+    glm::dvec3 axis{0.0, 0.0, 1.0};
+    double cosThetaO = 1.0;  // 1 with power 0: empty
+    double cosThetaE = 1.0;
+    bool twoSided = false;
+    glm::dvec3 centroid() const { return 0.5 * (lo + hi); }
+};
+
+double angle(double cosine) { return std::acos(std::clamp(cosine, -1.0, 1.0)); }
+
+// The smallest cone around both (pbrt-v4's DirectionCone union).
+void unionCones(const LightBounds& a, const LightBounds& b, glm::dvec3& axis, double& cosTheta) {
+    if (a.cosThetaO <= -1.0 || b.cosThetaO <= -1.0) {
+        axis = a.axis;
+        cosTheta = -1.0;
+        return;
+    }
+    const double thetaA = angle(a.cosThetaO), thetaB = angle(b.cosThetaO);
+    const double thetaD = angle(glm::dot(a.axis, b.axis));
+    if (std::min(thetaD + thetaB, M_PI) <= thetaA) {
+        axis = a.axis;
+        cosTheta = a.cosThetaO;
+        return;
+    }
+    if (std::min(thetaD + thetaA, M_PI) <= thetaB) {
+        axis = b.axis;
+        cosTheta = b.cosThetaO;
+        return;
+    }
+    const double thetaO = 0.5 * (thetaA + thetaD + thetaB);
+    const glm::dvec3 w = glm::cross(a.axis, b.axis);
+    if (thetaO >= M_PI || glm::length(w) < 1e-12) {
+        axis = a.axis;
+        cosTheta = -1.0;
+        return;
+    }
+    // Turn a's axis towards b's by thetaO - thetaA (Rodrigues, about an axis normal to it).
+    const double turn = thetaO - thetaA;
+    const glm::dvec3 k = glm::normalize(w);
+    axis = glm::normalize(a.axis * std::cos(turn) + glm::cross(k, a.axis) * std::sin(turn));
+    cosTheta = std::cos(thetaO);
+}
+
+LightBounds merge(const LightBounds& a, const LightBounds& b) {
+    if (!(a.power > 0.0))
+        return b;
+    if (!(b.power > 0.0))
+        return a;
+    LightBounds m;
+    m.lo = glm::min(a.lo, b.lo);
+    m.hi = glm::max(a.hi, b.hi);
+    m.power = a.power + b.power;
+    unionCones(a, b, m.axis, m.cosThetaO);
+    m.cosThetaE = std::min(a.cosThetaE, b.cosThetaE);
+    m.twoSided = a.twoSided || b.twoSided;
+    return m;
+}
+
+// pbrt-v4's SAOH: power x the solid-angle measure of the emission cones x the box's area,
+// with the box's aspect along the split axis (Kr) against long thin children.
+double splitCost(const LightBounds& b, double kr) {
+    if (!(b.power > 0.0))
+        return 0.0;
+    const double thetaO = angle(b.cosThetaO), thetaE = angle(b.cosThetaE);
+    const double thetaW = std::min(thetaO + thetaE, M_PI);
+    const double sinThetaO = std::sqrt(std::max(0.0, 1.0 - b.cosThetaO * b.cosThetaO));
+    const double measure = 2.0 * M_PI * (1.0 - b.cosThetaO) +
+                           M_PI / 2.0 *
+                               (2.0 * thetaW * sinThetaO - std::cos(thetaO - 2.0 * thetaW) -
+                                2.0 * thetaO * sinThetaO + b.cosThetaO);
+    const glm::dvec3 d = b.hi - b.lo;
+    const double area = 2.0 * (d.x * d.y + d.y * d.z + d.z * d.x);
+    return b.power * measure * kr * area;
+}
+
+struct Item {
+    LightBounds bounds;
+    uint32_t emitter;
+};
+
+class Builder {
+public:
+    Builder(LightTree& tree) : tree_(tree) {}
+
+    // Builds the subtree of items[begin, end) at tree_.nodes[index]; returns its bounds.
+    LightBounds build(std::vector<Item>& items, size_t begin, size_t end, uint32_t depth,
+                      glm::uvec2 trail) {
+        const uint32_t index = static_cast<uint32_t>(tree_.nodes.size());
+        tree_.nodes.emplace_back();
+        tree_.depth = std::max(tree_.depth, depth);
+        if (end - begin == 1) {
+            const Item& item = items[begin];
+            tree_.trails[item.emitter] = glm::uvec4(trail, 1u, 0u);
+            store(index, item.bounds, WF_LIGHT_TREE_LEAF | item.emitter);
+            return item.bounds;
+        }
+        const size_t middle = split(items, begin, end, depth);
+        const LightBounds first = build(items, begin, middle, depth + 1, trail);
+        glm::uvec2 secondTrail = trail;
+        (depth < 32 ? secondTrail.x : secondTrail.y) |= 1u << (depth & 31u);
+        const uint32_t second = static_cast<uint32_t>(tree_.nodes.size());
+        const LightBounds other = build(items, middle, end, depth + 1, secondTrail);
+        const LightBounds bounds = merge(first, other);
+        store(index, bounds, second);
+        return bounds;
+    }
+
+private:
+    void store(uint32_t index, const LightBounds& b, uint32_t child) {
+        gpu_types::LightTreeNode& node = tree_.nodes[index];
+        node.lo = glm::vec3(b.lo);
+        node.hi = glm::vec3(b.hi);
+        node.power = static_cast<float>(b.power);
+        node.child = child;
+        node.axis = glm::vec3(b.axis);
+        node.cosThetaO = static_cast<float>(b.cosThetaO);
+        node.cosThetaE = static_cast<float>(b.cosThetaE);
+        node.twoSided = b.twoSided ? 1u : 0u;
+    }
+
+    // Partitions items[begin, end) at the cheapest of 12 buckets per axis of the centroids'
+    // box; deep in the tree, or where no axis separates them, at the median of the longest
+    // axis, so that no trail outgrows its 64 bits.
+    size_t split(std::vector<Item>& items, size_t begin, size_t end, uint32_t depth) {
+        glm::dvec3 lo(1e300), hi(-1e300);
+        LightBounds all;
+        for (size_t i = begin; i < end; ++i) {
+            lo = glm::min(lo, items[i].bounds.centroid());
+            hi = glm::max(hi, items[i].bounds.centroid());
+            all = merge(all, items[i].bounds);
+        }
+        const glm::dvec3 extent = hi - lo, diagonal = all.hi - all.lo;
+        const int longest = extent.x >= extent.y && extent.x >= extent.z ? 0
+                            : extent.y >= extent.z                       ? 1
+                                                                         : 2;
+        auto bucketOf = [&](const Item& item, int axis) {
+            const double t = (item.bounds.centroid()[axis] - lo[axis]) / extent[axis];
+            return std::min(kBuckets - 1, static_cast<int>(t * kBuckets));
+        };
+        double bestCost = 1e300;
+        int bestAxis = -1, bestBucket = 0;
+        for (int axis = 0; axis < 3 && depth < kSaohDepth; ++axis) {
+            if (!(extent[axis] > 0.0))
+                continue;
+            LightBounds buckets[kBuckets];
+            for (size_t i = begin; i < end; ++i)
+                buckets[bucketOf(items[i], axis)] =
+                    merge(buckets[bucketOf(items[i], axis)], items[i].bounds);
+            const double maxDiagonal = std::max({diagonal.x, diagonal.y, diagonal.z});
+            const double kr = diagonal[axis] > 0.0 ? maxDiagonal / diagonal[axis] : 1.0;
+            for (int s = 0; s + 1 < kBuckets; ++s) {
+                LightBounds below, above;
+                for (int b = 0; b <= s; ++b)
+                    below = merge(below, buckets[b]);
+                for (int b = s + 1; b < kBuckets; ++b)
+                    above = merge(above, buckets[b]);
+                if (!(below.power > 0.0) || !(above.power > 0.0))
+                    continue;
+                const double cost = splitCost(below, kr) + splitCost(above, kr);
+                if (cost < bestCost) {
+                    bestCost = cost;
+                    bestAxis = axis;
+                    bestBucket = s;
+                }
+            }
+        }
+        if (bestAxis >= 0) {
+            auto mid = std::partition(items.begin() + begin, items.begin() + end,
+                                      [&](const Item& item) {
+                                          return bucketOf(item, bestAxis) <= bestBucket;
+                                      });
+            return static_cast<size_t>(mid - items.begin());
+        }
+        const size_t middle = begin + (end - begin) / 2;
+        std::nth_element(items.begin() + begin, items.begin() + middle, items.begin() + end,
+                         [&](const Item& a, const Item& b) {
+                             return a.bounds.centroid()[longest] < b.bounds.centroid()[longest];
+                         });
+        return middle;
+    }
+
+    static constexpr int kBuckets = 12;
+    // Past this depth splits are medians: 36 + log2(2^24 lights) levels stay within 64.
+    static constexpr uint32_t kSaohDepth = 36;
+    LightTree& tree_;
+};
+
+LightBounds boundsOf(uint32_t source, double power, const std::vector<Triangle>& triangles,
+                     const std::vector<Material>& materials,
+                     const std::vector<PunctualLight>& lights) {
+    LightBounds b;
+    b.power = power;
+    const uint32_t index = source & WF_EMITTER_INDEX_MASK;
+    if ((source & WF_EMITTER_KIND_MASK) == WF_EMITTER_TRIANGLE) {
+        const Triangle& tri = triangles[index];
+        const glm::dvec3 p0(tri.p0), p1(tri.p1), p2(tri.p2);
+        b.lo = glm::min(p0, glm::min(p1, p2));
+        b.hi = glm::max(p0, glm::max(p1, p2));
+        b.axis = glm::normalize(glm::cross(p1 - p0, p2 - p0));
+        b.cosThetaO = 1.0; // one normal, emitting into its hemisphere
+        b.cosThetaE = 0.0;
+        b.twoSided = (materials[tri.material].flags & WF_MATERIAL_DOUBLE_SIDED) != 0u;
+        return b;
+    }
+    const PunctualLight& light = lights[index];
+    const glm::dvec3 position(light.position);
+    const double radius = light.type == WF_LIGHT_SPHERE ? light.radius : 0.0;
+    b.lo = position - glm::dvec3(radius);
+    b.hi = position + glm::dvec3(radius);
+    if (light.type == WF_LIGHT_SPOT) { // light leaves the point only inside the outer cone
+        b.axis = glm::normalize(glm::dvec3(light.direction));
+        b.cosThetaO = light.cosOuter;
+        b.cosThetaE = 1.0;
+    } else { // every direction
+        b.cosThetaO = -1.0;
+        b.cosThetaE = 0.0;
+    }
+    return b;
+}
+
+} // namespace
+
+bool inLightTree(uint32_t source, const std::vector<PunctualLight>& lights) {
+    const uint32_t kind = source & WF_EMITTER_KIND_MASK;
+    if (kind == WF_EMITTER_TRIANGLE)
+        return true;
+    return kind == WF_EMITTER_LIGHT &&
+           lights[source & WF_EMITTER_INDEX_MASK].type != WF_LIGHT_DIRECTIONAL;
+}
+
+LightTree buildLightTree(const LightTable& table, const std::vector<Triangle>& triangles,
+                         const std::vector<Material>& materials,
+                         const std::vector<PunctualLight>& lights) {
+    const auto start = std::chrono::steady_clock::now();
+    LightTree tree;
+    tree.trails.assign(table.emitters.size(), glm::uvec4(0u));
+    std::vector<Item> items;
+    for (uint32_t e = 0; e < table.emitters.size(); ++e) {
+        const uint32_t source = table.emitters[e].source;
+        if (!inLightTree(source, lights))
+            continue;
+        const double power = double(table.emitters[e].pmf) * table.totalPower;
+        items.push_back({boundsOf(source, power, triangles, materials, lights), e});
+        tree.power += power;
+    }
+    tree.lights = static_cast<uint32_t>(items.size());
+    if (!items.empty()) {
+        tree.nodes.reserve(2 * items.size() - 1);
+        Builder(tree).build(items, 0, items.size(), 0, glm::uvec2(0u));
+    }
+    tree.buildSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return tree;
+}
+
+} // namespace wf
