@@ -12,6 +12,9 @@ light transport). Each stays a small, self-contained glTF; run `python3 make_fai
   does not.
 - glass_caustic.gltf: a glass ball on a floor under a small sphere light. The caustic is found
   only by paths that bounce through the glass: shadow rays cannot pass a Dirac interface.
+- many_lamps.gltf: 1,024 small lamps (6 cm octahedra, 0.3-0.7 m above a floor, emission over
+  400:1) among a few blocks. Choosing a light by power sends most shadow rays to bright lamps
+  metres away; the light tree picks the lamps near and facing each point.
 """
 
 import math
@@ -185,11 +188,64 @@ def glass_caustic():
     return g
 
 
+def octahedron(center, radius):
+    """Eight triangles, counter-clockwise seen from outside."""
+    cx, cy, cz = center
+    px, nx = (cx + radius, cy, cz), (cx - radius, cy, cz)
+    py, ny = (cx, cy + radius, cz), (cx, cy - radius, cz)
+    pz, nz = (cx, cy, cz + radius), (cx, cy, cz - radius)
+    return [(px, py, pz), (pz, py, nx), (nx, py, nz), (nz, py, px),
+            (pz, ny, px), (nx, ny, pz), (nz, ny, nx), (px, ny, nz)]
+
+
+def box(lo, hi):
+    (x0, y0, z0), (x1, y1, z1) = lo, hi
+    return [quad((x0, y1, z0), (x0, y1, z1), (x1, y1, z1), (x1, y1, z0), (0, 1, 0)),
+            quad((x0, y0, z1), (x1, y0, z1), (x1, y1, z1), (x0, y1, z1), (0, 0, 1)),
+            quad((x1, y0, z0), (x0, y0, z0), (x0, y1, z0), (x1, y1, z0), (0, 0, -1)),
+            quad((x1, y0, z1), (x1, y0, z0), (x1, y1, z0), (x1, y1, z1), (1, 0, 0)),
+            quad((x0, y0, z0), (x0, y0, z1), (x0, y1, z1), (x0, y1, z0), (-1, 0, 0))]
+
+
+def many_lamps():
+    g = GltfWriter()
+    white = material(g, "white", (0.8, 0.8, 0.8), lambert=True)
+    grey = material(g, "grey", (0.5, 0.5, 0.5), lambert=True)
+    g.node(name="floor", mesh=g.mesh("floor", [g.primitive(floor(8.0), white)]))
+    blocks = [((-1.6, 0.0, -0.9), (-0.8, 0.9, -0.1)), ((0.5, 0.0, 0.6), (1.3, 0.5, 1.4)),
+              ((1.2, 0.0, -2.0), (2.0, 1.2, -1.2))]
+    g.node(name="blocks", mesh=g.mesh("blocks", [g.primitive(
+        [q for lo, hi in blocks for q in box(lo, hi)], grey)]))
+    # Eight emission levels spread geometrically over 400:1, assigned by a fixed LCG.
+    levels = [0.05 * 400.0 ** (k / 7.0) for k in range(8)]
+    lamps = [[] for _ in levels]
+    state = 12345
+    def rand():
+        nonlocal state
+        state = (1103515245 * state + 12345) % 2 ** 31
+        return state / 2 ** 31
+    for i in range(32):
+        for j in range(32):
+            x, z = -3.1 + 0.2 * i, -3.1 + 0.2 * j
+            height, level = 0.3 + 0.4 * rand(), int(rand() * len(levels))
+            if any(lo[0] - 0.1 < x < hi[0] + 0.1 and lo[2] - 0.1 < z < hi[2] + 0.1
+                   for lo, hi in blocks):
+                height += 1.0  # over the block
+            lamps[level].append(octahedron((x, height, z), 0.03))
+    for k, level in enumerate(levels):
+        lamp = material(g, "lamp %d" % k, (0.0, 0.0, 0.0), lambert=True,
+                        emission=(level, level * 0.9, level * 0.75))
+        g.node(name="lamps %d" % k, mesh=g.mesh("lamps %d" % k, [triangle_primitive(
+            g, [t for octa in lamps[k] for t in octa], lamp)]))
+    camera(g, (0.0, 3.5, 5.0), (0.0, 0.0, -0.3), 0.8)
+    return g
+
+
 if __name__ == "__main__":
     here = os.path.dirname(os.path.abspath(__file__))
     for name, build in (("tiny_light", tiny_light), ("veach_mis", veach_mis),
                         ("sphere_near_floor", sphere_near_floor),
-                        ("glass_caustic", glass_caustic)):
+                        ("glass_caustic", glass_caustic), ("many_lamps", many_lamps)):
         doc = build()
         doc.doc["asset"]["generator"] = "scenes/make_failure_scenes.py"
         doc.write(os.path.join(here, name + ".gltf"))

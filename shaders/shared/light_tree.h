@@ -60,10 +60,15 @@ WF_INLINE float lightTreeImportance(LightTreeNode node, vec3 p) {
     return node.power * max(cosThetaP, 0.0f) / distance2;
 }
 
-// Probability of the first child at a node whose children weigh i0 and i1; -1 when both are
-// 0 (no light below reaches the point).
-WF_INLINE float lightTreeFirstChildProbability(float i0, float i1) {
-    return i0 + i1 > 0.0f ? i0 / (i0 + i1) : -1.0f;
+// Probability of the first child at a node. By importance at p; where both children's bounds
+// rule p out (each is tighter than their parent's, which did not), by power, so that every
+// walk ends at a light and the pmf over the lights sums to 1.
+WF_INLINE float lightTreeFirstChild(LightTreeNode first, LightTreeNode second, vec3 p) {
+    float i0 = lightTreeImportance(first, p);
+    float i1 = lightTreeImportance(second, p);
+    if (i0 + i1 > 0.0f)
+        return i0 / (i0 + i1);
+    return first.power / (first.power + second.power);
 }
 
 #ifdef __cplusplus
@@ -73,7 +78,8 @@ struct LightTreeTraversal {
 #endif
 
 // Walks from the root to a leaf for the shading point p, reusing u after each choice. Returns
-// the leaf's emitter and its pmf, or WF_LIGHT_TREE_LEAF with pmf 0 when no light reaches p.
+// the leaf's emitter and its pmf (WF_LIGHT_TREE_LEAF with pmf 0 only past the depth limit,
+// which the builder keeps every leaf within).
 WF_INLINE uint lightTreeSample(vec3 p, float u, WF_OUT(float) pmf) {
     pmf = 1.0f;
     uint node = 0u;
@@ -81,11 +87,8 @@ WF_INLINE uint lightTreeSample(vec3 p, float u, WF_OUT(float) pmf) {
         uint child = WF_LIGHT_TREE_NODE(node).child;
         if ((child & WF_LIGHT_TREE_LEAF) != 0u)
             return child & ~WF_LIGHT_TREE_LEAF;
-        float first = lightTreeFirstChildProbability(
-            lightTreeImportance(WF_LIGHT_TREE_NODE(node + 1u), p),
-            lightTreeImportance(WF_LIGHT_TREE_NODE(child), p));
-        if (first < 0.0f)
-            break;
+        float first = lightTreeFirstChild(WF_LIGHT_TREE_NODE(node + 1u),
+                                          WF_LIGHT_TREE_NODE(child), p);
         if (u < first) {
             pmf *= first;
             u = min(u / first, 0.99999994f);
@@ -111,11 +114,8 @@ WF_INLINE float lightTreePmf(vec3 p, uvec2 trail) {
         uint child = WF_LIGHT_TREE_NODE(node).child;
         if ((child & WF_LIGHT_TREE_LEAF) != 0u)
             return pmf;
-        float first = lightTreeFirstChildProbability(
-            lightTreeImportance(WF_LIGHT_TREE_NODE(node + 1u), p),
-            lightTreeImportance(WF_LIGHT_TREE_NODE(child), p));
-        if (first < 0.0f)
-            return 0.0f;
+        float first = lightTreeFirstChild(WF_LIGHT_TREE_NODE(node + 1u),
+                                          WF_LIGHT_TREE_NODE(child), p);
         uint bits = depth < 32u ? trail.x : trail.y;
         bool second = ((bits >> (depth & 31u)) & 1u) != 0u;
         pmf *= second ? 1.0f - first : first;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
 
 namespace wf::test {
 
@@ -30,20 +29,22 @@ double polygonIrradiance(glm::dvec3 p, glm::dvec3 n, const glm::dvec3* vertices,
         glm::cross(vertices[1] - vertices[0], vertices[count - 1] - vertices[0]);
     if (glm::dot(front, p - vertices[0]) <= 0.0)
         return 0.0; // behind a one-sided emitter, or in its plane
-    // Sutherland-Hodgman against p's horizon plane, on vectors from p.
-    std::vector<glm::dvec3> clipped;
+    // Sutherland-Hodgman against p's horizon plane, on vectors from p: a convex polygon keeps
+    // at most one vertex more.
+    glm::dvec3 clipped[kMaxPolygonVertices + 1];
+    int kept = 0;
     for (int i = 0; i < count; ++i) {
         const glm::dvec3 a = vertices[i] - p, b = vertices[(i + 1) % count] - p;
         const double ha = glm::dot(n, a), hb = glm::dot(n, b);
         if (ha >= 0.0)
-            clipped.push_back(a);
+            clipped[kept++] = a;
         if ((ha >= 0.0) != (hb >= 0.0))
-            clipped.push_back(a + (b - a) * (ha / (ha - hb)));
+            clipped[kept++] = a + (b - a) * (ha / (ha - hb));
     }
     double sum = 0.0;
-    for (size_t i = 0; i < clipped.size(); ++i) {
+    for (int i = 0; i < kept; ++i) {
         const glm::dvec3 a = glm::normalize(clipped[i]);
-        const glm::dvec3 b = glm::normalize(clipped[(i + 1) % clipped.size()]);
+        const glm::dvec3 b = glm::normalize(clipped[(i + 1) % kept]);
         const glm::dvec3 c = glm::cross(a, b);
         const double sinAngle = glm::length(c);
         if (sinAngle > 0.0)

@@ -12,7 +12,9 @@ namespace wf::test {
 double sphereIrradiance(glm::dvec3 p, glm::dvec3 n, glm::dvec3 center, double radius,
                         double radiance);
 
-// A planar convex polygon of radiance L emitting from its front face (counter-clockwise
+constexpr int kMaxPolygonVertices = 8;
+
+// A planar convex polygon (at most kMaxPolygonVertices) of radiance L emitting from its front face (counter-clockwise
 // vertices seen from the front), clipped by p's horizon: Lambert's formula, half the sum over
 // the edges of the angle they subtend times the normal's share of their plane.
 double polygonIrradiance(glm::dvec3 p, glm::dvec3 n, const glm::dvec3* vertices, int count,

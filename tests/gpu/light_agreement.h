@@ -12,6 +12,7 @@ struct AgreementMethod {
     const char* name;
     LightSampling lightSampling;
     bool solidAngle; // triangle and sphere sampling both: solid angle (else area)
+    LightSelection selection = LightSelection::Auto;
 };
 
 struct AgreementOptions {
@@ -25,7 +26,8 @@ struct AgreementOptions {
     double minLightHits = 0.0;
 };
 
-// Renders `rig` at max depth 2 with `method` over independent seeds and expects every block's
+// Renders `rig` at max depth 2 with `method` over independent seeds (`name` identifies the rig:
+// its closed-form image is computed once) and expects every block's
 // mean to lie within 5 standard errors (from the spread over seeds, pixel by pixel) plus 0.3%
 // of the closed form. On failure writes NAME_METHOD_{actual,expected,ratio}.exr into the test
 // output folder and reports a map of the blocks' ratios.

@@ -18,6 +18,14 @@ const AgreementMethod kLightMethods[] = {{"nee-area", LightSampling::Nee, false}
                                          {"mis-area", LightSampling::Mis, false},
                                          {"mis-solid-angle", LightSampling::Mis, true}};
 
+// The lights chosen uniformly and by the light tree (the default is by power below 8 lights).
+const AgreementMethod kSelectionMethods[] = {
+    {"nee-uniform", LightSampling::Nee, true, LightSelection::Uniform},
+    {"nee-tree", LightSampling::Nee, true, LightSelection::Tree},
+    {"mis-uniform", LightSampling::Mis, true, LightSelection::Uniform},
+    {"mis-tree", LightSampling::Mis, true, LightSelection::Tree},
+    {"mis-area-tree", LightSampling::Mis, false, LightSelection::Tree}};
+
 // BSDF sampling is checked, at bsdfSpp samples, only in the regions where it finds the light
 // often enough for its spread over seeds to be a fair error estimate.
 void expectAllAgree(const std::string& name, const LightRig& rig, uint32_t bsdfSpp = 256) {
@@ -141,6 +149,23 @@ TEST(LightAgreement, LightsOfUnequalPower) {
     rig.emitters.push_back(ceilingEmitter({0, 2, -1}, 0.1f, 50.0f));
     rig.emitters.push_back(ceilingEmitter({0.2f, 2, 1.2f}, 0.3f, 1.0f));
     expectAllAgree("lights_of_unequal_power", rig);
+    for (const AgreementMethod& method : kSelectionMethods)
+        expectAgreement("lights_of_unequal_power", rig, method, AgreementOptions{});
+}
+
+// 64 small ceiling lamps 1.5 m up, 0.4 m apart, facing down, radiance over 100:1: the light
+// tree's case (chosen by default here), next to power and uniform choice.
+TEST(LightAgreement, GridOfLamps) {
+    LightRig rig = floorRig(lookAt({0, 2.5f, 3}, {0, 0, 0}, 0.9f));
+    for (int i = 0; i < 8; ++i)
+        for (int j = 0; j < 8; ++j)
+            rig.emitters.push_back(ceilingEmitter({-1.4f + 0.4f * i, 1.5f, -1.4f + 0.4f * j},
+                                                  0.08f, std::pow(100.0f, ((i * 5 + j * 3) % 8) / 7.0f)));
+    expectAllAgree("grid_of_lamps", rig);
+    for (const AgreementMethod& method : kSelectionMethods)
+        expectAgreement("grid_of_lamps", rig, method, AgreementOptions{});
+    const AgreementMethod power{"mis-power", LightSampling::Mis, true, LightSelection::Power};
+    expectAgreement("grid_of_lamps", rig, power, AgreementOptions{});
 }
 
 // Dirac lights (NEE only, with or without MIS) and the environment.
@@ -169,7 +194,8 @@ TEST(LightAgreement, PointSpotAndDirectional) {
     sun.direction = glm::normalize(glm::vec3(0.3f, -1.0f, 0.2f));
     sun.intensity = glm::vec3(0.5f);
     rig.lights.push_back(sun);
-    for (const AgreementMethod& method : {kLightMethods[0], kLightMethods[2]})
+    for (const AgreementMethod& method : {kLightMethods[0], kLightMethods[2], kSelectionMethods[0],
+                                          kSelectionMethods[1], kSelectionMethods[3]})
         expectAgreement("point_spot_and_directional", rig, method, AgreementOptions{});
 }
 
