@@ -12,8 +12,8 @@ light transport). Each stays a small, self-contained glTF; run `python3 make_fai
   does not.
 - glass_caustic.gltf: a glass ball on a floor under a small sphere light. The caustic is found
   only by paths that bounce through the glass: shadow rays cannot pass a Dirac interface.
-- many_lamps.gltf: 1,024 small lamps (6 cm octahedra, 0.3-0.7 m above a floor, emission over
-  400:1) among a few blocks. Choosing a light by power sends most shadow rays to bright lamps
+- many_lamps.gltf: 1,024 small lamps (6 cm octahedra shaded on top, lit below, 0.3-0.7 m above
+  a floor, emission over 400:1) among a few blocks. Choosing a light by power sends most shadow rays to bright lamps
   metres away; the light tree picks the lamps near and facing each point.
 """
 
@@ -189,7 +189,7 @@ def glass_caustic():
 
 
 def octahedron(center, radius):
-    """Eight triangles, counter-clockwise seen from outside."""
+    """Eight triangles, counter-clockwise seen from outside: the upper four, then the lower."""
     cx, cy, cz = center
     px, nx = (cx + radius, cy, cz), (cx - radius, cy, cz)
     py, ny = (cx, cy + radius, cz), (cx, cy - radius, cz)
@@ -218,7 +218,7 @@ def many_lamps():
         [q for lo, hi in blocks for q in box(lo, hi)], grey)]))
     # Eight emission levels spread geometrically over 400:1, assigned by a fixed LCG.
     levels = [0.05 * 400.0 ** (k / 7.0) for k in range(8)]
-    lamps = [[] for _ in levels]
+    lamps, shades = [[] for _ in levels], []
     state = 12345
     def rand():
         nonlocal state
@@ -231,7 +231,10 @@ def many_lamps():
             if any(lo[0] - 0.1 < x < hi[0] + 0.1 and lo[2] - 0.1 < z < hi[2] + 0.1
                    for lo, hi in blocks):
                 height += 1.0  # over the block
-            lamps[level].append(octahedron((x, height, z), 0.03))
+            faces = octahedron((x, height, z), 0.03)
+            shades += faces[:4]
+            lamps[level].append(faces[4:])
+    g.node(name="shades", mesh=g.mesh("shades", [triangle_primitive(g, shades, grey)]))
     for k, level in enumerate(levels):
         lamp = material(g, "lamp %d" % k, (0.0, 0.0, 0.0), lambert=True,
                         emission=(level, level * 0.9, level * 0.75))

@@ -45,6 +45,7 @@ void main() {
         v.sampleIndex = wavePathSample(pass, path);
         cameraRay(v.pixel, v.sampleIndex, v.origin, v.direction);
         v.previousPdf = 0.0;
+        v.previousNormal = 0.0;
         v.beta = vec3(1.0);
         v.etaScale = 1.0;
         vec3 total = vec3(0.0);

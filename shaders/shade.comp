@@ -42,7 +42,9 @@ void main() {
         vec4 origin = rayOriginAt(path);
         v.origin = origin.xyz;
         v.previousPdf = origin.w;
-        v.direction = rayDirectionAt(path).xyz;
+        vec4 direction = rayDirectionAt(path);
+        v.direction = direction.xyz;
+        v.previousNormal = direction.w;
         vec4 pathThroughput = throughputAt(path);
         v.beta = pathThroughput.rgb;
         v.etaScale = pathThroughput.w;
@@ -53,7 +55,7 @@ void main() {
             radiance[path] = wfPack(vec4(radianceAt(path).rgb + v.radiance, 0.0));
         if (v.continues) {
             rayOrigin[path] = wfPack(vec4(v.origin, v.previousPdf));
-            rayDirection[path] = wfPack(vec4(v.direction, 0.0));
+            rayDirection[path] = wfPack(vec4(v.direction, v.previousNormal));
             throughput[path] = wfPack(vec4(v.beta, v.etaScale));
         }
     }

@@ -33,7 +33,9 @@ layout(std430, binding = WF_BINDING_RAY_ORIGIN) buffer RayOriginBuffer {
     WfEntry rayOrigin[]; // xyz: origin, w: pdf of the BSDF sample that chose the ray (0: none)
 };
 layout(std430, binding = WF_BINDING_RAY_DIRECTION) buffer RayDirectionBuffer {
-    WfEntry rayDirection[]; // xyz: unit direction
+    // xyz: unit direction, w: the light tree's receiver normal at the vertex it left
+    // (encodeReceiverNormal; 0: none)
+    WfEntry rayDirection[];
 };
 layout(std430, binding = WF_BINDING_THROUGHPUT) buffer ThroughputBuffer {
     WfEntry throughput[];

@@ -24,10 +24,41 @@ using namespace glm;
 
 WF_INLINE float lightTreeSafeSqrt(float x) { return sqrt(max(x, 0.0f)); }
 
-// An upper bound of power x cos(at the light) / distance^2 over the node's lights as seen from
-// p (the receiver's own cosine is left out, so a bound never needs the shading normal). Zero
-// only where no light of the node can send p anything: the walk stays unbiased.
-WF_INLINE float lightTreeImportance(LightTreeNode node, vec3 p) {
+// The receiver's normal as one float that any store keeps exactly: 0 for none, else 1 + two
+// 12-bit octahedral coordinates (below 2^24). Sampling and the pmf of a BSDF hit both use the
+// decoded normal, so they agree bit for bit.
+WF_INLINE float encodeReceiverNormal(vec3 n) {
+    vec2 o = vec2(n.x, n.y) / (abs(n.x) + abs(n.y) + abs(n.z));
+    if (n.z < 0.0f)
+        o = (vec2(1.0f) - abs(vec2(o.y, o.x))) *
+            vec2(o.x >= 0.0f ? 1.0f : -1.0f, o.y >= 0.0f ? 1.0f : -1.0f);
+    vec2 q = clamp(floor((o * 0.5f + vec2(0.5f)) * 4095.0f + vec2(0.5f)), vec2(0.0f),
+                   vec2(4095.0f));
+    return 1.0f + q.x * 4096.0f + q.y;
+}
+
+WF_INLINE vec3 decodeReceiverNormal(float encoded) {
+    if (!(encoded > 0.0f))
+        return vec3(0.0f);
+    uint i = uint(encoded) - 1u;
+    vec2 o = vec2(float(i >> 12u), float(i & 4095u)) * (2.0f / 4095.0f) - vec2(1.0f);
+    vec3 n = vec3(o.x, o.y, 1.0f - abs(o.x) - abs(o.y));
+    float t = max(-n.z, 0.0f);
+    n.x += n.x >= 0.0f ? -t : t;
+    n.y += n.y >= 0.0f ? -t : t;
+    return normalize(n);
+}
+
+// cos(max(0, thetaA - thetaB)) from the cosines and sines of both angles.
+WF_INLINE float lightTreeCosDifference(float cosA, float sinA, float cosB, float sinB) {
+    return cosA >= cosB ? 1.0f : cosA * cosB + sinA * sinB;
+}
+
+// An upper bound of power x cos(at the light) x cos(at the receiver) / distance^2 over the
+// node's lights seen from p, whose light comes only from the side n faces (n = 0: from both,
+// as for a transmissive surface). Zero only where no light of the node can send p anything:
+// the walk stays unbiased.
+WF_INLINE float lightTreeImportance(LightTreeNode node, vec3 p, vec3 n) {
     if (!(node.power > 0.0f))
         return 0.0f;
     vec3 center = 0.5f * (node.lo + node.hi);
@@ -52,20 +83,26 @@ WF_INLINE float lightTreeImportance(LightTreeNode node, vec3 p) {
     }
     float sin2ThetaB = radius2 / distance2;
     float cosThetaB = lightTreeSafeSqrt(1.0f - sin2ThetaB);
-    float cosThetaP = 1.0f;
-    if (cosThetaX < cosThetaB)
-        cosThetaP = cosThetaX * cosThetaB + sinThetaX * sqrt(sin2ThetaB);
+    float sinThetaB = sqrt(sin2ThetaB);
+    float cosThetaP = lightTreeCosDifference(cosThetaX, sinThetaX, cosThetaB, sinThetaB);
     if (cosThetaP < node.cosThetaE)
         return 0.0f;
-    return node.power * max(cosThetaP, 0.0f) / distance2;
+    float importance = node.power * max(cosThetaP, 0.0f) / distance2;
+    if (dot(n, n) > 0.0f) { // the receiver's cosine, at best over the box
+        float cosThetaI = -dot(n, toPoint) * inversesqrt(distance2);
+        float sinThetaI = lightTreeSafeSqrt(1.0f - cosThetaI * cosThetaI);
+        importance *= max(lightTreeCosDifference(cosThetaI, sinThetaI, cosThetaB, sinThetaB),
+                          0.0f);
+    }
+    return importance;
 }
 
 // Probability of the first child at a node. By importance at p; where both children's bounds
 // rule p out (each is tighter than their parent's, which did not), by power, so that every
 // walk ends at a light and the pmf over the lights sums to 1.
-WF_INLINE float lightTreeFirstChild(LightTreeNode first, LightTreeNode second, vec3 p) {
-    float i0 = lightTreeImportance(first, p);
-    float i1 = lightTreeImportance(second, p);
+WF_INLINE float lightTreeFirstChild(LightTreeNode first, LightTreeNode second, vec3 p, vec3 n) {
+    float i0 = lightTreeImportance(first, p, n);
+    float i1 = lightTreeImportance(second, p, n);
     if (i0 + i1 > 0.0f)
         return i0 / (i0 + i1);
     return first.power / (first.power + second.power);
@@ -77,10 +114,11 @@ struct LightTreeTraversal {
 #define WF_LIGHT_TREE_NODE(i) (*nodes)[i]
 #endif
 
-// Walks from the root to a leaf for the shading point p, reusing u after each choice. Returns
+// Walks from the root to a leaf for the shading point p with normal n (as in
+// lightTreeImportance), reusing u after each choice. Returns
 // the leaf's emitter and its pmf (WF_LIGHT_TREE_LEAF with pmf 0 only past the depth limit,
 // which the builder keeps every leaf within).
-WF_INLINE uint lightTreeSample(vec3 p, float u, WF_OUT(float) pmf) {
+WF_INLINE uint lightTreeSample(vec3 p, vec3 n, float u, WF_OUT(float) pmf) {
     pmf = 1.0f;
     uint node = 0u;
     for (uint depth = 0u; depth < WF_LIGHT_TREE_MAX_DEPTH; ++depth) {
@@ -88,7 +126,7 @@ WF_INLINE uint lightTreeSample(vec3 p, float u, WF_OUT(float) pmf) {
         if ((child & WF_LIGHT_TREE_LEAF) != 0u)
             return child & ~WF_LIGHT_TREE_LEAF;
         float first = lightTreeFirstChild(WF_LIGHT_TREE_NODE(node + 1u),
-                                          WF_LIGHT_TREE_NODE(child), p);
+                                          WF_LIGHT_TREE_NODE(child), p, n);
         if (u < first) {
             pmf *= first;
             u = min(u / first, 0.99999994f);
@@ -107,7 +145,7 @@ WF_INLINE uint lightTreeSample(vec3 p, float u, WF_OUT(float) pmf) {
 }
 
 // The pmf lightTreeSample gives the light whose trail is `trail` (x: depths 0-31, y: 32-63).
-WF_INLINE float lightTreePmf(vec3 p, uvec2 trail) {
+WF_INLINE float lightTreePmf(vec3 p, vec3 n, uvec2 trail) {
     float pmf = 1.0f;
     uint node = 0u;
     for (uint depth = 0u; depth < WF_LIGHT_TREE_MAX_DEPTH; ++depth) {
@@ -115,7 +153,7 @@ WF_INLINE float lightTreePmf(vec3 p, uvec2 trail) {
         if ((child & WF_LIGHT_TREE_LEAF) != 0u)
             return pmf;
         float first = lightTreeFirstChild(WF_LIGHT_TREE_NODE(node + 1u),
-                                          WF_LIGHT_TREE_NODE(child), p);
+                                          WF_LIGHT_TREE_NODE(child), p, n);
         uint bits = depth < 32u ? trail.x : trail.y;
         bool second = ((bits >> (depth & 31u)) & 1u) != 0u;
         pmf *= second ? 1.0f - first : first;

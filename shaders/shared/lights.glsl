@@ -45,14 +45,15 @@ uint chooseEmitter(float u) {
 
 // The emitter next-event estimation connects p to, and the probability of choosing it there:
 // from the alias table, and with --light-selection tree through the tree's slot (the last)
-// down the tree with uTree. WF_LIGHT_TREE_LEAF with pmf 0 when no light can reach p.
-uint chooseLight(float uChoice, float uTree, vec3 p, out float pmf) {
+// down the tree with uTree, weighing the side `receiver` (encodeReceiverNormal) faces.
+// WF_LIGHT_TREE_LEAF with pmf 0 when no light can be chosen.
+uint chooseLight(float uChoice, float uTree, vec3 p, float receiver, out float pmf) {
     uint slot = chooseEmitter(uChoice);
     pmf = emitterAt(slot).pmf;
 #if WF_LIGHT_TREE
     if (slot == params.emitterCount - 1u) {
         float treePmf;
-        uint emitter = lightTreeSample(p, uTree, treePmf);
+        uint emitter = lightTreeSample(p, decodeReceiverNormal(receiver), uTree, treePmf);
         pmf *= treePmf;
         return emitter;
     }
@@ -62,11 +63,12 @@ uint chooseLight(float uChoice, float uTree, vec3 p, out float pmf) {
 
 // The probability that chooseLight picks `emitter` at p: what MIS needs when a BSDF-sampled
 // ray from p finds that light.
-float lightPmf(uint emitter, vec3 p) {
+float lightPmf(uint emitter, vec3 p, float receiver) {
 #if WF_LIGHT_TREE
     uvec4 trail = lightTreeTrailAt(emitter);
     if (trail.z != 0u)
-        return emitterAt(params.emitterCount - 1u).pmf * lightTreePmf(p, trail.xy);
+        return emitterAt(params.emitterCount - 1u).pmf *
+               lightTreePmf(p, decodeReceiverNormal(receiver), trail.xy);
 #endif
     return emitterAt(emitter).pmf;
 }
@@ -268,9 +270,9 @@ LightSample sampleEnvironment(float uTexel, vec2 u, vec3 p) {
 }
 #endif
 
-LightSample sampleLight(float uChoice, vec2 uPoint, float uExtra, vec3 p) {
+LightSample sampleLight(float uChoice, vec2 uPoint, float uExtra, vec3 p, float receiver) {
     float pmf;
-    uint emitter = chooseLight(uChoice, uExtra, p, pmf);
+    uint emitter = chooseLight(uChoice, uExtra, p, receiver, pmf);
     if (!(pmf > 0.0))
         return noLight(p);
     uint source = emitterAt(emitter).source;

@@ -15,6 +15,7 @@ struct PathVertex {
     vec3 origin;
     vec3 direction;
     float previousPdf; // BSDF density of `direction` (0: camera ray or a Dirac bounce)
+    float previousNormal; // encodeReceiverNormal at the vertex it left (light tree MIS; 0: none)
     vec3 beta;         // throughput
     float etaScale;    // product of eta^2 over refractions, so that RR ignores radiance scaling
     // Out.
@@ -78,8 +79,8 @@ bool shadeLightHit(inout PathVertex v) {
             float lightPdf = 0.0;
 #if WF_HAS_EMITTERS && WF_LIGHT_SAMPLING != 0
             if (light.emitter != WF_NO_EMITTER)
-                lightPdf = sphereLightPdf(lightPmf(light.emitter, v.origin), light, v.origin, t,
-                                          cosLight);
+                lightPdf = sphereLightPdf(lightPmf(light.emitter, v.origin, v.previousNormal),
+                                          light, v.origin, t, cosLight);
 #endif
             v.radiance += clampContribution(v.beta * sphereRadiance(light) *
                                             emissionWeight(v.previousPdf, lightPdf));
@@ -117,8 +118,8 @@ void shadePathVertex(inout PathVertex v) {
         float lightPdf = 0.0;
 #if WF_HAS_TRIANGLE_EMITTERS && WF_LIGHT_SAMPLING != 0
         if (v.previousPdf > 0.0 && surface.emitter != WF_NO_EMITTER)
-            lightPdf = triangleLightPdf(lightPmf(surface.emitter, v.origin), triangleAt(v.hit.w),
-                                        v.origin, t, abs(dot(surface.ng, wo)));
+            lightPdf = triangleLightPdf(lightPmf(surface.emitter, v.origin, v.previousNormal),
+                                        triangleAt(v.hit.w), v.origin, t, abs(dot(surface.ng, wo)));
 #endif
         v.radiance += clampContribution(v.beta * surface.emission *
                                         emissionWeight(v.previousPdf, lightPdf));
@@ -133,13 +134,20 @@ void shadePathVertex(inout PathVertex v) {
     vec3 tangent, bitangent;
     buildOrthonormalBasis(n, tangent, bitangent);
     vec3 woLocal = vec3(dot(wo, tangent), dot(wo, bitangent), dot(wo, n));
+#if WF_LIGHT_TREE
+    // The light tree weighs lights by the side light can arrive from (both through glass).
+    float receiver = surface.transmission > 0.0 ? 0.0 : encodeReceiverNormal(n);
+#else
+    float receiver = 0.0;
+#endif
 
 #if WF_HAS_EMITTERS && WF_LIGHT_SAMPLING != 0
     // Next-event estimation: the connection adds one more path segment.
     if (v.depth + 2u <= params.maxDepth && bsdfHasNonDelta(bsdf)) {
         LightSample light = sampleLight(vertexSample1D(v, WF_DIM_LIGHT_CHOICE),
                                         vertexSample2D(v, WF_DIM_LIGHT_POINT),
-                                        vertexSample1D(v, WF_DIM_LIGHT_EXTRA), surface.p);
+                                        vertexSample1D(v, WF_DIM_LIGHT_EXTRA), surface.p,
+                                        receiver);
         vec3 wiLocal = vec3(dot(light.direction, tangent), dot(light.direction, bitangent),
                             dot(light.direction, n));
         if (light.pdf > 0.0) {
@@ -183,6 +191,7 @@ void shadePathVertex(inout PathVertex v) {
         v.origin = offsetRayOrigin(surface.p, surface.pError, geometricOutside, wi);
         v.direction = wi;
         v.previousPdf = s.isDelta ? 0.0 : s.pdf; // a Dirac bounce: emission counts in full
+        v.previousNormal = receiver;
         v.beta = beta;
         v.etaScale = etaScale;
     }

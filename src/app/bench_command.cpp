@@ -130,6 +130,15 @@ int runBenchCommand(const std::vector<std::string>& args) {
                      spp, settings.maxDepth, settings.seed, warmup, frames,
                      settings.submitBudgetSeconds, prepared.triangles.size(),
                      prepared.materials.size(), prepared.bvhStats};
+    const ShaderVariant& variant = kernels[0].renderer->variant();
+    setup.lightSelection = variant.nextEventEstimation
+                               ? lightSelectionName(variant.lightSelection) : "none";
+    setup.lightSelectionText = describeLightSelection(prepared, variant);
+    if (variant.lightTree()) {
+        setup.lightTreeLights = prepared.lightTree.lights;
+        setup.lightTreeDepth = prepared.lightTree.depth;
+        setup.lightTreeBuildSeconds = prepared.lightTree.buildSeconds;
+    }
     // Frames alternate between the kernels so a change in machine load hits both alike.
     for (uint32_t f = 0; f < warmup + frames; ++f) {
         for (Timed& k : kernels) {
@@ -149,12 +158,13 @@ int runBenchCommand(const std::vector<std::string>& args) {
     std::printf("device: %s (%s)\nshader variant: %s\n", setup.device.c_str(),
                 setup.driver.c_str(), setup.variant.c_str());
     std::printf("scene: %llu triangles, %llu materials; BVH %u nodes, %u leaves, depth %u, "
-                "stack need %u, traversal cost %g, SAH cost %.2f, built in %.1f ms\n\n",
+                "stack need %u, traversal cost %g, SAH cost %.2f, built in %.1f ms\n",
                 static_cast<unsigned long long>(setup.triangles),
                 static_cast<unsigned long long>(setup.materials), setup.bvh.nodeCount,
                 setup.bvh.leafCount, setup.bvh.maxDepth, setup.bvh.stackNeed,
                 setup.bvh.traversalCost, setup.bvh.sahCost,
                 setup.bvh.buildSeconds * 1e3);
+    std::printf("light selection: %s\n\n", setup.lightSelectionText.c_str());
     // --megakernel shows the megakernel's table, --compare-megakernel both.
     if (!withMegakernel || compare)
         std::fputs(benchTable(setup, kernels[0].run).c_str(), stdout);

@@ -246,7 +246,10 @@ std::string benchJson(const BenchSetup& setup, const std::vector<BenchRun>& runs
         << ", \"depth\": " << setup.bvh.maxDepth << ", \"stackNeed\": " << setup.bvh.stackNeed
         << ", \"traversalCost\": " << jsonNumber(setup.bvh.traversalCost) << ", \"sahCost\": "
         << jsonNumber(setup.bvh.sahCost) << ", \"buildSeconds\": "
-        << jsonNumber(setup.bvh.buildSeconds) << "},\n  \"runs\": {";
+        << jsonNumber(setup.bvh.buildSeconds) << "},\n  \"lightSelection\": {\"mode\": \""
+        << setup.lightSelection << "\", \"treeLights\": " << setup.lightTreeLights
+        << ", \"treeDepth\": " << setup.lightTreeDepth << ", \"treeBuildSeconds\": "
+        << jsonNumber(setup.lightTreeBuildSeconds) << "},\n  \"runs\": {";
     for (size_t i = 0; i < runs.size(); ++i)
         out << (i ? "," : "") << "\n    " << jsonQuoted(runs[i].kernel) << ": "
             << runJson(runs[i]);

@@ -43,6 +43,11 @@ struct BenchSetup {
     uint64_t triangles = 0;
     uint64_t materials = 0;
     BvhBuildStats bvh;
+    std::string lightSelection;      // resolved: uniform, power or tree
+    std::string lightSelectionText;  // describeLightSelection
+    uint32_t lightTreeLights = 0;    // with the tree: its lights, depth and build time
+    uint32_t lightTreeDepth = 0;
+    double lightTreeBuildSeconds = 0.0;
 };
 
 struct Spread {

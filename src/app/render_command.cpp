@@ -117,6 +117,8 @@ void printVerbose(const PreparedScene& scene, const WavefrontRenderer& renderer,
                  scene.triangles.size(), scene.materials.size(), scene.lights.emitters.size(),
                  scene.bvhStats.nodeCount, scene.bvhStats.maxDepth, scene.bvhStats.traversalCost,
                  scene.bvhStats.sahCost, scene.bvhStats.buildSeconds);
+    std::fprintf(stderr, "wavefront: light selection: %s\n",
+                 describeLightSelection(scene, renderer.variant()).c_str());
     std::fprintf(stderr, "wavefront: shader variant: %s; up to %u paths per wave\n",
                  renderer.variant().describe().c_str(), renderer.pathCapacity());
     uint64_t total = 0;

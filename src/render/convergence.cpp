@@ -13,19 +13,21 @@ void ConvergenceMethod::applyTo(RenderSettings& settings) const {
     settings.randomizeSamples = randomize;
     settings.triangleSolidAngle = triangleSolidAngle;
     settings.sphereSolidAngle = sphereSolidAngle;
+    settings.lightSelection = lightSelection;
 }
 
 std::string methodWords() {
     std::string words;
     for (const std::string& name : samplerNames())
         words += name + ", ";
-    return words + "bsdf, nee, mis, no-randomize, triangle-area, sphere-area";
+    return words + "bsdf, nee, mis, uniform, power, tree, no-randomize, triangle-area, "
+                   "sphere-area";
 }
 
 ConvergenceMethod parseMethod(const std::string& text) {
     ConvergenceMethod method;
     std::set<std::string> seen;
-    bool samplerSet = false, estimatorSet = false;
+    bool samplerSet = false, estimatorSet = false, selectionSet = false;
     std::stringstream words(text);
     for (std::string word; std::getline(words, word, '+');) {
         const bool isSampler = [&] {
@@ -35,16 +37,20 @@ ConvergenceMethod parseMethod(const std::string& text) {
             return false;
         }();
         const bool isEstimator = word == "bsdf" || word == "nee" || word == "mis";
+        const bool isSelection = word == "uniform" || word == "power" || word == "tree";
         if (!seen.insert(word).second || (isSampler && samplerSet) ||
-            (isEstimator && estimatorSet))
-            throw UsageError("--methods: '" + text + "' names a sampler, an estimator or a "
-                             "switch twice");
+            (isEstimator && estimatorSet) || (isSelection && selectionSet))
+            throw UsageError("--methods: '" + text + "' names a sampler, an estimator, a "
+                             "light selection or a switch twice");
         if (isSampler) {
             method.sampler = parseSampler(word, "--methods");
             samplerSet = true;
         } else if (isEstimator) {
             method.lightSampling = parseLightSampling(word);
             estimatorSet = true;
+        } else if (isSelection) {
+            method.lightSelection = parseLightSelection(word);
+            selectionSet = true;
         } else if (word == "no-randomize") {
             method.randomize = false;
         } else if (word == "triangle-area") {
@@ -63,7 +69,10 @@ ConvergenceMethod parseMethod(const std::string& text) {
                   lightSamplingName(method.lightSampling) +
                   (method.randomize ? "" : "+no-randomize") +
                   (method.triangleSolidAngle ? "" : "+triangle-area") +
-                  (method.sphereSolidAngle ? "" : "+sphere-area");
+                  (method.sphereSolidAngle ? "" : "+sphere-area") +
+                  (method.lightSelection == LightSelection::Auto
+                       ? ""
+                       : std::string("+") + lightSelectionName(method.lightSelection));
     return method;
 }
 

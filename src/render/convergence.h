@@ -23,12 +23,13 @@ struct ConvergenceMethod {
     bool randomize = true;
     bool triangleSolidAngle = true;
     bool sphereSolidAngle = true;
+    LightSelection lightSelection = LightSelection::Auto; // uniform|power|tree, else render's
 
     void applyTo(RenderSettings& settings) const;
 };
 
-// A method from words joined by '+', in any order: a sampler name, bsdf|nee|mis, and the
-// switches no-randomize, triangle-area, sphere-area. Unnamed parts take render's defaults.
+// A method from words joined by '+', in any order: a sampler name, bsdf|nee|mis, a light
+// selection uniform|power|tree, and the switches no-randomize, triangle-area, sphere-area. Unnamed parts take render's defaults.
 // UsageError on an unknown or repeated word.
 ConvergenceMethod parseMethod(const std::string& text);
 // Comma-separated methods; UsageError if empty or if two name the same method.

@@ -1,6 +1,7 @@
 #include "render/shader_variant.h"
 
 #include <algorithm>
+#include <cstdio>
 
 #include "errors.h"
 #include "render/scene_buffers.h"
@@ -93,6 +94,21 @@ const char* lightSamplingName(LightSampling mode) {
     case LightSampling::Nee: return "nee";
     default: return "mis";
     }
+}
+
+std::string describeLightSelection(const PreparedScene& scene, const ShaderVariant& variant) {
+    if (!variant.nextEventEstimation)
+        return "none (no light sampling)";
+    std::string text = lightSelectionName(variant.lightSelection);
+    if (variant.lightTree()) {
+        const LightTree& tree = scene.lightTree;
+        char detail[160];
+        std::snprintf(detail, sizeof detail,
+                      " (light tree of %u lights, %zu nodes, depth %u, built in %.1f ms)",
+                      tree.lights, tree.nodes.size(), tree.depth, tree.buildSeconds * 1e3);
+        text += detail;
+    }
+    return text;
 }
 
 LightSelection parseLightSelection(const std::string& name) {

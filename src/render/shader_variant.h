@@ -49,6 +49,9 @@ ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& se
 
 LightSampling parseLightSampling(const std::string& name); // UsageError if unknown
 const char* lightSamplingName(LightSampling mode);
+// "tree (light tree of N lights, depth D, built in X ms)", "power" or "uniform", for --verbose
+// and the bench.
+std::string describeLightSelection(const PreparedScene& scene, const ShaderVariant& variant);
 LightSelection parseLightSelection(const std::string& name); // UsageError if unknown
 const char* lightSelectionName(LightSelection selection);
 

@@ -17,22 +17,27 @@ struct Method {
     const char* name;
     LightSampling lightSampling;
     bool sphereSolidAngle;
+    LightSelection lightSelection = LightSelection::Auto;
 };
 
 const Method kBsdf{"bsdf", LightSampling::Bsdf, true};
 const Method kNee{"nee", LightSampling::Nee, true};
 const Method kMis{"mis", LightSampling::Mis, true};
 const Method kNeeSphereArea{"nee, sphere area", LightSampling::Nee, false};
+const Method kMisUniform{"mis, uniform", LightSampling::Mis, true, LightSelection::Uniform};
+const Method kMisPower{"mis, power", LightSampling::Mis, true, LightSelection::Power};
+const Method kMisTree{"mis, tree", LightSampling::Mis, true, LightSelection::Tree};
 
-RenderSettings settingsFor(const Method& method, uint32_t spp, uint32_t seed) {
+RenderSettings settingsFor(const Method& method, uint32_t spp, uint32_t seed, uint32_t size) {
     RenderSettings settings;
-    settings.width = 32;
-    settings.height = 32;
+    settings.width = size;
+    settings.height = size;
     settings.samplesPerPixel = spp;
     settings.maxDepth = 6;
     settings.seed = seed;
     settings.lightSampling = method.lightSampling;
     settings.sphereSolidAngle = method.sphereSolidAngle;
+    settings.lightSelection = method.lightSelection;
     return settings;
 }
 
@@ -47,9 +52,12 @@ double relativeMse(const std::vector<float>& image, const std::vector<float>& re
 
 class FailureScene : public ::testing::Test {
 protected:
-    void load(const std::string& name) {
+    // `size` x `size` pixels: large enough that a pixel's own spread (the light varying across
+    // it, the same for every method) does not hide the methods' differences.
+    void load(const std::string& name, uint32_t size = 32) {
+        size_ = size;
         scene_ = loadGltf(std::string(WF_TEST_SCENE_DIR) + "/" + name + ".gltf");
-        reference_ = renderScene(scene_, settingsFor(kMis, 512, 4242)).rgb;
+        reference_ = renderScene(scene_, settingsFor(kMis, 512, 4242, size_)).rgb;
         referenceMean_ = imageMean(reference_);
     }
 
@@ -59,7 +67,7 @@ protected:
     double error(const Method& method, uint32_t spp) {
         double total = 0.0, pooledMean = 0.0, pooledVariance = 0.0;
         for (uint32_t seed : {11u, 12u}) {
-            RenderResult result = renderScene(scene_, settingsFor(method, spp, seed));
+            RenderResult result = renderScene(scene_, settingsFor(method, spp, seed, size_));
             MeanAndError mean = imageMean(result.rgb);
             pooledMean += mean.mean / 2.0;
             pooledVariance += mean.standardError * mean.standardError / 4.0;
@@ -74,6 +82,7 @@ protected:
     }
 
     Scene scene_;
+    uint32_t size_ = 32;
     std::vector<float> reference_;
     MeanAndError referenceMean_{};
 };
@@ -108,6 +117,19 @@ TEST_F(FailureScene, GlassCausticEveryMethodUnbiased) {
     double bsdf = error(kBsdf, 32), nee = error(kNee, 32), mis = error(kMis, 32);
     std::printf("glass caustic relMSE at 32 spp: bsdf %.4g, nee %.4g, mis %.4g\n", bsdf, nee, mis);
     EXPECT_LT(mis, 1.25 * bsdf) << "mis " << mis << ", bsdf " << bsdf << ", nee " << nee;
+}
+
+TEST_F(FailureScene, ManyLampsTreeBeatsPowerBeatsUniform) {
+    load("many_lamps", 64); // at 32x32 a pixel spans several lamps' pools of light
+    // Every selection unbiased (inside error()); the tree, which weighs the lamps near and
+    // facing each point, at least 3x below power, which sends most shadow rays to bright
+    // lamps far away, itself below uniform choice.
+    double uniform = error(kMisUniform, 32), power = error(kMisPower, 32),
+           tree = error(kMisTree, 32);
+    std::printf("many lamps relMSE at 32 spp: uniform %.4g, power %.4g, tree %.4g\n", uniform,
+                power, tree);
+    EXPECT_LT(tree * 3.0, power) << "tree " << tree << ", power " << power;
+    EXPECT_LT(power, uniform) << "power " << power << ", uniform " << uniform;
 }
 
 } // namespace

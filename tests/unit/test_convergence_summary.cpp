@@ -96,6 +96,10 @@ TEST(ConvergenceMethods, ParseWordsInAnyOrder) {
     EXPECT_EQ(m.lightSampling, LightSampling::Bsdf);
     EXPECT_FALSE(m.sphereSolidAngle);
     EXPECT_FALSE(m.triangleSolidAngle);
+    EXPECT_EQ(parseMethod("tree+nee").name, "sobol+nee+tree");
+    EXPECT_EQ(parseMethod("uniform").lightSelection, LightSelection::Uniform);
+    EXPECT_EQ(parseMethod("sobol").lightSelection, LightSelection::Auto);
+    EXPECT_THROW(parseMethod("tree+power"), UsageError);
     EXPECT_EQ(parseMethods("sobol,halton+nee").size(), 2u);
     EXPECT_EQ(defaultMethods().size(), allSamplers().size() + 2);
     EXPECT_THROW(parseMethod("sobol+fast"), UsageError);

@@ -73,6 +73,29 @@ std::vector<glm::vec3> probePoints(uint32_t count, uint32_t seed) {
     return points;
 }
 
+// The receiver normal at probe point i: none (light from both sides) for one in three, else a
+// fixed pseudo-random direction as the shade pass stores it.
+glm::vec3 probeNormal(uint32_t i) {
+    if (i % 3 == 0)
+        return glm::vec3(0.0f);
+    const glm::vec3 d(std::sin(1.7f * i + 0.3f), std::cos(2.9f * i), std::sin(0.7f * i - 1.0f));
+    return gpu_types::decodeReceiverNormal(gpu_types::encodeReceiverNormal(glm::normalize(d)));
+}
+
+TEST(LightTree, ReceiverNormalSurvivesItsEncoding) {
+    for (uint32_t i = 1; i < 200; ++i) {
+        if (i % 3 == 0)
+            continue;
+        const glm::vec3 d = glm::normalize(
+            glm::vec3(std::sin(1.7f * i + 0.3f), std::cos(2.9f * i), std::sin(0.7f * i - 1.0f)));
+        const float encoded = gpu_types::encodeReceiverNormal(d);
+        EXPECT_EQ(encoded, std::floor(encoded));
+        EXPECT_LE(encoded, 16777216.0f); // exact in a float
+        EXPECT_GT(glm::dot(gpu_types::decodeReceiverNormal(encoded), d), 0.99999f);
+    }
+    EXPECT_EQ(gpu_types::decodeReceiverNormal(0.0f), glm::vec3(0.0f));
+}
+
 TEST(LightTree, HoldsEveryLightButTheDirectionalOnes) {
     TreeScene s = randomScene(300, 1);
     EXPECT_EQ(s.tree.lights, 312u);
@@ -92,18 +115,20 @@ TEST(LightTree, PmfSumsToOneAndSamplingReturnsTheTrailsPmf) {
     LightTreeTraversal walk{&s.tree.nodes};
     std::mt19937 rng(7);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
-    for (const glm::vec3& p : probePoints(40, 3)) {
+    const std::vector<glm::vec3> points = probePoints(40, 3);
+    for (uint32_t i = 0; i < points.size(); ++i) {
+        const glm::vec3 p = points[i], n = probeNormal(i);
         double sum = 0.0;
         for (uint32_t e = 0; e < s.tree.trails.size(); ++e)
             if (s.tree.trails[e].z)
-                sum += walk.lightTreePmf(p, glm::uvec2(s.tree.trails[e]));
+                sum += walk.lightTreePmf(p, n, glm::uvec2(s.tree.trails[e]));
         EXPECT_NEAR(sum, 1.0, 1e-4) << "at " << p.x << " " << p.y << " " << p.z;
         for (int k = 0; k < 200; ++k) {
             float pmf = 0.0f;
-            const uint32_t e = walk.lightTreeSample(p, u(rng), pmf);
+            const uint32_t e = walk.lightTreeSample(p, n, u(rng), pmf);
             ASSERT_NE(e, WF_LIGHT_TREE_LEAF);
             ASSERT_EQ(s.tree.trails[e].z, 1u);
-            EXPECT_FLOAT_EQ(pmf, walk.lightTreePmf(p, glm::uvec2(s.tree.trails[e])));
+            EXPECT_FLOAT_EQ(pmf, walk.lightTreePmf(p, n, glm::uvec2(s.tree.trails[e])));
         }
     }
 }
@@ -114,14 +139,16 @@ TEST(LightTree, SamplingMatchesPmfByChiSquare) {
     std::mt19937 rng(11);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
     const int samples = 200000;
-    for (const glm::vec3& p : probePoints(4, 5)) {
+    const std::vector<glm::vec3> points = probePoints(6, 5);
+    for (uint32_t i = 0; i < points.size(); ++i) {
+        const glm::vec3 p = points[i], n = probeNormal(i);
         std::vector<double> observed(s.tree.trails.size(), 0.0), expected(observed.size(), 0.0);
         for (uint32_t e = 0; e < observed.size(); ++e)
             if (s.tree.trails[e].z)
-                expected[e] = samples * walk.lightTreePmf(p, glm::uvec2(s.tree.trails[e]));
+                expected[e] = samples * walk.lightTreePmf(p, n, glm::uvec2(s.tree.trails[e]));
         for (int k = 0; k < samples; ++k) {
             float pmf = 0.0f;
-            observed[walk.lightTreeSample(p, u(rng), pmf)] += 1.0;
+            observed[walk.lightTreeSample(p, n, u(rng), pmf)] += 1.0;
         }
         EXPECT_GT(test::chiSquarePValue(observed, expected), 1e-4)
             << "at " << p.x << " " << p.y << " " << p.z;
@@ -142,7 +169,10 @@ TEST(LightTree, NoReachableLightGetsProbabilityZero) {
         const glm::vec3 n = glm::normalize(glm::cross(t.p1 - t.p0, t.p2 - t.p0));
         points.push_back((t.p0 + t.p1 + t.p2) / 3.0f + 0.01f * n + 3.0f * (t.p1 - t.p0));
     }
-    for (const glm::vec3& p : points)
+    for (uint32_t i = 0; i < points.size(); ++i) {
+        const glm::vec3 p = points[i], n = probeNormal(i);
+        // Light can reach p only from the side n faces (n = 0: either side).
+        auto above = [&](glm::vec3 q) { return glm::dot(n, q - p) > 0.0f || n == glm::vec3(0); };
         for (uint32_t e = 0; e < s.table.emitters.size(); ++e) {
             if (!s.tree.trails[e].z)
                 continue;
@@ -152,13 +182,18 @@ TEST(LightTree, NoReachableLightGetsProbabilityZero) {
             if ((source & WF_EMITTER_KIND_MASK) == WF_EMITTER_TRIANGLE) {
                 const Triangle& t = s.triangles[index];
                 const float side = glm::dot(glm::cross(t.p1 - t.p0, t.p2 - t.p0), p - t.p0);
-                reaches = side > 0.0f ||
-                          (s.materials[t.material].flags & WF_MATERIAL_DOUBLE_SIDED) != 0u;
-            } else if (s.lights[index].type == WF_LIGHT_SPOT) {
+                reaches = (side > 0.0f ||
+                           (s.materials[t.material].flags & WF_MATERIAL_DOUBLE_SIDED) != 0u) &&
+                          (above(t.p0) || above(t.p1) || above(t.p2));
+            } else {
                 const PunctualLight& l = s.lights[index];
-                reaches = glm::dot(glm::normalize(p - l.position), l.direction) > l.cosOuter;
+                const float radius = l.type == WF_LIGHT_SPHERE ? l.radius : 0.0f;
+                reaches = above(l.position + radius * n); // the sphere's point nearest n's side
+                if (l.type == WF_LIGHT_SPOT)
+                    reaches = reaches &&
+                              glm::dot(glm::normalize(p - l.position), l.direction) > l.cosOuter;
             }
-            const float pmf = walk.lightTreePmf(p, glm::uvec2(s.tree.trails[e]));
+            const float pmf = walk.lightTreePmf(p, n, glm::uvec2(s.tree.trails[e]));
             if (reaches) {
                 ++reachable;
                 EXPECT_GT(pmf, 0.0f) << "emitter " << e << " at " << p.x << " " << p.y << " "
@@ -167,6 +202,7 @@ TEST(LightTree, NoReachableLightGetsProbabilityZero) {
                 ++unreachableWithWeight;
             }
         }
+    }
     EXPECT_GT(reachable, 1000);
     // The bounds are conservative, not exact: some lights that cannot reach p keep a weight,
     // but the orientation cones must cull some of them.
@@ -183,7 +219,7 @@ TEST(LightTree, OneLightOrNoneMakesNoTree) {
     EXPECT_EQ(s.tree.nodes.size(), 1u);
     LightTreeTraversal walk{&s.tree.nodes};
     float pmf = 0.0f;
-    EXPECT_EQ(walk.lightTreeSample(glm::vec3(100.0f), 0.5f, pmf), 0u);
+    EXPECT_EQ(walk.lightTreeSample(glm::vec3(100.0f), glm::vec3(0.0f), 0.5f, pmf), 0u);
     EXPECT_EQ(pmf, 1.0f);
 }
 
