@@ -23,7 +23,7 @@ PreparedScene prepareScene(Scene scene) {
     prepared.bounds = sceneBounds(prepared.triangles, prepared.punctualLights);
     prepared.lights = buildLightTable(prepared.triangles, prepared.materials,
                                       prepared.punctualLights, prepared.environment,
-                                      prepared.bounds);
+                                      prepared.bounds, prepared.surface);
     prepared.lightTree = buildLightTree(prepared.lights, prepared.triangles, prepared.materials,
                                         prepared.punctualLights);
     if (prepared.lightTree.lights < 2)

@@ -1,5 +1,7 @@
 #include "scene/light_table.h"
 
+#include "scene/emission_mean.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -86,7 +88,7 @@ SceneBounds sceneBounds(const std::vector<Triangle>& triangles,
 
 LightTable buildLightTable(std::vector<Triangle>& triangles, const std::vector<Material>& materials,
                            std::vector<PunctualLight>& lights, const Environment& environment,
-                           const SceneBounds& bounds) {
+                           const SceneBounds& bounds, const SurfaceData& surface) {
     std::vector<double> powers;
     std::vector<uint32_t> sources;
     LightTable table;
@@ -97,7 +99,10 @@ LightTable buildLightTable(std::vector<Triangle>& triangles, const std::vector<M
         double area = 0.5 * glm::length(glm::cross(glm::dvec3(tri.p1) - glm::dvec3(tri.p0),
                                                    glm::dvec3(tri.p2) - glm::dvec3(tri.p0)));
         double sides = (material.flags & WF_MATERIAL_DOUBLE_SIDED) ? 2.0 : 1.0;
-        double power = mean(material.emission) * area * M_PI * sides;
+        glm::vec3 emission = material.emission;
+        if (material.emissiveTexture != WF_NO_TEXTURE && emission != glm::vec3(0.0f))
+            emission *= meanEmissiveTexture(surface, material.emissiveTexture, i);
+        double power = mean(emission) * area * M_PI * sides;
         if (!(power > 0.0) || !std::isfinite(power))
             continue; // zero-area or non-emitting: never sampled, still hit by BSDF rays
         tri.emitter = static_cast<uint32_t>(sources.size());

@@ -31,9 +31,11 @@ SceneBounds sceneBounds(const std::vector<Triangle>& triangles,
 
 // Fills in each triangle's `emitter` field (WF_NO_EMITTER for non-emitters), sorts `lights` so
 // that sphere lights come first, and sets each light's `emitter`.
+// A triangle with an emissive texture weighs by the texture's mean over it (`surface`, in
+// triangle order; meanEmissiveTexture).
 LightTable buildLightTable(std::vector<Triangle>& triangles, const std::vector<Material>& materials,
                            std::vector<PunctualLight>& lights, const Environment& environment,
-                           const SceneBounds& bounds);
+                           const SceneBounds& bounds, const SurfaceData& surface = SurfaceData{});
 
 // Walker/Vose alias table over non-negative weights with a positive sum: pmf, threshold and
 // alias per slot (Emitter.source is left for the caller).

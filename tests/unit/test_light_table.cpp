@@ -67,5 +67,35 @@ TEST(LightTable, OnlyEmissiveTrianglesOfPositiveAreaByPower) {
     EXPECT_NEAR(table.totalPower, 3.0 * M_PI, 1e-9);
 }
 
+// An emissive texture, white on its left half and black on its right (linear, repeat): the
+// triangle over the white half weighs as its factor says, the one over the black half next to
+// nothing but not nothing (it could still shine somewhere its samples missed).
+TEST(LightTable, EmissiveTextureMeanWeighsTriangles) {
+    std::vector<Material> materials(1);
+    materials[0].emission = glm::vec3(3.0f);
+    materials[0].emissiveTexture = 0;
+    auto tri = [](glm::vec3 a, glm::vec3 b, glm::vec3 c) { return Triangle{a, 0, b, 0, c, 0}; };
+    std::vector<Triangle> triangles = {tri({0, 0, 0}, {1, 0, 0}, {0, 1, 0}),
+                                       tri({0, 0, 0}, {1, 0, 0}, {0, 1, 0})};
+    SurfaceData surface;
+    surface.textureRefs.resize(1);
+    surface.textureRefs[0].uRow = glm::vec3(1, 0, 0);
+    surface.textureRefs[0].vRow = glm::vec3(0, 1, 0);
+    surface.textureRefs[0].width = 2;
+    surface.textureRefs[0].height = 1;
+    surface.refImage = {0};
+    surface.images.push_back({2, 1, {0xffffffffu, 0xff000000u}, "half white"});
+    surface.uv0 = {{{0.05f, 0.1f}, {0.45f, 0.1f}, {0.05f, 0.9f}},  // left half
+                   {{0.55f, 0.1f}, {0.95f, 0.1f}, {0.55f, 0.9f}}}; // right half
+    std::vector<PunctualLight> lights;
+    LightTable table = buildLightTable(triangles, materials, lights, {},
+                                       sceneBounds(triangles, lights), surface);
+    ASSERT_EQ(table.emitters.size(), 2u);
+    const double white = table.emitters[triangles[0].emitter].pmf;
+    const double black = table.emitters[triangles[1].emitter].pmf;
+    EXPECT_NEAR(white / black, 1024.0, 1.0);
+    EXPECT_NEAR(table.totalPower, (3.0 + 3.0 / 1024.0) * 0.5 * M_PI, 1e-6);
+}
+
 } // namespace
 } // namespace wf
