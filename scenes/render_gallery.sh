@@ -20,6 +20,9 @@ for scene in tiny_light veach_mis glass_caustic; do
     render "$scene" nee --light-sampling nee
     render "$scene" mis --light-sampling mis
 done
+for selection in uniform power tree; do
+    render many_lamps "$selection" --light-selection "$selection"
+done
 render sphere_near_floor area --light-sampling nee --sphere-sampling area
 render sphere_near_floor solid-angle --light-sampling nee --sphere-sampling solid-angle
 echo "wrote $(ls "$out" | wc -l) images to $out"

@@ -36,6 +36,8 @@ converge cornell_box "$samplers,sobol+bsdf,sobol+nee"
 converge tiny_light "$estimators"
 converge veach_mis "$estimators"
 converge glass_caustic "$estimators"
+converge many_lamps \
+    "sobol+mis+uniform,sobol+mis+power,sobol+mis+tree,independent+mis+power,independent+mis+tree"
 converge sphere_near_floor \
     "independent+nee,independent+nee+sphere-area,sobol+nee,sobol+nee+sphere-area,sobol+mis"
 echo "charts in $docs, results in $out"

@@ -100,6 +100,12 @@ void samplingRows(RenderSettings& render, OverlayActions& actions) {
         render.lightSampling = LightSampling(lightSampling);
         actions.renderChanged = true;
     }
+    // LightSelection's order: auto (the scene's default), uniform, power, tree.
+    int selection = int(render.lightSelection);
+    if (ImGui::Combo("--light-selection", &selection, "default\0uniform\0power\0tree\0")) {
+        render.lightSelection = LightSelection(selection);
+        actions.renderChanged = true;
+    }
     int triangle = render.triangleSolidAngle ? 1 : 0, sphere = render.sphereSolidAngle ? 1 : 0;
     if (ImGui::Combo("--triangle-sampling", &triangle, "area\0solid-angle\0")) {
         render.triangleSolidAngle = triangle == 1;

@@ -10,7 +10,8 @@ check "top help" 0 "$wavefront" --help
 expect "top help lists render" grep -q "render" "$work/stdout"
 check "render help" 0 "$wavefront" render --help
 for flag in --output --spp --width --height --max-depth --rr-depth --seed --json --quiet \
-    --device --light-sampling --triangle-sampling --sphere-sampling --min-throughput --clamp; do
+    --device --light-sampling --light-selection --triangle-sampling --sphere-sampling \
+    --min-throughput --clamp; do
     expect "render help lists $flag" grep -q -- "$flag" "$work/stdout"
 done
 
@@ -41,6 +42,17 @@ expect "bad spp: one line" one_line_error
 check "bad light sampling" 2 "$wavefront" render "$scenes/cornell_box.gltf" -o "$work/x.exr" \
     --light-sampling magic
 expect "bad light sampling: one line" one_line_error
+check "bad light selection" 2 "$wavefront" render "$scenes/cornell_box.gltf" -o "$work/x.exr" \
+    --light-selection nearest
+expect "bad light selection: one line" one_line_error
+for selection in uniform power tree; do
+    check "light selection $selection" 0 "$wavefront" render "$scenes/many_lamps.gltf" \
+        -o "$work/$selection.exr" --spp 1 --width 24 --quiet --light-selection $selection
+done
+check "verbose names the light tree" 0 "$wavefront" render "$scenes/many_lamps.gltf" \
+    -o "$work/lamps.exr" --spp 1 --width 16 --verbose
+expect "verbose: light tree of 4096 lights" grep -q "light selection: tree (light tree of 4096 lights" \
+    "$work/stderr"
 check "negative clamp" 2 "$wavefront" render "$scenes/cornell_box.gltf" -o "$work/x.exr" --clamp -1
 for mode in bsdf nee mis; do
     check "light sampling $mode" 0 "$wavefront" render "$scenes/cornell_box.gltf" \
