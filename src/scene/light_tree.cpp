@@ -12,8 +12,8 @@ struct LightBounds {
     glm::dvec3 lo{1e300}, hi{-1e300};
     double power = 0.0;
     glm::dvec3 axis{0.0, 0.0, 1.0};
-    double cosThetaO = 1.0;  // 1 with power 0: empty
-    double cosThetaE = 1.0;
+    double thetaO = 0.0; // half-angle of the normals' cone (angles, not cosines: merges are
+    double thetaE = 0.0; // hot in the build, and acos is not cheap)
     bool twoSided = false;
     glm::dvec3 centroid() const { return 0.5 * (lo + hi); }
 };
@@ -21,36 +21,31 @@ struct LightBounds {
 double angle(double cosine) { return std::acos(std::clamp(cosine, -1.0, 1.0)); }
 
 // The smallest cone around both (pbrt-v4's DirectionCone union).
-void unionCones(const LightBounds& a, const LightBounds& b, glm::dvec3& axis, double& cosTheta) {
-    if (a.cosThetaO <= -1.0 || b.cosThetaO <= -1.0) {
-        axis = a.axis;
-        cosTheta = -1.0;
+void unionCones(const LightBounds& a, const LightBounds& b, glm::dvec3& axis, double& theta) {
+    axis = a.axis;
+    theta = M_PI;
+    if (a.thetaO >= M_PI || b.thetaO >= M_PI)
         return;
-    }
-    const double thetaA = angle(a.cosThetaO), thetaB = angle(b.cosThetaO);
+    const double thetaA = a.thetaO, thetaB = b.thetaO;
     const double thetaD = angle(glm::dot(a.axis, b.axis));
     if (std::min(thetaD + thetaB, M_PI) <= thetaA) {
-        axis = a.axis;
-        cosTheta = a.cosThetaO;
+        theta = thetaA;
         return;
     }
     if (std::min(thetaD + thetaA, M_PI) <= thetaB) {
         axis = b.axis;
-        cosTheta = b.cosThetaO;
+        theta = thetaB;
         return;
     }
     const double thetaO = 0.5 * (thetaA + thetaD + thetaB);
     const glm::dvec3 w = glm::cross(a.axis, b.axis);
-    if (thetaO >= M_PI || glm::length(w) < 1e-12) {
-        axis = a.axis;
-        cosTheta = -1.0;
+    if (thetaO >= M_PI || glm::length(w) < 1e-12)
         return;
-    }
     // Turn a's axis towards b's by thetaO - thetaA (Rodrigues, about an axis normal to it).
     const double turn = thetaO - thetaA;
     const glm::dvec3 k = glm::normalize(w);
     axis = glm::normalize(a.axis * std::cos(turn) + glm::cross(k, a.axis) * std::sin(turn));
-    cosTheta = std::cos(thetaO);
+    theta = thetaO;
 }
 
 LightBounds merge(const LightBounds& a, const LightBounds& b) {
@@ -62,8 +57,8 @@ LightBounds merge(const LightBounds& a, const LightBounds& b) {
     m.lo = glm::min(a.lo, b.lo);
     m.hi = glm::max(a.hi, b.hi);
     m.power = a.power + b.power;
-    unionCones(a, b, m.axis, m.cosThetaO);
-    m.cosThetaE = std::min(a.cosThetaE, b.cosThetaE);
+    unionCones(a, b, m.axis, m.thetaO);
+    m.thetaE = std::max(a.thetaE, b.thetaE);
     m.twoSided = a.twoSided || b.twoSided;
     return m;
 }
@@ -73,13 +68,13 @@ LightBounds merge(const LightBounds& a, const LightBounds& b) {
 double splitCost(const LightBounds& b, double kr) {
     if (!(b.power > 0.0))
         return 0.0;
-    const double thetaO = angle(b.cosThetaO), thetaE = angle(b.cosThetaE);
+    const double thetaO = b.thetaO, thetaE = b.thetaE;
     const double thetaW = std::min(thetaO + thetaE, M_PI);
-    const double sinThetaO = std::sqrt(std::max(0.0, 1.0 - b.cosThetaO * b.cosThetaO));
-    const double measure = 2.0 * M_PI * (1.0 - b.cosThetaO) +
+    const double cosThetaO = std::cos(thetaO), sinThetaO = std::sin(thetaO);
+    const double measure = 2.0 * M_PI * (1.0 - cosThetaO) +
                            M_PI / 2.0 *
                                (2.0 * thetaW * sinThetaO - std::cos(thetaO - 2.0 * thetaW) -
-                                2.0 * thetaO * sinThetaO + b.cosThetaO);
+                                2.0 * thetaO * sinThetaO + cosThetaO);
     const glm::dvec3 d = b.hi - b.lo;
     const double area = 2.0 * (d.x * d.y + d.y * d.z + d.z * d.x);
     return b.power * measure * kr * area;
@@ -125,8 +120,10 @@ private:
         node.power = static_cast<float>(b.power);
         node.child = child;
         node.axis = glm::vec3(b.axis);
-        node.cosThetaO = static_cast<float>(b.cosThetaO);
-        node.cosThetaE = static_cast<float>(b.cosThetaE);
+        node.cosThetaO = b.thetaO >= M_PI ? -1.0f : static_cast<float>(std::cos(b.thetaO));
+        // cos(pi / 2) in double is 6e-17, not 0: a point at right angles must not be culled.
+        node.cosThetaE = b.thetaE >= M_PI / 2.0 ? std::min(0.0f, float(std::cos(b.thetaE)))
+                                                 : static_cast<float>(std::cos(b.thetaE));
         node.twoSided = b.twoSided ? 1u : 0u;
     }
 
@@ -134,14 +131,14 @@ private:
     // box; deep in the tree, or where no axis separates them, at the median of the longest
     // axis, so that no trail outgrows its 64 bits.
     size_t split(std::vector<Item>& items, size_t begin, size_t end, uint32_t depth) {
-        glm::dvec3 lo(1e300), hi(-1e300);
-        LightBounds all;
+        glm::dvec3 lo(1e300), hi(-1e300), boxLo(1e300), boxHi(-1e300);
         for (size_t i = begin; i < end; ++i) {
             lo = glm::min(lo, items[i].bounds.centroid());
             hi = glm::max(hi, items[i].bounds.centroid());
-            all = merge(all, items[i].bounds);
+            boxLo = glm::min(boxLo, items[i].bounds.lo);
+            boxHi = glm::max(boxHi, items[i].bounds.hi);
         }
-        const glm::dvec3 extent = hi - lo, diagonal = all.hi - all.lo;
+        const glm::dvec3 extent = hi - lo, diagonal = boxHi - boxLo;
         const int longest = extent.x >= extent.y && extent.x >= extent.z ? 0
                             : extent.y >= extent.z                       ? 1
                                                                          : 2;
@@ -160,15 +157,22 @@ private:
                     merge(buckets[bucketOf(items[i], axis)], items[i].bounds);
             const double maxDiagonal = std::max({diagonal.x, diagonal.y, diagonal.z});
             const double kr = diagonal[axis] > 0.0 ? maxDiagonal / diagonal[axis] : 1.0;
+            // Costs of the buckets above each split, swept from the top, then the ones below
+            // swept from the bottom: two merges per bucket.
+            double aboveCost[kBuckets];
+            bool aboveLit[kBuckets];
+            LightBounds above;
+            for (int b = kBuckets - 1; b > 0; --b) {
+                above = merge(above, buckets[b]);
+                aboveCost[b] = splitCost(above, kr);
+                aboveLit[b] = above.power > 0.0;
+            }
+            LightBounds below;
             for (int s = 0; s + 1 < kBuckets; ++s) {
-                LightBounds below, above;
-                for (int b = 0; b <= s; ++b)
-                    below = merge(below, buckets[b]);
-                for (int b = s + 1; b < kBuckets; ++b)
-                    above = merge(above, buckets[b]);
-                if (!(below.power > 0.0) || !(above.power > 0.0))
+                below = merge(below, buckets[s]);
+                if (!(below.power > 0.0) || !aboveLit[s + 1])
                     continue;
-                const double cost = splitCost(below, kr) + splitCost(above, kr);
+                const double cost = splitCost(below, kr) + aboveCost[s + 1];
                 if (cost < bestCost) {
                     bestCost = cost;
                     bestAxis = axis;
@@ -209,8 +213,8 @@ LightBounds boundsOf(uint32_t source, double power, const std::vector<Triangle>&
         b.lo = glm::min(p0, glm::min(p1, p2));
         b.hi = glm::max(p0, glm::max(p1, p2));
         b.axis = glm::normalize(glm::cross(p1 - p0, p2 - p0));
-        b.cosThetaO = 1.0; // one normal, emitting into its hemisphere
-        b.cosThetaE = 0.0;
+        b.thetaO = 0.0; // one normal, emitting into its hemisphere
+        b.thetaE = M_PI / 2.0;
         b.twoSided = (materials[tri.material].flags & WF_MATERIAL_DOUBLE_SIDED) != 0u;
         return b;
     }
@@ -221,11 +225,11 @@ LightBounds boundsOf(uint32_t source, double power, const std::vector<Triangle>&
     b.hi = position + glm::dvec3(radius);
     if (light.type == WF_LIGHT_SPOT) { // light leaves the point only inside the outer cone
         b.axis = glm::normalize(glm::dvec3(light.direction));
-        b.cosThetaO = light.cosOuter;
-        b.cosThetaE = 1.0;
+        b.thetaO = angle(light.cosOuter);
+        b.thetaE = 0.0;
     } else { // every direction
-        b.cosThetaO = -1.0;
-        b.cosThetaE = 0.0;
+        b.thetaO = M_PI;
+        b.thetaE = M_PI / 2.0;
     }
     return b;
 }
