@@ -34,7 +34,7 @@ std::vector<OptionSpec> samplingOptions() {
         {"--light-sampling", "", "MODE", "bsdf (emission found by BSDF rays), nee (light "
                                          "sampling only) or mis (default)"},
         {"--light-selection", "", "MODE", "how NEE picks a light: uniform, power or tree (the "
-                                          "light tree; default: tree with 8 or more lights "
+                                          "light tree; default: tree with 4 or more lights "
                                           "that have a place, else power)"},
         {"--triangle-sampling", "", "MODE", "area or solid-angle (spherical triangles; "
                                             "default)"},

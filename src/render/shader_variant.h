@@ -18,7 +18,7 @@ enum class LightSampling { Bsdf = 0, Nee = 1, Mis = 2 };
 // alias table, or by the light tree's importance at the shading point. Auto: the tree where
 // the scene has kLightTreeMinLights or more lights for it, else power.
 enum class LightSelection { Auto, Uniform, Power, Tree };
-constexpr uint32_t kLightTreeMinLights = 8;
+constexpr uint32_t kLightTreeMinLights = 4;
 
 struct ShaderVariant {
     LightSampling lightSampling = LightSampling::Mis;
