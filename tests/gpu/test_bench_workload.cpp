@@ -130,5 +130,10 @@ TEST(BenchWorkload, MegakernelAgreesWithWavefrontSphereLight) {
     expectMegakernelAgrees("sphere_near_floor.gltf");
 }
 
+// The light tree by default, and the receiver normal carried from vertex to vertex for MIS.
+TEST(BenchWorkload, MegakernelAgreesWithWavefrontLightTree) {
+    expectMegakernelAgrees("many_lamps.gltf");
+}
+
 } // namespace
 } // namespace wf::test
