@@ -21,6 +21,7 @@ const char* kTopHelp =
     "  view SCENE.gltf                window that refines the image progressively\n"
     "  converge SCENE.gltf -o DIR     error against time and samples per sampler and estimator\n"
     "  bench SCENE.gltf               frame timings per pass, throughput, queue occupancy\n"
+    "  merge PART.exr ... -o OUT.exr  the parts of one render (--spp-offset) into one image\n"
     "\n"
     "Run 'wavefront COMMAND --help' for the options of a command.\n"
     "\n"
@@ -52,6 +53,8 @@ int main(int argc, char** argv) {
             return wf::runConvergeCommand(args);
         if (command == "bench")
             return wf::runBenchCommand(args);
+        if (command == "merge")
+            return wf::runMergeCommand(args);
         if (command == "view") {
 #ifdef WF_HAVE_VIEWER
             return wf::runViewCommand(args);

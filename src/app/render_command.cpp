@@ -11,6 +11,7 @@
 #include "errors.h"
 #include "gpu/context.h"
 #include "image/exr_io.h"
+#include "image/render_parts.h"
 #include "image/png_writer.h"
 #include "render/scene_buffers.h"
 #include "render/wavefront_renderer.h"
@@ -35,6 +36,10 @@ const CommandSpec& renderSpec() {
             {
                 {"--output", "-o", "OUT.exr", "output OpenEXR file (required; must end in .exr)"},
                 {"--spp", "", "N", "samples per pixel (default 64)"},
+                {"--time-limit", "", "SECONDS", "stop before the sample pass that would end past "
+                                                "SECONDS of rendering (at least one pass; the EXR's "
+                                                "spp says how many were done; not with the "
+                                                "finite-set samplers)"},
             },
             imageSizeOptions(kDefaultWidth),
             depthOptions(kDefaultMaxDepth),
@@ -82,28 +87,51 @@ std::string pngPathFor(const std::string& exrPath) {
 
 class ProgressLine {
 public:
-    explicit ProgressLine(bool enabled) : enabled_(enabled), tty_(isatty(STDERR_FILENO)) {}
-    void update(const WaveProgress& progress) {
+    ProgressLine(bool enabled, double timeLimit)
+        : enabled_(enabled), tty_(isatty(STDERR_FILENO)), timeLimit_(timeLimit) {}
+    void update(const WaveProgress& progress, bool stopped = false) {
         if (!enabled_)
             return;
-        const bool last = progress.samplesDone == progress.samplesTotal;
+        const bool last = progress.samplesDone == progress.samplesTotal || stopped;
         // On a terminal redraw one line; in a log, at most a line a second.
         if (!tty_ && !last && progress.secondsElapsed - lastPrinted_ < 1.0)
             return;
         lastPrinted_ = progress.secondsElapsed;
         double eta = progress.secondsElapsed / progress.samplesDone *
                      (progress.samplesTotal - progress.samplesDone);
-        std::fprintf(stderr, "%swavefront: %u/%u spp, %.1f s elapsed, ETA %.1f s%s",
+        if (timeLimit_ > 0.0)
+            eta = std::min(eta, std::max(0.0, timeLimit_ - progress.secondsElapsed));
+        char limit[64] = "";
+        if (timeLimit_ > 0.0)
+            std::snprintf(limit, sizeof limit, " of a %g s limit", timeLimit_);
+        std::fprintf(stderr, "%swavefront: %u/%u spp, %.1f s elapsed%s, %s %.1f s%s",
                      tty_ ? "\r" : "", progress.samplesDone, progress.samplesTotal,
-                     progress.secondsElapsed, eta, tty_ && !last ? "   " : "\n");
+                     progress.secondsElapsed, limit, stopped ? "stopped at the limit after" : "ETA",
+                     stopped ? progress.secondsElapsed : eta, tty_ && !last ? "   " : "\n");
         std::fflush(stderr);
     }
 
 private:
     bool enabled_;
     bool tty_;
+    double timeLimit_;
     double lastPrinted_ = -1.0;
 };
+
+// Everything that shapes the image but the seed and the sample range (their own attributes):
+// parts merge only when this agrees (image/render_parts.h).
+std::string renderSettingsKey(const RenderSettings& s, const ParsedArgs& parsed) {
+    char numbers[160];
+    std::snprintf(numbers, sizeof numbers,
+                  "%ux%u depth %u rr %u min-throughput %g clamp %g", s.width, s.height,
+                  s.maxDepth, s.rrDepth, s.minThroughput, s.clampRadiance);
+    return std::string(numbers) + " " + lightSamplingName(s.lightSampling) + " " +
+           lightSelectionName(s.lightSelection) + " triangle " +
+           (s.triangleSolidAngle ? "solid-angle" : "area") + " sphere " +
+           (s.sphereSolidAngle ? "solid-angle" : "area") + " " + samplerName(s.sampler) +
+           (s.randomizeSamples ? "" : " no-randomize") + " camera " +
+           parsed.value("--camera").value_or("default");
+}
 
 void printVerbose(const PreparedScene& scene, const WavefrontRenderer& renderer,
                   const Context& context, const SceneSummary& summary) {
@@ -153,6 +181,11 @@ int runRenderCommand(const std::vector<std::string>& args) {
     settings.samplesPerPixel = parsed.uintValue("--spp", 64, 1, 1u << 20);
     applyRenderFlags(parsed, kDefaultMaxDepth, settings);
     applySppRangeFlags(parsed, settings);
+    settings.timeLimitSeconds = parsed.floatValue("--time-limit", 0.0f, 1e-3f, 1e9f);
+    if (settings.timeLimitSeconds > 0.0 && samplerIsFiniteSet(settings.sampler))
+        throw UsageError(std::string("--time-limit: the ") + samplerName(settings.sampler) +
+                         " sampler's set is no stratification when cut short (pick sobol, "
+                         "halton, independent or bluenoise)");
     const bool quiet = parsed.has("--quiet");
     const bool verbose = parsed.has("--verbose");
 
@@ -169,14 +202,24 @@ int runRenderCommand(const std::vector<std::string>& args) {
     if (verbose)
         printVerbose(prepared, renderer, context, summary);
 
-    ProgressLine progress(!quiet);
-    renderer.render([&](const WaveProgress& wave) { progress.update(wave); });
+    ProgressLine progress(!quiet, settings.timeLimitSeconds);
+    WaveProgress last{};
+    renderer.render([&](const WaveProgress& wave) {
+        progress.update(wave);
+        last = wave;
+    });
+    if (last.samplesDone < settings.samplesPerPixel)
+        progress.update(last, true);
     const RenderStats& stats = renderer.stats();
     std::vector<float> image = renderer.readImage();
 
+    std::string sceneHash = fileHash(scenePath);
+    if (auto env = parsed.value("--env"))
+        sceneHash += "+" + fileHash(*env);
     writeExr(*output, static_cast<int>(settings.width), static_cast<int>(settings.height), image,
              {{"software", "Wavefront"}, {"scene", scenePath},
-              {"sampler", samplerName(settings.sampler)}},
+              {"sampler", samplerName(settings.sampler)}, {"sceneHash", sceneHash},
+              {"renderSettings", renderSettingsKey(settings, parsed)}},
              {{"renderSeconds", static_cast<float>(stats.seconds)}},
              {{"spp", static_cast<int>(stats.samplesPerPixel)},
               {"seed", static_cast<int>(settings.seed)},

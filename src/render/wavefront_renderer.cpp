@@ -251,8 +251,21 @@ uint32_t WavefrontRenderer::renderSamples(uint32_t samples) {
 }
 
 void WavefrontRenderer::render(const std::function<void(const WaveProgress&)>& onWave) {
+    const auto start = std::chrono::steady_clock::now();
+    const uint32_t first = samplesDone_;
     while (samplesDone_ < settings_.samplesPerPixel) {
-        advance(settings_.samplesPerPixel - samplesDone_);
+        uint32_t samples = settings_.samplesPerPixel - samplesDone_;
+        if (settings_.timeLimitSeconds > 0.0 && samplesDone_ > first) {
+            // Whole passes only: as many as the pace so far says still fit.
+            const double elapsed =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            const double fit = (settings_.timeLimitSeconds - elapsed) /
+                               (elapsed / double(samplesDone_ - first));
+            if (fit < 1.0)
+                break;
+            samples = std::min(samples, static_cast<uint32_t>(std::min(fit, 1e9)));
+        }
+        advance(samples);
         if (onWave)
             onWave({samplesDone_, settings_.samplesPerPixel, stats_.seconds});
     }

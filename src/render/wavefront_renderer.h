@@ -42,6 +42,9 @@ struct RenderSettings {
     uint32_t width = 512;
     uint32_t height = 512;
     uint32_t samplesPerPixel = 64;
+    // --time-limit: render() stops before a sample pass that its pace so far says would end
+    // past this many seconds of wall time (0: none). The first pass always runs.
+    double timeLimitSeconds = 0.0;
     uint32_t maxDepth = 16;
     uint32_t rrDepth = 3;
     uint32_t seed = 0;

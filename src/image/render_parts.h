@@ -1,0 +1,47 @@
+// Parts of one render made with --spp-offset, and their merge (`wavefront merge`): each part's
+// EXR header says what it is (scene file hash, the settings that shape the image, seed, size,
+// sample range), and parts merge only when all of that agrees and no two ranges overlap. The
+// merge is the sample-weighted mean, which is the image of one run of all the samples up to
+// float rounding.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace wf {
+
+// FNV-1a 64 of a file's bytes, as 16 hex digits. Throws InputError if it cannot be read.
+std::string fileHash(const std::string& path);
+
+struct RenderPart {
+    std::string path;
+    int width = 0;
+    int height = 0;
+    std::vector<float> rgb;
+    std::string sceneHash;      // fileHash of the scene (and of --env's file, if any)
+    std::string renderSettings; // renderSettingsKey of the run
+    std::string scene;          // the scene's path, as given
+    std::string sampler;
+    int seed = 0;
+    int maxDepth = 0;
+    uint32_t sppOffset = 0;
+    uint32_t spp = 0;
+    uint32_t sppTotal = 0;
+    double renderSeconds = 0.0;
+};
+
+// Reads a part; InputError naming the file and the attribute when one is missing.
+RenderPart readRenderPart(const std::string& path);
+
+struct MergedRender {
+    RenderPart image;                  // path empty; spp the sum, sppOffset the first sample
+    std::string ranges;                // "0-511,768-1023": the sample ranges merged
+    std::vector<std::string> gaps;     // "512-767": samples in no part
+};
+
+// InputError naming the parts when they come from different scenes, settings, seeds, sizes or
+// (finite-set samplers) sets, or when two sample ranges overlap; gaps are reported, not
+// refused. The merged sppTotal is the first part's.
+MergedRender mergeRenderParts(const std::vector<RenderPart>& parts);
+
+} // namespace wf

@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# `wavefront merge` and `render --time-limit` end to end: parts of one render merge into the
+# image of one run; parts of another render, overlapping ranges and non-parts are refused in
+# one line (exit 2); a gap is reported; a time limit stops on a whole pass.
+# Usage: test_merge_cli.sh PATH/TO/wavefront PATH/TO/wf_compare_images PATH/TO/scenes
+set -u
+wavefront=$1
+compare=$2
+scenes=$3
+source "$(dirname "$0")/harness.sh"
+box="$scenes/cornell_box.gltf"
+part() { # part NAME OFFSET SPP [flags]
+    local name=$1 offset=$2 spp=$3
+    shift 3
+    check "render part $name" 0 "$wavefront" render "$box" -o "$work/$name.exr" --spp "$spp" \
+        --spp-offset "$offset" --width 40 --max-depth 4 --quiet "$@"
+}
+
+check "merge help" 0 "$wavefront" merge --help
+expect "merge help lists --output" grep -q -- "--output" "$work/stdout"
+check "top help lists merge" 0 "$wavefront" --help
+expect "top help: merge" grep -q "merge" "$work/stdout"
+
+# Unequal parts, so that a plain mean of the images would not do.
+part a 0 8
+part b 8 16
+part c 24 8
+check "one run of 32 spp" 0 "$wavefront" render "$box" -o "$work/one.exr" --spp 32 --width 40 \
+    --max-depth 4 --quiet
+check "merge three parts" 0 "$wavefront" merge "$work/c.exr" "$work/a.exr" "$work/b.exr" \
+    -o "$work/merged.exr"
+expect "merged png written" test -s "$work/merged.png"
+expect "merge names the range" grep -q "samples 0-31 (32 spp)" "$work/stderr"
+check "merged = one run" 0 "$compare" "$work/merged.exr" "$work/one.exr" --spp 32 \
+    --tolerance 1e-5
+
+check "merge with a gap" 0 "$wavefront" merge "$work/a.exr" "$work/c.exr" -o "$work/gap.exr"
+expect "gap reported" grep -q "samples 8-23 are in no part" "$work/stderr"
+
+check "overlapping parts" 2 "$wavefront" merge "$work/a.exr" "$work/a.exr" -o "$work/x.exr"
+expect "overlap: one line" one_line_error
+part s 8 8 --seed 5
+check "part of another seed" 2 "$wavefront" merge "$work/a.exr" "$work/s.exr" -o "$work/x.exr"
+expect "another seed: one line" one_line_error
+part d 8 8 --max-depth 3
+check "part of other settings" 2 "$wavefront" merge "$work/a.exr" "$work/d.exr" -o "$work/x.exr"
+expect "other settings: one line" one_line_error
+check "part of another scene" 0 "$wavefront" render "$scenes/tiny_light.gltf" -o "$work/t.exr" \
+    --spp 8 --spp-offset 8 --width 40 --max-depth 4 --quiet
+check "parts of two scenes" 2 "$wavefront" merge "$work/a.exr" "$work/t.exr" -o "$work/x.exr"
+expect "two scenes: one line" one_line_error
+check "not a part" 2 "$wavefront" merge "$work/a.png" -o "$work/x.exr"
+expect "not a part: one line" one_line_error
+check "merge without output" 2 "$wavefront" merge "$work/a.exr"
+expect "nothing written on failure" test ! -e "$work/x.exr"
+
+# --time-limit: far more samples than fit; the EXR and the JSON say how many were done.
+check "time limit" 0 "$wavefront" render "$box" -o "$work/limited.exr" --spp 1000000 \
+    --width 32 --max-depth 4 --time-limit 1 --json "$work/limited.json"
+expect "limit shown in the progress line" grep -q "of a 1 s limit" "$work/stderr"
+expect "stopped early, on a whole pass" json_has "$work/limited.json" "1 <= d['spp'] < 1000000"
+check "time limit with a finite set" 2 "$wavefront" render "$box" -o "$work/x.exr" \
+    --sampler stratified --time-limit 1
+expect "finite set: one line" one_line_error
+finish
