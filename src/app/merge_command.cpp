@@ -6,8 +6,6 @@
 #include "app/cli.h"
 #include "app/commands.h"
 #include "errors.h"
-#include "image/exr_io.h"
-#include "image/png_writer.h"
 #include "image/render_parts.h"
 
 namespace fs = std::filesystem;
@@ -58,18 +56,7 @@ int runMergeCommand(const std::vector<std::string>& args) {
         std::fprintf(stderr, "wavefront: merge: samples %s are in no part (the image is the "
                              "mean of the others, still unbiased)\n",
                      gap.c_str());
-    writeExr(*output, image.width, image.height, image.rgb,
-             {{"software", "Wavefront"}, {"scene", image.scene}, {"sampler", image.sampler},
-              {"sceneHash", image.sceneHash}, {"renderSettings", image.renderSettings},
-              {"sppRanges", merged.ranges}},
-             {{"renderSeconds", static_cast<float>(image.renderSeconds)}},
-             {{"spp", static_cast<int>(image.spp)},
-              {"seed", image.seed},
-              {"maxDepth", image.maxDepth},
-              {"sppOffset", static_cast<int>(image.sppOffset)},
-              {"sppTotal", static_cast<int>(image.sppTotal)}});
-    const std::string png = (fs::path(*output).replace_extension(".png")).string();
-    writePngPreview(png, image.width, image.height, image.rgb);
+    writeRenderPart(*output, image, {{"sppRanges", merged.ranges}});
     if (!parsed.has("--quiet"))
         std::fprintf(stderr, "wavefront: merged %zu parts, samples %s (%u spp), into %s\n",
                      parts.size(), merged.ranges.c_str(), image.spp, output->c_str());

@@ -2,17 +2,17 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <unistd.h>
 
 #include "app/cli.h"
 #include "app/commands.h"
 #include "app/render_options.h"
+#include "app/signal_stop.h"
 #include "app/stats_json.h"
 #include "errors.h"
 #include "gpu/context.h"
-#include "image/exr_io.h"
 #include "image/render_parts.h"
-#include "image/png_writer.h"
 #include "render/scene_buffers.h"
 #include "render/wavefront_renderer.h"
 #include "scene/scene_summary.h"
@@ -40,6 +40,14 @@ const CommandSpec& renderSpec() {
                                                 "SECONDS of rendering (at least one pass; the EXR's "
                                                 "spp says how many were done; not with the "
                                                 "finite-set samplers)"},
+                {"--checkpoint", "", "FILE.exr", "write the image so far there every "
+                                                 "--checkpoint-every seconds and on SIGINT or "
+                                                 "SIGTERM (which then end the render, exit 130 or "
+                                                 "143)"},
+                {"--checkpoint-every", "", "SECONDS", "seconds between checkpoints (default 60)"},
+                {"--resume", "", "FILE.exr", "continue that checkpoint of this very render "
+                                             "(scene, size, settings, seed) to --spp: the image "
+                                             "of an uninterrupted run"},
             },
             imageSizeOptions(kDefaultWidth),
             depthOptions(kDefaultMaxDepth),
@@ -195,46 +203,114 @@ int runRenderCommand(const std::vector<std::string>& args) {
     applyImageSize(parsed, scene.camera, {.width = kDefaultWidth, .widthFollowsHeight = true},
                    settings);
 
+    // What this render is, as its parts and checkpoints say it (image/render_parts.h).
+    RenderPart run;
+    run.width = static_cast<int>(settings.width);
+    run.height = static_cast<int>(settings.height);
+    run.scene = scenePath;
+    run.sceneHash = fileHash(scenePath);
+    if (auto env = parsed.value("--env"))
+        run.sceneHash += "+" + fileHash(*env);
+    run.renderSettings = renderSettingsKey(settings, parsed);
+    run.sampler = samplerName(settings.sampler);
+    run.seed = static_cast<int>(settings.seed);
+    run.maxDepth = static_cast<int>(settings.maxDepth);
+    run.sppOffset = settings.sppOffset;
+    run.sppTotal = settings.sampleSetSize;
+
+    // --resume: the checkpoint holds samples [offset, offset + done); render the rest.
+    std::optional<RenderPart> resumed;
+    if (auto path = parsed.value("--resume")) {
+        resumed = readRenderPart(*path);
+        RenderPart rest = run;
+        rest.path = "this render";
+        checkSameRender({*resumed, rest});
+        if (resumed->sppOffset != settings.sppOffset)
+            throw InputError(*path + ": a checkpoint of samples from " +
+                             std::to_string(resumed->sppOffset) + ", this render starts at " +
+                             std::to_string(settings.sppOffset) + " (--spp-offset)");
+        if (resumed->spp >= settings.samplesPerPixel)
+            throw InputError(*path + ": already holds " + std::to_string(resumed->spp) +
+                             " samples per pixel, --spp asks for " +
+                             std::to_string(settings.samplesPerPixel));
+    }
+    const uint32_t resumedSpp = resumed ? resumed->spp : 0u;
+    RenderSettings rest = settings;
+    rest.sppOffset += resumedSpp;
+    rest.samplesPerPixel -= resumedSpp;
+
     Context context(contextOptionsFrom(parsed));
     ShaderCompiler compiler;
     PreparedScene prepared = prepareScene(std::move(scene));
-    WavefrontRenderer renderer(context, prepared, settings, compiler);
+    WavefrontRenderer renderer(context, prepared, rest, compiler);
     if (verbose)
         printVerbose(prepared, renderer, context, summary);
 
+    // The image so far: the resumed samples and this run's, by sample count.
+    auto imageSoFar = [&]() {
+        RenderPart part = run;
+        part.path = "this render";
+        part.sppOffset = rest.sppOffset;
+        part.spp = renderer.samplesDone();
+        part.rgb = renderer.readImage();
+        part.renderSeconds = renderer.stats().seconds;
+        if (!resumed)
+            return part;
+        if (part.spp == 0)
+            return *resumed;
+        return mergeRenderParts({*resumed, part}).image;
+    };
+    const auto checkpointPath = parsed.value("--checkpoint");
+    const double checkpointEvery = parsed.floatValue("--checkpoint-every", 60.0f, 0.01f, 1e9f);
+    std::optional<SignalStop> signals;
+    if (checkpointPath)
+        signals.emplace();
+    auto writeCheckpoint = [&]() {
+        RenderPart part = imageSoFar();
+        writeRenderPart(*checkpointPath, part,
+                        {{"checkpointOfSpp", std::to_string(settings.samplesPerPixel)}}, false);
+    };
+
     ProgressLine progress(!quiet, settings.timeLimitSeconds);
     WaveProgress last{};
-    renderer.render([&](const WaveProgress& wave) {
-        progress.update(wave);
-        last = wave;
-    });
+    double lastCheckpoint = 0.0;
+    renderer.render(
+        [&](const WaveProgress& wave) {
+            WaveProgress shown = wave;
+            shown.samplesDone += resumedSpp;
+            shown.samplesTotal += resumedSpp;
+            progress.update(shown);
+            last = shown;
+            if (checkpointPath && wave.secondsElapsed - lastCheckpoint >= checkpointEvery) {
+                writeCheckpoint();
+                lastCheckpoint = wave.secondsElapsed;
+            }
+        },
+        signals ? &signals->requested() : nullptr);
+    if (signals && signals->signal() != 0) {
+        writeCheckpoint();
+        std::fprintf(stderr, "\nwavefront: stopped by signal %d after %u spp; wrote %s (resume "
+                             "with --resume %s)\n",
+                     signals->signal(), resumedSpp + renderer.samplesDone(),
+                     checkpointPath->c_str(), checkpointPath->c_str());
+        return 128 + signals->signal();
+    }
     if (last.samplesDone < settings.samplesPerPixel)
         progress.update(last, true);
     const RenderStats& stats = renderer.stats();
-    std::vector<float> image = renderer.readImage();
-
-    std::string sceneHash = fileHash(scenePath);
-    if (auto env = parsed.value("--env"))
-        sceneHash += "+" + fileHash(*env);
-    writeExr(*output, static_cast<int>(settings.width), static_cast<int>(settings.height), image,
-             {{"software", "Wavefront"}, {"scene", scenePath},
-              {"sampler", samplerName(settings.sampler)}, {"sceneHash", sceneHash},
-              {"renderSettings", renderSettingsKey(settings, parsed)}},
-             {{"renderSeconds", static_cast<float>(stats.seconds)}},
-             {{"spp", static_cast<int>(stats.samplesPerPixel)},
-              {"seed", static_cast<int>(settings.seed)},
-              {"maxDepth", static_cast<int>(settings.maxDepth)},
-              {"sppOffset", static_cast<int>(settings.sppOffset)},
-              {"sppTotal", static_cast<int>(settings.sampleSetSize)}});
-    writePngPreview(pngPathFor(*output), static_cast<int>(settings.width),
-                    static_cast<int>(settings.height), image);
+    RenderPart finished = imageSoFar();
+    finished.sppOffset = settings.sppOffset;
+    writeRenderPart(*output, finished);
+    if (checkpointPath)
+        writeCheckpoint();
     if (auto json = parsed.value("--json"))
         writeStatsJson(*json, stats,
                        {scenePath, context.deviceName(), settings.width, settings.height,
                         settings.maxDepth, settings.seed});
     if (!quiet)
-        std::fprintf(stderr, "wavefront: wrote %s and %s (%.0f paths/s)\n", output->c_str(),
-                     pngPathFor(*output).c_str(), stats.paths / std::max(stats.seconds, 1e-9));
+        std::fprintf(stderr, "wavefront: wrote %s and %s (%u spp, %.0f paths/s)\n",
+                     output->c_str(), pngPathFor(*output).c_str(), finished.spp,
+                     stats.paths / std::max(stats.seconds, 1e-9));
     if (context.validationMessageCount() > 0) {
         std::fprintf(stderr, "wavefront: %u validation message(s)\n",
                      context.validationMessageCount());

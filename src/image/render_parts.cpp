@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 
 #include "errors.h"
 #include "image/error_metrics.h"
 #include "image/exr_io.h"
+#include "image/png_writer.h"
 
 namespace wf {
 
@@ -74,7 +76,26 @@ RenderPart readRenderPart(const std::string& path) {
     return part;
 }
 
-MergedRender mergeRenderParts(const std::vector<RenderPart>& parts) {
+void writeRenderPart(const std::string& path, const RenderPart& part,
+                     const std::vector<std::pair<std::string, std::string>>& extra,
+                     bool preview) {
+    std::vector<std::pair<std::string, std::string>> strings = {
+        {"software", "Wavefront"}, {"scene", part.scene}, {"sampler", part.sampler},
+        {"sceneHash", part.sceneHash}, {"renderSettings", part.renderSettings}};
+    strings.insert(strings.end(), extra.begin(), extra.end());
+    writeExr(path, part.width, part.height, part.rgb, strings,
+             {{"renderSeconds", static_cast<float>(part.renderSeconds)}},
+             {{"spp", static_cast<int>(part.spp)},
+              {"seed", part.seed},
+              {"maxDepth", part.maxDepth},
+              {"sppOffset", static_cast<int>(part.sppOffset)},
+              {"sppTotal", static_cast<int>(part.sppTotal)}});
+    if (preview)
+        writePngPreview(std::filesystem::path(path).replace_extension(".png").string(),
+                        part.width, part.height, part.rgb);
+}
+
+void checkSameRender(const std::vector<RenderPart>& parts) {
     if (parts.empty())
         throw UsageError("merge needs at least one part");
     const RenderPart& first = parts.front();
@@ -103,6 +124,10 @@ MergedRender mergeRenderParts(const std::vector<RenderPart>& parts) {
         if (part.sampler != first.sampler)
             differs(part, "sampler", part.sampler, first.sampler);
     }
+}
+
+MergedRender mergeRenderParts(const std::vector<RenderPart>& parts) {
+    checkSameRender(parts);
     std::vector<const RenderPart*> order;
     for (const RenderPart& part : parts)
         order.push_back(&part);

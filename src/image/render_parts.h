@@ -33,11 +33,22 @@ struct RenderPart {
 // Reads a part; InputError naming the file and the attribute when one is missing.
 RenderPart readRenderPart(const std::string& path);
 
+// Writes `part` (its rgb and every attribute readRenderPart reads, plus `extra` strings) as an
+// EXR, atomically, and its PNG preview beside it unless `preview` is false.
+void writeRenderPart(const std::string& path, const RenderPart& part,
+                     const std::vector<std::pair<std::string, std::string>>& extra = {},
+                     bool preview = true);
+
 struct MergedRender {
     RenderPart image;                  // path empty; spp the sum, sppOffset the first sample
     std::string ranges;                // "0-511,768-1023": the sample ranges merged
     std::vector<std::string> gaps;     // "512-767": samples in no part
 };
+
+// InputError naming the first part of `parts` that is not of the same render as parts[0]
+// (scene, size, settings, seed, sampler, a finite set's size). What mergeRenderParts checks
+// first; `render --resume` checks a checkpoint against the run the same way.
+void checkSameRender(const std::vector<RenderPart>& parts);
 
 // InputError naming the parts when they come from different scenes, settings, seeds, sizes or
 // (finite-set samplers) sets, or when two sample ranges overlap; gaps are reported, not

@@ -250,10 +250,11 @@ uint32_t WavefrontRenderer::renderSamples(uint32_t samples) {
     return samplesDone_;
 }
 
-void WavefrontRenderer::render(const std::function<void(const WaveProgress&)>& onWave) {
+void WavefrontRenderer::render(const std::function<void(const WaveProgress&)>& onWave,
+                               const std::atomic<bool>* stop) {
     const auto start = std::chrono::steady_clock::now();
     const uint32_t first = samplesDone_;
-    while (samplesDone_ < settings_.samplesPerPixel) {
+    while (samplesDone_ < settings_.samplesPerPixel && !(stop && stop->load())) {
         uint32_t samples = settings_.samplesPerPixel - samplesDone_;
         if (settings_.timeLimitSeconds > 0.0 && samplesDone_ > first) {
             // Whole passes only: as many as the pace so far says still fit.

@@ -5,6 +5,7 @@
 // whole samples of every pixel, or one sample of a range of pixels when a whole sample would
 // overrun the submit budget; its size follows the measured time of the previous waves.
 #pragma once
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -111,7 +112,10 @@ public:
 
     // Renders the remaining samples of settings.samplesPerPixel, calling `onWave` after each
     // wave.
-    void render(const std::function<void(const WaveProgress&)>& onWave = {});
+    // `stop`, when given and set (a signal handler may set it), ends the render before the
+    // next sample pass.
+    void render(const std::function<void(const WaveProgress&)>& onWave = {},
+                const std::atomic<bool>* stop = nullptr);
     // Progressive use (the viewer): adds `samples` more samples per pixel, in as many waves as
     // needed, and returns the total so far.
     uint32_t renderSamples(uint32_t samples);

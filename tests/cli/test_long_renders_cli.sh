@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# `wavefront merge` and `render --time-limit` end to end: parts of one render merge into the
-# image of one run; parts of another render, overlapping ranges and non-parts are refused in
-# one line (exit 2); a gap is reported; a time limit stops on a whole pass.
-# Usage: test_merge_cli.sh PATH/TO/wavefront PATH/TO/wf_compare_images PATH/TO/scenes
+# Long renders end to end: `wavefront merge` (parts of one render merge into the image of one
+# run; parts of another render, overlapping ranges and non-parts are refused in one line, exit
+# 2; a gap is reported), `render --time-limit` (stops on a whole pass), and checkpoints (SIGTERM
+# writes one; --resume continues it to the image of an uninterrupted run, and refuses a
+# checkpoint of another render).
+# Usage: test_long_renders_cli.sh PATH/TO/wavefront PATH/TO/wf_compare_images PATH/TO/scenes
 set -u
 wavefront=$1
 compare=$2
@@ -62,4 +64,37 @@ expect "stopped early, on a whole pass" json_has "$work/limited.json" "1 <= d['s
 check "time limit with a finite set" 2 "$wavefront" render "$box" -o "$work/x.exr" \
     --sampler stratified --time-limit 1
 expect "finite set: one line" one_line_error
+
+# Checkpoints: SIGTERM mid-render writes one and ends with 143; resuming it to D + 64 samples
+# gives the image of one run of D + 64.
+ck="$work/ck.exr"
+"$wavefront" render "$box" -o "$work/never.exr" --spp 1000000 --width 24 --max-depth 4 \
+    --checkpoint "$ck" --checkpoint-every 0.2 --quiet 2>"$work/interrupted.log" &
+pid=$!
+for _ in $(seq 1 100); do [ -s "$ck" ] && break; sleep 0.2; done
+kill -TERM "$pid"
+wait "$pid"
+code=$?
+expect "SIGTERM ends the render with 143" test "$code" -eq 143
+expect "checkpoint written" test -s "$ck"
+expect "no output from an interrupted render" test ! -e "$work/never.exr"
+done_spp=$(sed -n 's/.*after \([0-9]*\) spp.*/\1/p' "$work/interrupted.log")
+expect "the interruption says how far it got" test -n "$done_spp"
+target=$(( ${done_spp:-0} + 64 ))
+check "resume" 0 "$wavefront" render "$box" -o "$work/resumed.exr" --spp "$target" --width 24 \
+    --max-depth 4 --resume "$ck" --quiet
+check "uninterrupted run" 0 "$wavefront" render "$box" -o "$work/straight.exr" --spp "$target" \
+    --width 24 --max-depth 4 --quiet
+check "resumed = uninterrupted" 0 "$compare" "$work/resumed.exr" "$work/straight.exr" \
+    --spp "$target" --tolerance 1e-5
+check "resume into another seed" 2 "$wavefront" render "$box" -o "$work/x.exr" --spp "$target" \
+    --width 24 --max-depth 4 --seed 4 --resume "$ck"
+expect "another seed: one line" one_line_error
+expect "another seed: named" grep -q "seed 4 differs" "$work/stderr"
+check "resume at another size" 2 "$wavefront" render "$box" -o "$work/x.exr" --spp "$target" \
+    --width 32 --max-depth 4 --resume "$ck"
+expect "another size: one line" one_line_error
+check "resume past the target" 2 "$wavefront" render "$box" -o "$work/x.exr" --spp 1 \
+    --width 24 --max-depth 4 --resume "$ck"
+expect "past the target: one line" one_line_error
 finish
