@@ -46,7 +46,8 @@ const CommandSpec& convergeSpec() {
                 {"--time", "", "T", "render seconds per method and seed: samples double until a "
                                     "checkpoint passes T (default 4)"},
                 {"--methods", "", "LIST", "comma-separated methods, each words joined by '+': a "
-                                          "sampler, bsdf|nee|mis, no-randomize, triangle-area, "
+                                          "sampler, bsdf|nee|mis, uniform|power|tree (light "
+                                          "selection), no-randomize, triangle-area, "
                                           "sphere-area (default: every sampler with mis, then "
                                           "sobol+bsdf, sobol+nee)"},
                 {"--seeds", "", "N", "seeds per method, at least 5 (default 5)"},
