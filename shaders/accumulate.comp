@@ -4,7 +4,8 @@
 // hold several samples of every pixel, or one sample of a range of pixels). A sample with a
 // NaN or Inf component is dropped (zeroed) and counted; the test is on the bit pattern so
 // that no fast-math pass can fold it away.
-// In: radiance of the wave's paths. Out: film[pixel], counters.nonFiniteSamples.
+// In: radiance of the wave's paths (with --aov, their first hits too). Out: film[pixel]
+// (with --aov, aovFilm[3 pixel ..]), counters.nonFiniteSamples.
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "bindings.glsl"
@@ -22,14 +23,31 @@ void main() {
         return;
     uint pixel = pass.pixelBase + local;
     vec4 sum = film[pixel];
+#if WF_AOV
+    vec4 firstHit = aovFilm[3u * pixel];
+    vec4 normal = aovFilm[3u * pixel + 1u];
+    vec4 squares = aovFilm[3u * pixel + 2u];
+#endif
     uint dropped = 0u;
     for (uint s = 0u; s < pass.samplesPerPixel; ++s) {
-        vec3 value = radianceAt(local + s * pass.wavePixels).rgb;
+        uint path = local + s * pass.wavePixels;
+        vec3 value = radianceAt(path).rgb;
         if (isFiniteBits(value))
             sum.rgb += value;
         else
             ++dropped;
+#if WF_AOV
+        if (isFiniteBits(value))
+            squares.rgb += value * value;
+        firstHit += aovPath[2u * path];
+        normal += aovPath[2u * path + 1u];
+#endif
     }
+#if WF_AOV
+    aovFilm[3u * pixel] = firstHit;
+    aovFilm[3u * pixel + 1u] = normal;
+    aovFilm[3u * pixel + 2u] = squares;
+#endif
     if (dropped > 0u)
         atomicAdd(counters.nonFiniteSamples, dropped);
     film[pixel] = vec4(sum.rgb, sum.a + float(pass.samplesPerPixel));

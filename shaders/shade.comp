@@ -48,7 +48,17 @@ void main() {
         vec4 pathThroughput = throughputAt(path);
         v.beta = pathThroughput.rgb;
         v.etaScale = pathThroughput.w;
+#if WF_AOV
+        v.aovAlbedoDistance = vec4(0.0);
+        v.aovNormal = vec3(0.0);
+#endif
         shadePathVertex(v);
+#if WF_AOV
+        if (pass.depth == 0u) {
+            aovPath[2u * path] = v.aovAlbedoDistance;
+            aovPath[2u * path + 1u] = vec4(v.aovNormal, 0.0);
+        }
+#endif
         // Stores cost a loop over the lanes on lavapipe: skip the ones that change nothing
         // (most vertices find no emission).
         if (any(notEqual(v.radiance, vec3(0.0))))

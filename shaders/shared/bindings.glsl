@@ -40,6 +40,17 @@ layout(std430, binding = WF_BINDING_RAY_DIRECTION) buffer RayDirectionBuffer {
 layout(std430, binding = WF_BINDING_THROUGHPUT) buffer ThroughputBuffer {
     WfEntry throughput[];
 };
+#if WF_AOV
+// --aov: the camera ray's first hit per path, [2 path] = (albedo, distance), [2 path + 1] =
+// (shading normal, 0), zero where it hits no surface; and per pixel the sums of those and of
+// the radiance squared (for the variance), [3 pixel + 0, 1, 2], beside the film.
+layout(std430, binding = WF_BINDING_AOV_PATHS) buffer AovPathBuffer {
+    vec4 aovPath[];
+};
+layout(std430, binding = WF_BINDING_AOV_FILM) buffer AovFilmBuffer {
+    vec4 aovFilm[];
+};
+#endif
 layout(std430, binding = WF_BINDING_RADIANCE) buffer RadianceBuffer {
     WfEntry radiance[];
 };

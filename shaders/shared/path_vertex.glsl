@@ -26,6 +26,10 @@ struct PathVertex {
     vec3 shadowSegment;  // to the light point: t in (0, 1)
     uint shadowSphere;   // the sphere light it ends on (segmentOccluded leaves it out)
     vec3 shadowRadiance; // added if the segment is unoccluded
+#if WF_AOV
+    vec4 aovAlbedoDistance; // the surface this ray found: base colour and distance (--aov)
+    vec3 aovNormal;         // and its shading normal, facing the ray; zero on no surface
+#endif
 };
 
 // Weight of emission found by a ray whose direction had BSDF density directionPdf (0: camera or
@@ -114,6 +118,10 @@ void shadePathVertex(inout PathVertex v) {
     vec3 wo = -v.direction;
     SurfaceHit surface = loadSurface(v.hit.w, uintBitsToFloat(v.hit.y), uintBitsToFloat(v.hit.z),
                                      wo);
+#if WF_AOV
+    v.aovAlbedoDistance = vec4(surface.baseColor, t);
+    v.aovNormal = surface.ns;
+#endif
     if (any(greaterThan(surface.emission, vec3(0.0)))) {
         float lightPdf = 0.0;
 #if WF_HAS_TRIANGLE_EMITTERS && WF_LIGHT_SAMPLING != 0

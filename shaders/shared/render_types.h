@@ -43,6 +43,8 @@ namespace wf::gpu_types {
 // Lights beyond emissive triangles
 #define WF_BINDING_LIGHT_TREE 16         // LightTreeNode texels (light_tree.h)
 #define WF_BINDING_LIGHT_TREE_TRAILS 33  // uvec4 per emitter: trail bits, in-tree flag
+#define WF_BINDING_AOV_PATHS 34 // --aov: per path, the camera ray's first hit (2 vec4)
+#define WF_BINDING_AOV_FILM 35  // --aov: per pixel, sums of those and of radiance^2 (3 vec4)
 #define WF_BINDING_LIGHTS 17
 #define WF_BINDING_ENVIRONMENT 18       // vec4 radiance per texel
 #define WF_BINDING_ENVIRONMENT_ALIAS 19 // Emitter-shaped alias table over texels

@@ -1,8 +1,10 @@
 // wavefront render: load, build, trace all samples in waves, write EXR + PNG (+ JSON stats).
 #include <chrono>
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
+#include <sstream>
 #include <unistd.h>
 
 #include "app/cli.h"
@@ -45,6 +47,9 @@ const CommandSpec& renderSpec() {
                                                  "SIGTERM (which then end the render, exit 130 or "
                                                  "143)"},
                 {"--checkpoint-every", "", "SECONDS", "seconds between checkpoints (default 60)"},
+                {"--aov", "", "LIST", "extra EXR layers, comma-separated: albedo, normal (the "
+                                      "camera ray's first hit, as denoisers want them), depth, "
+                                      "variance (of each pixel's estimate)"},
                 {"--resume", "", "FILE.exr", "continue that checkpoint of this very render "
                                              "(scene, size, settings, seed) to --spp: the image "
                                              "of an uninterrupted run"},
@@ -126,6 +131,49 @@ private:
     double lastPrinted_ = -1.0;
 };
 
+// --aov's names, each once, in a fixed set.
+std::vector<std::string> parseAovList(const std::string& list) {
+    std::vector<std::string> names;
+    std::stringstream words(list);
+    for (std::string word; std::getline(words, word, ',');) {
+        if (word != "albedo" && word != "normal" && word != "depth" && word != "variance")
+            throw UsageError("--aov: unknown layer '" + word +
+                             "' (layers: albedo, normal, depth, variance)");
+        if (std::find(names.begin(), names.end(), word) != names.end())
+            throw UsageError("--aov names '" + word + "' twice");
+        names.push_back(word);
+    }
+    if (!list.empty() && names.empty())
+        throw UsageError("--aov needs at least one layer");
+    return names;
+}
+
+// The layers as Cycles names its passes, one channel each.
+std::vector<ExrChannel> aovChannels(const std::vector<std::string>& names, const AovImages& aov) {
+    std::vector<ExrChannel> channels;
+    auto add = [&](const std::string& layer, const char* suffixes, const std::vector<float>& data,
+                   int stride) {
+        for (int c = 0; suffixes[c] != '\0'; ++c) {
+            ExrChannel channel{layer + "." + suffixes[c], {}};
+            channel.values.resize(data.size() / stride);
+            for (size_t i = 0; i < channel.values.size(); ++i)
+                channel.values[i] = data[i * stride + c];
+            channels.push_back(std::move(channel));
+        }
+    };
+    for (const std::string& name : names) {
+        if (name == "albedo")
+            add("Denoising Albedo", "RGB", aov.albedo, 3);
+        else if (name == "normal")
+            add("Denoising Normal", "XYZ", aov.normal, 3);
+        else if (name == "depth")
+            add("Depth", "Z", aov.depth, 1);
+        else
+            add("Denoising Variance", "RGB", aov.variance, 3);
+    }
+    return channels;
+}
+
 // Everything that shapes the image but the seed and the sample range (their own attributes):
 // parts merge only when this agrees (image/render_parts.h).
 std::string renderSettingsKey(const RenderSettings& s, const ParsedArgs& parsed) {
@@ -194,6 +242,10 @@ int runRenderCommand(const std::vector<std::string>& args) {
         throw UsageError(std::string("--time-limit: the ") + samplerName(settings.sampler) +
                          " sampler's set is no stratification when cut short (pick sobol, "
                          "halton, independent or bluenoise)");
+    const std::vector<std::string> aovs = parseAovList(parsed.value("--aov").value_or(""));
+    settings.aov = !aovs.empty();
+    if (settings.aov && parsed.has("--resume"))
+        throw UsageError("--aov with --resume: the layers would cover this run's samples only");
     const bool quiet = parsed.has("--quiet");
     const bool verbose = parsed.has("--verbose");
 
@@ -300,7 +352,8 @@ int runRenderCommand(const std::vector<std::string>& args) {
     const RenderStats& stats = renderer.stats();
     RenderPart finished = imageSoFar();
     finished.sppOffset = settings.sppOffset;
-    writeRenderPart(*output, finished);
+    writeRenderPart(*output, finished, {}, true,
+                    settings.aov ? aovChannels(aovs, renderer.readAovs()) : std::vector<ExrChannel>{});
     if (checkpointPath)
         writeCheckpoint();
     if (auto json = parsed.value("--json"))

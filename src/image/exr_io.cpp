@@ -11,6 +11,7 @@
 #include <ImfOutputFile.h>
 #include <ImfStringAttribute.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <exception>
@@ -37,7 +38,14 @@ Imf::Slice rgbSlice(const float* base, int channel, const Imath::Box2i& window, 
 void writeExr(const std::string& path, int width, int height, const std::vector<float>& rgb,
               const std::vector<std::pair<std::string, std::string>>& stringAttrs,
               const std::vector<std::pair<std::string, float>>& floatAttrs,
-              const std::vector<std::pair<std::string, int>>& intAttrs) {
+              const std::vector<std::pair<std::string, int>>& intAttrs,
+              const std::vector<ExrChannel>& extraChannels) {
+    const size_t pixels = static_cast<size_t>(std::max(width, 0)) * std::max(height, 0);
+    for (const ExrChannel& channel : extraChannels)
+        if (channel.values.size() != pixels)
+            throw InternalError("writeExr(" + path + "): channel " + channel.name + " has " +
+                                std::to_string(channel.values.size()) + " values for " +
+                                std::to_string(pixels) + " pixels");
     if (width <= 0 || height <= 0 ||
         rgb.size() != static_cast<size_t>(width) * static_cast<size_t>(height) * 3) {
         throw InternalError("writeExr(" + path + "): " + std::to_string(width) + "x" +
@@ -50,6 +58,8 @@ void writeExr(const std::string& path, int width, int height, const std::vector<
         for (const char* name : CHANNELS) {
             header.channels().insert(name, Imf::Channel(Imf::FLOAT));
         }
+        for (const ExrChannel& channel : extraChannels)
+            header.channels().insert(channel.name, Imf::Channel(Imf::FLOAT));
         // OpenEXR throws here when a name is empty or a standard attribute of another type.
         for (const auto& [name, value] : stringAttrs) {
             header.insert(name, Imf::StringAttribute(value));
@@ -71,6 +81,11 @@ void writeExr(const std::string& path, int width, int height, const std::vector<
             for (int c = 0; c < 3; ++c) {
                 frame.insert(CHANNELS[c], rgbSlice(rgb.data(), c, header.dataWindow(), width));
             }
+            for (const ExrChannel& channel : extraChannels)
+                frame.insert(channel.name,
+                             Imf::Slice::Make(Imf::FLOAT, channel.values.data(),
+                                              header.dataWindow(), sizeof(float),
+                                              sizeof(float) * static_cast<size_t>(width)));
             file.setFrameBuffer(frame);
             file.writePixels(height);
         } catch (const std::exception& e) {
@@ -128,6 +143,31 @@ std::optional<std::string> readExrAttribute(const std::string& path, const std::
             return std::string(text);
         }
         return std::nullopt;
+    } catch (const std::exception& e) {
+        throw InputError(path + ": cannot read EXR: " + e.what());
+    }
+}
+
+std::optional<std::vector<float>> readExrChannel(const std::string& path, const std::string& name) {
+    try {
+        Imf::InputFile file(path.c_str());
+        if (!file.header().channels().findChannel(name))
+            return std::nullopt;
+        const Imath::Box2i window = file.header().dataWindow();
+        const int width = window.max.x - window.min.x + 1;
+        const int height = window.max.y - window.min.y + 1;
+        if (width <= 0 || height <= 0 || width > MAX_EXR_SIDE || height > MAX_EXR_SIDE)
+            throw InputError(path + ": data window of " + std::to_string(width) + "x" +
+                             std::to_string(height));
+        std::vector<float> values(static_cast<size_t>(width) * height);
+        Imf::FrameBuffer frame;
+        frame.insert(name, Imf::Slice::Make(Imf::FLOAT, values.data(), window, sizeof(float),
+                                            sizeof(float) * static_cast<size_t>(width)));
+        file.setFrameBuffer(frame);
+        file.readPixels(window.min.y, window.max.y);
+        return values;
+    } catch (const InputError&) {
+        throw;
     } catch (const std::exception& e) {
         throw InputError(path + ": cannot read EXR: " + e.what());
     }

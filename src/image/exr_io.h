@@ -14,6 +14,13 @@ struct ExrImage {
     std::vector<float> rgb; // row-major, top row first, 3 floats per pixel
 };
 
+// An extra float32 channel beside R, G, B (an AOV layer's, e.g. "albedo.R"): one value per
+// pixel, row-major.
+struct ExrChannel {
+    std::string name;
+    std::vector<float> values;
+};
+
 // Writes `rgb` (width * height * 3 floats, row-major, top row first) as float32 channels
 // R, G, B with ZIP compression, plus the given header attributes, atomically (see
 // writeFileAtomically). Attribute names must not clash with EXR's standard ones.
@@ -22,7 +29,12 @@ struct ExrImage {
 void writeExr(const std::string& path, int width, int height, const std::vector<float>& rgb,
               const std::vector<std::pair<std::string, std::string>>& stringAttrs = {},
               const std::vector<std::pair<std::string, float>>& floatAttrs = {},
-              const std::vector<std::pair<std::string, int>>& intAttrs = {});
+              const std::vector<std::pair<std::string, int>>& intAttrs = {},
+              const std::vector<ExrChannel>& extraChannels = {});
+
+// One float channel of an EXR by name; nullopt if the file has no such channel. Throws
+// InputError when the file cannot be read.
+std::optional<std::vector<float>> readExrChannel(const std::string& path, const std::string& name);
 
 // Reads channels R, G, B as float. Throws InputError when the file cannot be read, lacks one
 // of the channels, or its data window is empty or larger than 32768 pixels per side.

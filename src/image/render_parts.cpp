@@ -78,7 +78,7 @@ RenderPart readRenderPart(const std::string& path) {
 
 void writeRenderPart(const std::string& path, const RenderPart& part,
                      const std::vector<std::pair<std::string, std::string>>& extra,
-                     bool preview) {
+                     bool preview, const std::vector<ExrChannel>& channels) {
     std::vector<std::pair<std::string, std::string>> strings = {
         {"software", "Wavefront"}, {"scene", part.scene}, {"sampler", part.sampler},
         {"sceneHash", part.sceneHash}, {"renderSettings", part.renderSettings}};
@@ -89,7 +89,8 @@ void writeRenderPart(const std::string& path, const RenderPart& part,
               {"seed", part.seed},
               {"maxDepth", part.maxDepth},
               {"sppOffset", static_cast<int>(part.sppOffset)},
-              {"sppTotal", static_cast<int>(part.sppTotal)}});
+              {"sppTotal", static_cast<int>(part.sppTotal)}},
+             channels);
     if (preview)
         writePngPreview(std::filesystem::path(path).replace_extension(".png").string(),
                         part.width, part.height, part.rgb);

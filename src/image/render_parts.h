@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "image/exr_io.h"
+
 namespace wf {
 
 // FNV-1a 64 of a file's bytes, as 16 hex digits. Throws InputError if it cannot be read.
@@ -37,7 +39,7 @@ RenderPart readRenderPart(const std::string& path);
 // EXR, atomically, and its PNG preview beside it unless `preview` is false.
 void writeRenderPart(const std::string& path, const RenderPart& part,
                      const std::vector<std::pair<std::string, std::string>>& extra = {},
-                     bool preview = true);
+                     bool preview = true, const std::vector<ExrChannel>& channels = {});
 
 struct MergedRender {
     RenderPart image;                  // path empty; spp the sum, sppOffset the first sample

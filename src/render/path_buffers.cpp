@@ -8,7 +8,7 @@ using gpu_types::QueueCounters;
 using gpu_types::RenderParams;
 
 PathBuffers::PathBuffers(const Context& context, uint32_t pathCapacity, uint32_t pixelCount,
-                         PathStateUse use)
+                         PathStateUse use, bool aov)
     : params(context, "params", sizeof(RenderParams)),
       counters(context, "queue counters", sizeof(QueueCounters),
                VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT),
@@ -16,6 +16,10 @@ PathBuffers::PathBuffers(const Context& context, uint32_t pathCapacity, uint32_t
       radiance(context, "path radiance", uint64_t(pathCapacity) * 16) {
     if (use == PathStateUse::Megakernel)
         return; // its paths live in registers from camera to film
+    if (aov) {
+        aovPaths = Buffer(context, "aov paths", uint64_t(pathCapacity) * 32);
+        aovFilm = Buffer(context, "aov film", uint64_t(pixelCount) * 48);
+    }
     rayOrigin = Buffer(context, "ray origins", uint64_t(pathCapacity) * 16);
     rayDirection = Buffer(context, "ray directions", uint64_t(pathCapacity) * 16);
     throughput = Buffer(context, "throughput", uint64_t(pathCapacity) * 16);
@@ -39,6 +43,8 @@ void PathBuffers::appendBindings(DescriptorBindings& bindings) const {
         {WF_BINDING_RADIANCE, &radiance},
         {WF_BINDING_HITS, &hits},
         {WF_BINDING_RAY_QUEUES, &rayQueues},
+        {WF_BINDING_AOV_PATHS, &aovPaths},
+        {WF_BINDING_AOV_FILM, &aovFilm},
         {WF_BINDING_SHADOW_ORIGIN, &shadowOrigin},
         {WF_BINDING_SHADOW_DIRECTION, &shadowDirection},
         {WF_BINDING_SHADOW_RADIANCE, &shadowRadiance},
@@ -62,7 +68,7 @@ void PathBuffers::appendMemoryReport(
     std::vector<std::pair<std::string, uint64_t>>& report) const {
     for (const Buffer* buffer :
          {&params, &counters, &film, &rayOrigin, &rayDirection, &throughput, &radiance, &hits,
-          &shadowOrigin, &shadowDirection, &shadowRadiance, &rayQueues})
+          &shadowOrigin, &shadowDirection, &shadowRadiance, &rayQueues, &aovPaths, &aovFilm})
         if (*buffer)
             report.emplace_back(buffer->name(), buffer->size());
 }

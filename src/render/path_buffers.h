@@ -18,7 +18,7 @@ enum class PathStateUse { Megakernel, Wavefront, WavefrontWithShadowRays };
 
 struct PathBuffers {
     PathBuffers(const Context& context, uint32_t pathCapacity, uint32_t pixelCount,
-                PathStateUse use);
+                PathStateUse use, bool aov = false);
 
     void appendBindings(DescriptorBindings& bindings) const;
     void appendMemoryReport(std::vector<std::pair<std::string, uint64_t>>& report) const;
@@ -35,6 +35,8 @@ struct PathBuffers {
     Buffer shadowDirection;
     Buffer shadowRadiance;
     Buffer rayQueues;
+    Buffer aovPaths; // --aov only: the first hit per path, and per pixel its sums
+    Buffer aovFilm;
 };
 
 } // namespace wf

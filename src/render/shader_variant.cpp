@@ -40,6 +40,7 @@ ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& se
                             : need <= 8u                          ? 8u
                             : need <= WF_BVH_REGISTER_STACK_SIZE ? WF_BVH_REGISTER_STACK_SIZE
                                                                   : 0u;
+    variant.aov = settings.aov && !settings.megakernel;
     variant.sampler = settings.sampler;
     variant.randomizeSamples = settings.randomizeSamples;
     return variant;
@@ -68,7 +69,8 @@ ShaderDefines ShaderVariant::defines() const {
             {"WF_SAMPLER", std::to_string(static_cast<uint32_t>(sampler))},
             {"WF_SAMPLER_RANDOMIZE", flag(randomizeSamples)},
             {"WF_PACKED_STORES", flag(packedStores)},
-            {"WF_BVH_REGISTER_STACK", std::to_string(registerStack)}};
+            {"WF_BVH_REGISTER_STACK", std::to_string(registerStack)},
+            {"WF_AOV", flag(aov)}};
 }
 
 std::string ShaderVariant::describe() const {

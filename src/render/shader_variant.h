@@ -36,6 +36,7 @@ struct ShaderVariant {
     bool randomizeSamples = true;     // WF_SAMPLER_RANDOMIZE: off for --no-randomize
     bool packedStores = false;        // WF_PACKED_STORES: 64-bit stores, set by the renderer
     uint32_t registerStack = 0;       // WF_BVH_REGISTER_STACK: 8 or 16 entries in vectors, or 0
+    bool aov = false;                 // WF_AOV: first-hit albedo, normal, distance, radiance^2
 
     bool lightsBuffer() const { return sphereLights || deltaLights; }
     bool lightTree() const {

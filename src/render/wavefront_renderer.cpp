@@ -68,8 +68,8 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
                                    : variant_.nextEventEstimation
                                        ? PathStateUse::WavefrontWithShadowRays
                                        : PathStateUse::Wavefront;
-    pathBuffers_ =
-        std::make_unique<PathBuffers>(context, pathCapacity_, pixelCount_, pathState);
+    pathBuffers_ = std::make_unique<PathBuffers>(context, pathCapacity_, pixelCount_, pathState,
+                                                 variant_.aov);
     DescriptorBindings bindings;
     sceneBuffers_->appendBindings(bindings);
     pathBuffers_->appendBindings(bindings);
@@ -275,6 +275,8 @@ void WavefrontRenderer::render(const std::function<void(const WaveProgress&)>& o
 void WavefrontRenderer::reset() {
     std::vector<float> zeros(size_t(pixelCount_) * 4, 0.0f);
     pathBuffers_->film.upload(zeros);
+    if (pathBuffers_->aovFilm)
+        pathBuffers_->aovFilm.upload(std::vector<float>(size_t(pixelCount_) * 12, 0.0f));
     samplesDone_ = 0;
     pixelCursor_ = 0;
     stats_ = {};
@@ -314,6 +316,34 @@ std::vector<float> WavefrontRenderer::readImage() const {
             rgb[3 * i + c] = count > 0.0f ? film[4 * i + c] / count : 0.0f;
     }
     return rgb;
+}
+
+AovImages WavefrontRenderer::readAovs() const {
+    if (!pathBuffers_->aovFilm)
+        throw InternalError("readAovs: the renderer was made without RenderSettings.aov");
+    const std::vector<float> film = pathBuffers_->film.download<float>();
+    const std::vector<float> aov = pathBuffers_->aovFilm.download<float>();
+    AovImages images;
+    images.albedo.resize(size_t(pixelCount_) * 3);
+    images.normal.resize(size_t(pixelCount_) * 3);
+    images.depth.resize(pixelCount_);
+    images.variance.resize(size_t(pixelCount_) * 3);
+    for (size_t i = 0; i < pixelCount_; ++i) {
+        const double n = film[4 * i + 3];
+        if (!(n > 0.0))
+            continue;
+        const float* sums = &aov[12 * i];
+        for (int c = 0; c < 3; ++c) {
+            images.albedo[3 * i + c] = float(sums[c] / n);
+            images.normal[3 * i + c] = float(sums[4 + c] / n);
+            // Of the mean of n samples: (sum x^2 - (sum x)^2 / n) / (n (n - 1)).
+            const double sum = film[4 * i + c], sumSq = sums[8 + c];
+            images.variance[3 * i + c] =
+                n > 1.0 ? float(std::max(0.0, sumSq - sum * sum / n) / (n * (n - 1.0))) : 0.0f;
+        }
+        images.depth[i] = float(sums[3] / n);
+    }
+    return images;
 }
 
 std::vector<std::pair<std::string, uint64_t>> WavefrontRenderer::memoryReport() const {

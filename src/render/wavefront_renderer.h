@@ -75,6 +75,18 @@ struct RenderSettings {
     // any-hit traversal's where it fits in 16 (WF_BVH_REGISTER_STACK, faster on lavapipe);
     // off, a private array. Same image.
     bool registerStack = true;
+    // --aov: also accumulate the camera ray's first hit (albedo, shading normal, distance) and
+    // the radiance squared per pixel (readAovs). The wavefront only; the image is unchanged.
+    bool aov = false;
+};
+
+// Per pixel, the mean over its samples of the camera ray's first hit (zero where it found no
+// surface), and the variance of the pixel's radiance estimate (of its mean, per channel).
+struct AovImages {
+    std::vector<float> albedo;   // rgb per pixel
+    std::vector<float> normal;   // xyz per pixel, the mean of unit normals (not renormalised)
+    std::vector<float> depth;    // one per pixel: distance along the camera ray
+    std::vector<float> variance; // rgb per pixel
 };
 
 struct RenderStats {
@@ -141,6 +153,7 @@ public:
 
     // Linear radiance per pixel (mean of the samples), RGB, top row first.
     std::vector<float> readImage() const;
+    AovImages readAovs() const; // needs RenderSettings.aov
     const RenderStats& stats() const { return stats_; }
     const ShaderDefines& shaderDefines() const { return defines_; }
     const ShaderVariant& variant() const { return variant_; }

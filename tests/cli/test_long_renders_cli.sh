@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Long renders end to end: `wavefront merge` (parts of one render merge into the image of one
 # run; parts of another render, overlapping ranges and non-parts are refused in one line, exit
-# 2; a gap is reported), `render --time-limit` (stops on a whole pass), and checkpoints (SIGTERM
-# writes one; --resume continues it to the image of an uninterrupted run, and refuses a
-# checkpoint of another render).
+# 2; a gap is reported), `render --time-limit` (stops on a whole pass), --aov layers, and
+# checkpoints (SIGTERM writes one; --resume continues it to the image of an uninterrupted run,
+# and refuses a checkpoint of another render).
 # Usage: test_long_renders_cli.sh PATH/TO/wavefront PATH/TO/wf_compare_images PATH/TO/scenes
 set -u
 wavefront=$1
@@ -65,6 +65,17 @@ check "time limit with a finite set" 2 "$wavefront" render "$box" -o "$work/x.ex
     --sampler stratified --time-limit 1
 expect "finite set: one line" one_line_error
 
+# --aov: the layers as Cycles names its passes (the header names them in plain text).
+check "aov layers" 0 "$wavefront" render "$box" -o "$work/aov.exr" --spp 4 --width 24 \
+    --max-depth 4 --aov albedo,normal,depth,variance --quiet
+for channel in "Denoising Albedo.R" "Denoising Normal.Z" "Depth.Z" "Denoising Variance.B"; do
+    expect "aov channel $channel" grep -a -q "$channel" "$work/aov.exr"
+done
+check "unknown aov" 2 "$wavefront" render "$box" -o "$work/x.exr" --aov albedo,shadow
+expect "unknown aov: one line" one_line_error
+check "aov twice" 2 "$wavefront" render "$box" -o "$work/x.exr" --aov depth,depth
+expect "aov twice: one line" one_line_error
+
 # Checkpoints: SIGTERM mid-render writes one and ends with 143; resuming it to D + 64 samples
 # gives the image of one run of D + 64.
 ck="$work/ck.exr"
@@ -94,6 +105,9 @@ expect "another seed: named" grep -q "seed 4 differs" "$work/stderr"
 check "resume at another size" 2 "$wavefront" render "$box" -o "$work/x.exr" --spp "$target" \
     --width 32 --max-depth 4 --resume "$ck"
 expect "another size: one line" one_line_error
+check "resume with aov" 2 "$wavefront" render "$box" -o "$work/x.exr" --spp "$target" \
+    --width 24 --max-depth 4 --resume "$ck" --aov albedo
+expect "resume with aov: one line" one_line_error
 check "resume past the target" 2 "$wavefront" render "$box" -o "$work/x.exr" --spp 1 \
     --width 24 --max-depth 4 --resume "$ck"
 expect "past the target: one line" one_line_error

@@ -54,7 +54,8 @@ RenderResult renderScene(const Scene& scene, const RenderSettings& settings) {
     PreparedScene prepared = prepareScene(scene);
     WavefrontRenderer renderer(gpuContext(), prepared, settings, compiler);
     renderer.render();
-    return {renderer.readImage(), renderer.stats()};
+    return {renderer.readImage(), renderer.stats(),
+            settings.aov ? renderer.readAovs() : AovImages{}};
 }
 
 MeanAndError imageMean(const std::vector<float>& rgb) {

@@ -19,6 +19,7 @@ Scene furnaceBox(float albedo, float emission);
 struct RenderResult {
     std::vector<float> rgb; // mean radiance per pixel
     RenderStats stats;
+    AovImages aov;          // with RenderSettings.aov only
 };
 
 RenderResult renderScene(const Scene& scene, const RenderSettings& settings);

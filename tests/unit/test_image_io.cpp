@@ -152,5 +152,18 @@ TEST(PngTonemap, SrgbEncodingClampsAndZeroesNonFinite) {
     EXPECT_EQ(linearToSrgb8(INFINITY), 0);
 }
 
+TEST(ExrLayers, ExtraChannelsRoundTrip) {
+    const std::string path = ::testing::TempDir() + "layers.exr";
+    writeExr(path, 2, 1, {0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f}, {}, {}, {},
+             {{"Depth.Z", {1.5f, 2.5f}}, {"Denoising Albedo.R", {0.25f, 0.75f}}});
+    EXPECT_EQ(readExrChannel(path, "Depth.Z"), (std::vector<float>{1.5f, 2.5f}));
+    EXPECT_EQ(readExrChannel(path, "Denoising Albedo.R"), (std::vector<float>{0.25f, 0.75f}));
+    EXPECT_FALSE(readExrChannel(path, "Depth.W").has_value());
+    EXPECT_EQ(readExr(path).rgb[4], 0.5f); // the image itself as before
+    EXPECT_THROW(writeExr(path, 2, 1, std::vector<float>(6, 0.0f), {}, {}, {},
+                          {{"Depth.Z", {1.0f}}}),
+                 InternalError);
+}
+
 } // namespace
 } // namespace wf
