@@ -80,7 +80,8 @@ const CommandSpec& renderSpec() {
         "  WAVEFRONT_CACHE_DIR=DIR   SPIR-V cache (default ~/.cache/wavefront; empty: none)\n"
         "  LP_NUM_THREADS=N          lavapipe's threads (default here: twice the CPU cores)\n"
         "\n"
-        "Exit codes: 0 done, 2 bad usage or bad input, 1 internal or device failure.\n"};
+        "Exit codes: 0 done, 2 bad usage or bad input, 1 internal or device failure; with\n"
+        "--checkpoint, 130 or 143 after SIGINT or SIGTERM (the checkpoint written).\n"};
     return spec;
 }
 
