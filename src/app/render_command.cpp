@@ -95,10 +95,6 @@ void applySppRangeFlags(const ParsedArgs& parsed, RenderSettings& settings) {
                          " is less than --spp-offset + --spp = " + std::to_string(total));
 }
 
-std::string pngPathFor(const std::string& exrPath) {
-    return fs::path(exrPath).replace_extension(".png").string();
-}
-
 class ProgressLine {
 public:
     ProgressLine(bool enabled, double timeLimit)
@@ -363,7 +359,7 @@ int runRenderCommand(const std::vector<std::string>& args) {
                         settings.maxDepth, settings.seed});
     if (!quiet)
         std::fprintf(stderr, "wavefront: wrote %s and %s (%u spp, %.0f paths/s)\n",
-                     output->c_str(), pngPathFor(*output).c_str(), finished.spp,
+                     output->c_str(), previewPathFor(*output).c_str(), finished.spp,
                      stats.paths / std::max(stats.seconds, 1e-9));
     if (context.validationMessageCount() > 0) {
         std::fprintf(stderr, "wavefront: %u validation message(s)\n",

@@ -52,6 +52,12 @@ std::string range(uint32_t first, uint32_t end) {
     return std::to_string(first) + "-" + std::to_string(end - 1);
 }
 
+void appendRange(std::string& list, uint32_t first, uint32_t end) {
+    if (!list.empty())
+        list += ',';
+    list += range(first, end);
+}
+
 } // namespace
 
 RenderPart readRenderPart(const std::string& path) {
@@ -76,6 +82,10 @@ RenderPart readRenderPart(const std::string& path) {
     return part;
 }
 
+std::string previewPathFor(const std::string& exrPath) {
+    return std::filesystem::path(exrPath).replace_extension(".png").string();
+}
+
 void writeRenderPart(const std::string& path, const RenderPart& part,
                      const std::vector<std::pair<std::string, std::string>>& extra,
                      bool preview, const std::vector<ExrChannel>& channels) {
@@ -92,7 +102,7 @@ void writeRenderPart(const std::string& path, const RenderPart& part,
               {"sppTotal", static_cast<int>(part.sppTotal)}},
              channels);
     if (preview)
-        writePngPreview(std::filesystem::path(path).replace_extension(".png").string(),
+        writePngPreview(previewPathFor(path),
                         part.width, part.height, part.rgb);
 }
 
@@ -149,7 +159,7 @@ MergedRender mergeRenderParts(const std::vector<RenderPart>& parts) {
             throw InputError(part->path + " (samples " + range(part->sppOffset, end) +
                              ") overlaps samples " + range(runStart, runEnd) + " of another part");
         if (part->sppOffset > runEnd) {
-            merged.ranges += (merged.ranges.empty() ? "" : ",") + range(runStart, runEnd);
+            appendRange(merged.ranges, runStart, runEnd);
             merged.gaps.push_back(range(runEnd, part->sppOffset));
             runStart = part->sppOffset;
         }
@@ -159,7 +169,7 @@ MergedRender mergeRenderParts(const std::vector<RenderPart>& parts) {
         merged.image.spp += part->spp;
         merged.image.renderSeconds += part->renderSeconds;
     }
-    merged.ranges += (merged.ranges.empty() ? "" : ",") + range(runStart, runEnd);
+    appendRange(merged.ranges, runStart, runEnd);
     merged.image.rgb = mergeBySampleCount(images, weights);
     return merged;
 }

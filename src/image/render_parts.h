@@ -35,6 +35,9 @@ struct RenderPart {
 // Reads a part; InputError naming the file and the attribute when one is missing.
 RenderPart readRenderPart(const std::string& path);
 
+// The PNG preview written beside OUT.exr: OUT.png.
+std::string previewPathFor(const std::string& exrPath);
+
 // Writes `part` (its rgb and every attribute readRenderPart reads, plus `extra` strings) as an
 // EXR, atomically, and its PNG preview beside it unless `preview` is false.
 void writeRenderPart(const std::string& path, const RenderPart& part,
