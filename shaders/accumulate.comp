@@ -5,10 +5,12 @@
 // NaN or Inf component is dropped (zeroed) and counted; the test is on the bit pattern so
 // that no fast-math pass can fold it away.
 // In: radiance of the wave's paths (with --aov, their first hits too). Out: film[pixel]
-// (with --aov, aovFilm[3 pixel ..]), counters.nonFiniteSamples.
+// (with --aov, aovFilm[2 pixel ..]; with WF_SECOND_MOMENT, momentFilm[pixel]),
+// counters.nonFiniteSamples.
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "bindings.glsl"
+#include "wave_paths.glsl"
 
 layout(push_constant) uniform Push { PassConstants pass; };
 
@@ -21,32 +23,38 @@ void main() {
     uint local = gl_GlobalInvocationID.x;
     if (local >= pass.wavePixels)
         return;
-    uint pixel = pass.pixelBase + local;
+    uint pixel = wavePixel(pass, local);
     vec4 sum = film[pixel];
 #if WF_AOV
-    vec4 firstHit = aovFilm[3u * pixel];
-    vec4 normal = aovFilm[3u * pixel + 1u];
-    vec4 squares = aovFilm[3u * pixel + 2u];
+    vec4 firstHit = aovFilm[2u * pixel];
+    vec4 normal = aovFilm[2u * pixel + 1u];
+#endif
+#if WF_SECOND_MOMENT
+    vec4 squares = momentFilm[pixel];
 #endif
     uint dropped = 0u;
     for (uint s = 0u; s < pass.samplesPerPixel; ++s) {
         uint path = local + s * pass.wavePixels;
         vec3 value = radianceAt(path).rgb;
-        if (isFiniteBits(value))
+        if (isFiniteBits(value)) {
             sum.rgb += value;
-        else
-            ++dropped;
-#if WF_AOV
-        if (isFiniteBits(value))
+#if WF_SECOND_MOMENT
             squares.rgb += value * value;
+#endif
+        } else {
+            ++dropped;
+        }
+#if WF_AOV
         firstHit += aovPath[2u * path];
         normal += aovPath[2u * path + 1u];
 #endif
     }
 #if WF_AOV
-    aovFilm[3u * pixel] = firstHit;
-    aovFilm[3u * pixel + 1u] = normal;
-    aovFilm[3u * pixel + 2u] = squares;
+    aovFilm[2u * pixel] = firstHit;
+    aovFilm[2u * pixel + 1u] = normal;
+#endif
+#if WF_SECOND_MOMENT
+    momentFilm[pixel] = squares;
 #endif
     if (dropped > 0u)
         atomicAdd(counters.nonFiniteSamples, dropped);

@@ -42,13 +42,23 @@ layout(std430, binding = WF_BINDING_THROUGHPUT) buffer ThroughputBuffer {
 };
 #if WF_AOV
 // --aov: the camera ray's first hit per path, [2 path] = (albedo, distance), [2 path + 1] =
-// (shading normal, 0), zero where it hits no surface; and per pixel the sums of those and of
-// the radiance squared (for the variance), [3 pixel + 0, 1, 2], beside the film.
+// (shading normal, 0), zero where it hits no surface; and per pixel the sums of those,
+// [2 pixel + 0, 1], beside the film.
 layout(std430, binding = WF_BINDING_AOV_PATHS) buffer AovPathBuffer {
     vec4 aovPath[];
 };
 layout(std430, binding = WF_BINDING_AOV_FILM) buffer AovFilmBuffer {
     vec4 aovFilm[];
+};
+#endif
+#if WF_SECOND_MOMENT
+layout(std430, binding = WF_BINDING_MOMENT_FILM) buffer MomentFilmBuffer {
+    vec4 momentFilm[]; // rgb: sum of radiance squared, beside the film's sum (a: unused)
+};
+#endif
+#if WF_ADAPTIVE
+layout(std430, binding = WF_BINDING_ACTIVE_PIXELS) readonly buffer ActivePixelBuffer {
+    uint activePixels[]; // image pixel indices, in the order waves cover them
 };
 #endif
 layout(std430, binding = WF_BINDING_RADIANCE) buffer RadianceBuffer {

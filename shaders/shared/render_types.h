@@ -44,7 +44,9 @@ namespace wf::gpu_types {
 #define WF_BINDING_LIGHT_TREE 16         // LightTreeNode texels (light_tree.h)
 #define WF_BINDING_LIGHT_TREE_TRAILS 33  // uvec4 per emitter: trail bits, in-tree flag
 #define WF_BINDING_AOV_PATHS 34 // --aov: per path, the camera ray's first hit (2 vec4)
-#define WF_BINDING_AOV_FILM 35  // --aov: per pixel, sums of those and of radiance^2 (3 vec4)
+#define WF_BINDING_AOV_FILM 35  // --aov: per pixel, sums of those (2 vec4)
+#define WF_BINDING_MOMENT_FILM 36   // --aov variance, --target-error: per pixel, radiance^2 sums
+#define WF_BINDING_ACTIVE_PIXELS 37 // --target-error: the pixels a wave's pixel range lists
 #define WF_BINDING_LIGHTS 17
 #define WF_BINDING_ENVIRONMENT 18       // vec4 radiance per texel
 #define WF_BINDING_ENVIRONMENT_ALIAS 19 // Emitter-shaped alias table over texels
@@ -114,13 +116,14 @@ struct QueueCounters {
 
 // A wave covers pixels [pixelBase, pixelBase + wavePixels) x samples [sampleBase, sampleBase +
 // samplesPerPixel): path p is sample sampleBase + p / wavePixels of pixel pixelBase + p %
-// wavePixels (wave_paths.glsl). Waves smaller than the image keep a submit short.
+// wavePixels (wave_paths.glsl). Waves smaller than the image keep a submit short. With
+// WF_ADAPTIVE the pixel range indexes the active-pixel list instead of the image.
 struct PassConstants {
     uint depth;       // bounce index: the ray segment being processed is depth + 1
     uint sampleBase;  // sample index of the wave's first sample per pixel
     uint pathCount;   // paths in this wave: wavePixels * samplesPerPixel
     uint samplesPerPixel; // samples per pixel in this wave
-    uint pixelBase;   // first pixel of the wave
+    uint pixelBase;   // first pixel of the wave (WF_ADAPTIVE: first entry of the list)
     uint wavePixels;  // pixels in the wave
     uint pad0;
     uint pad1;

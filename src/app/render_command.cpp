@@ -15,6 +15,7 @@
 #include "errors.h"
 #include "gpu/context.h"
 #include "image/render_parts.h"
+#include "render/adaptive_sampling.h"
 #include "render/scene_buffers.h"
 #include "render/wavefront_renderer.h"
 #include "scene/scene_summary.h"
@@ -42,6 +43,12 @@ const CommandSpec& renderSpec() {
                                                 "SECONDS of rendering (at least one pass; the EXR's "
                                                 "spp says how many were done; not with the "
                                                 "finite-set samplers)"},
+                {"--target-error", "", "R", "adaptive sampling: a pilot pass, then per-pixel "
+                                            "sample counts that bring the image's estimated "
+                                            "relMSE to R, --spp the most any pixel gets (default "
+                                            "then 1024); unbiased (the pilot is not in the "
+                                            "image); not with --time-limit, --checkpoint, "
+                                            "--resume, --spp-offset or the finite-set samplers"},
                 {"--checkpoint", "", "FILE.exr", "write the image so far there every "
                                                  "--checkpoint-every seconds and on SIGINT or "
                                                  "SIGTERM (which then end the render, exit 130 or "
@@ -49,7 +56,8 @@ const CommandSpec& renderSpec() {
                 {"--checkpoint-every", "", "SECONDS", "seconds between checkpoints (default 60)"},
                 {"--aov", "", "LIST", "extra EXR layers, comma-separated: albedo, normal (the "
                                       "camera ray's first hit, as denoisers want them), depth, "
-                                      "variance (of each pixel's estimate)"},
+                                      "variance (of each pixel's estimate), samples (each "
+                                      "pixel's sample count)"},
                 {"--resume", "", "FILE.exr", "continue that checkpoint of this very render "
                                              "(scene, size, settings, seed) to --spp: the image "
                                              "of an uninterrupted run"},
@@ -121,6 +129,25 @@ public:
         std::fflush(stderr);
     }
 
+    void update(const AdaptiveProgress& round, double target) {
+        if (!enabled_)
+            return;
+        const bool last = round.stage == "render" && round.round == round.rounds;
+        if (!tty_ && !last && round.seconds - lastPrinted_ < 1.0 && round.stage != "pilot")
+            return;
+        lastPrinted_ = round.seconds;
+        char predicted[64] = "";
+        if (round.predictedRelMse > 0.0)
+            std::snprintf(predicted, sizeof predicted, " (predicted %.3g)",
+                          round.predictedRelMse);
+        std::fprintf(stderr, "%swavefront: target relMSE %g%s: %s round %u/%u, %u pixels to %u "
+                             "spp, %.1f s elapsed%s",
+                     tty_ ? "\r" : "", target, predicted, round.stage.c_str(), round.round,
+                     round.rounds, round.activePixels, round.level, round.seconds,
+                     tty_ && !last && round.stage != "pilot" ? "   " : "\n");
+        std::fflush(stderr);
+    }
+
 private:
     bool enabled_;
     bool tty_;
@@ -133,9 +160,10 @@ std::vector<std::string> parseAovList(const std::string& list) {
     std::vector<std::string> names;
     std::stringstream words(list);
     for (std::string word; std::getline(words, word, ',');) {
-        if (word != "albedo" && word != "normal" && word != "depth" && word != "variance")
+        if (word != "albedo" && word != "normal" && word != "depth" && word != "variance" &&
+            word != "samples")
             throw UsageError("--aov: unknown layer '" + word +
-                             "' (layers: albedo, normal, depth, variance)");
+                             "' (layers: albedo, normal, depth, variance, samples)");
         if (std::find(names.begin(), names.end(), word) != names.end())
             throw UsageError("--aov names '" + word + "' twice");
         names.push_back(word);
@@ -146,7 +174,8 @@ std::vector<std::string> parseAovList(const std::string& list) {
 }
 
 // The layers as Cycles names its passes, one channel each.
-std::vector<ExrChannel> aovChannels(const std::vector<std::string>& names, const AovImages& aov) {
+std::vector<ExrChannel> aovChannels(const std::vector<std::string>& names, const AovImages& aov,
+                                    const std::vector<float>& sampleCounts) {
     std::vector<ExrChannel> channels;
     auto add = [&](const std::string& layer, const char* suffixes, const std::vector<float>& data,
                    int stride) {
@@ -165,8 +194,10 @@ std::vector<ExrChannel> aovChannels(const std::vector<std::string>& names, const
             add("Denoising Normal", "XYZ", aov.normal, 3);
         else if (name == "depth")
             add("Depth", "Z", aov.depth, 1);
-        else
+        else if (name == "variance")
             add("Denoising Variance", "RGB", aov.variance, 3);
+        else
+            add("Sample Count", "Y", sampleCounts, 1);
     }
     return channels;
 }
@@ -183,7 +214,9 @@ std::string renderSettingsKey(const RenderSettings& s, const ParsedArgs& parsed)
            (s.triangleSolidAngle ? "solid-angle" : "area") + " sphere " +
            (s.sphereSolidAngle ? "solid-angle" : "area") + " " + samplerName(s.sampler) +
            (s.randomizeSamples ? "" : " no-randomize") + " camera " +
-           parsed.value("--camera").value_or("default");
+           parsed.value("--camera").value_or("default") +
+           (parsed.has("--target-error") ? " target-error " + *parsed.value("--target-error")
+                                         : "");
 }
 
 void printVerbose(const PreparedScene& scene, const WavefrontRenderer& renderer,
@@ -211,6 +244,104 @@ void printVerbose(const PreparedScene& scene, const WavefrontRenderer& renderer,
                  total / (1024.0 * 1024.0));
 }
 
+// 1 (and a line saying so) when the validation layer spoke, else 0.
+int validationExitCode(const Context& context) {
+    if (context.validationMessageCount() == 0)
+        return 0;
+    std::fprintf(stderr, "wavefront: %u validation message(s)\n",
+                 context.validationMessageCount());
+    return 1;
+}
+
+// --target-error refuses what would need a sample range it does not have.
+void checkAdaptiveFlags(const ParsedArgs& parsed, const RenderSettings& settings) {
+    for (const char* flag : {"--time-limit", "--checkpoint", "--resume", "--spp-offset",
+                             "--spp-total"})
+        if (parsed.has(flag))
+            throw UsageError(std::string("--target-error with ") + flag +
+                             ": adaptive renders are whole renders (their sample counts differ "
+                             "per pixel)");
+    if (samplerIsFiniteSet(settings.sampler))
+        throw UsageError(std::string("--target-error: the ") + samplerName(settings.sampler) +
+                         " sampler's set is no stratification when a pixel takes part of it "
+                         "(pick sobol, halton, independent or bluenoise)");
+    if (settings.samplesPerPixel < 8)
+        throw UsageError("--target-error needs --spp (the most samples a pixel gets) of at "
+                         "least 8");
+}
+
+struct OutputRequest {
+    std::string exr;
+    std::optional<std::string> json;
+    std::vector<std::string> aovs;
+    bool quiet = false;
+};
+
+// The --target-error render: pilot, allocation, rounds (render/adaptive_sampling.h).
+void renderAdaptively(WavefrontRenderer& renderer, const RenderSettings& settings,
+                      double targetError, RenderPart run, const OutputRequest& output,
+                      const StatsContext& statsContext) {
+    AdaptiveSettings adaptive;
+    adaptive.targetError = targetError;
+    adaptive.maxSpp = settings.samplesPerPixel;
+    ProgressLine progress(!output.quiet, 0.0);
+    const AdaptiveResult result = renderAdaptive(
+        renderer, settings.seed, adaptive, settings.width, settings.height,
+        [&](const AdaptiveProgress& round) { progress.update(round, targetError); });
+    const SampleAllocation& allocation = result.allocation;
+    run.path = "this render";
+    run.spp = static_cast<uint32_t>(std::lround(allocation.meanSpp));
+    run.rgb = result.rgb;
+    run.renderSeconds = result.stats.seconds;
+    char numbers[6][32];
+    std::snprintf(numbers[0], sizeof numbers[0], "%g", targetError);
+    std::snprintf(numbers[1], sizeof numbers[1], "%.6g", result.estimatedRelMse);
+    std::snprintf(numbers[2], sizeof numbers[2], "%.6g", allocation.predictedRelMse);
+    std::snprintf(numbers[3], sizeof numbers[3], "%.6g", allocation.meanSpp);
+    std::snprintf(numbers[4], sizeof numbers[4], "%u", result.pilotSpp);
+    std::snprintf(numbers[5], sizeof numbers[5], "%u", allocation.levels.front());
+    writeRenderPart(output.exr, run,
+                    {{"targetError", numbers[0]}, {"estimatedRelMse", numbers[1]},
+                     {"predictedRelMse", numbers[2]}, {"meanSpp", numbers[3]},
+                     {"pilotSpp", numbers[4]}, {"minSpp", numbers[5]},
+                     {"maxSpp", std::to_string(settings.samplesPerPixel)}},
+                    true,
+                    output.aovs.empty()
+                        ? std::vector<ExrChannel>{}
+                        : aovChannels(output.aovs,
+                                      settings.aov ? renderer.readAovs() : AovImages{},
+                                      result.sampleCounts));
+    if (output.json) {
+        StatsContext context = statsContext;
+        context.extraFields.push_back(
+            {"adaptive",
+             std::string("{\"targetError\": ") + jsonNumber(targetError) +
+                 ", \"estimatedRelMse\": " + jsonNumber(result.estimatedRelMse) +
+                 ", \"predictedRelMse\": " + jsonNumber(allocation.predictedRelMse) +
+                 ", \"targetMet\": " + (allocation.targetMet ? "true" : "false") +
+                 ", \"meanSpp\": " + jsonNumber(allocation.meanSpp) +
+                 ", \"pilotSpp\": " + std::to_string(result.pilotSpp) +
+                 ", \"minSpp\": " + std::to_string(allocation.levels.front()) +
+                 ", \"maxSpp\": " + std::to_string(settings.samplesPerPixel) +
+                 ", \"rounds\": " + std::to_string(allocation.levels.size()) + "}"});
+        RenderStats stats = result.stats;
+        stats.samplesPerPixel = run.spp;
+        writeStatsJson(*output.json, stats, context);
+    }
+    if (!allocation.targetMet)
+        std::fprintf(stderr, "wavefront: warning: target relMSE %g is out of reach within "
+                             "--spp %u (predicted %.3g with every pixel at the cap)\n",
+                     targetError, settings.samplesPerPixel, allocation.predictedRelMse);
+    if (!output.quiet)
+        std::fprintf(stderr, "wavefront: wrote %s and %s (adaptive: %.1f spp on average, %u to "
+                             "%u; estimated relMSE %.3g for a target of %g; %.0f paths/s with "
+                             "the %u-spp pilot)\n",
+                     output.exr.c_str(), previewPathFor(output.exr).c_str(), allocation.meanSpp,
+                     allocation.levels.front(), settings.samplesPerPixel,
+                     result.estimatedRelMse, targetError,
+                     result.stats.paths / std::max(result.stats.seconds, 1e-9), result.pilotSpp);
+}
+
 } // namespace
 
 std::string renderHelp() { return helpText(renderSpec()); }
@@ -230,17 +361,25 @@ int runRenderCommand(const std::vector<std::string>& args) {
         throw InputError("cannot write " + *output + ": folder " + outputDir.string() +
                          " does not exist");
 
+    const bool adaptive = parsed.has("--target-error");
     RenderSettings settings;
-    settings.samplesPerPixel = parsed.uintValue("--spp", 64, 1, 1u << 20);
+    settings.samplesPerPixel = parsed.uintValue("--spp", adaptive ? 1024 : 64, 1, 1u << 20);
     applyRenderFlags(parsed, kDefaultMaxDepth, settings);
     applySppRangeFlags(parsed, settings);
+    const double targetError = parsed.floatValue("--target-error", 0.0f, 1e-12f, 1e6f);
+    if (adaptive) {
+        checkAdaptiveFlags(parsed, settings);
+        settings.pixelList = true;
+    }
     settings.timeLimitSeconds = parsed.floatValue("--time-limit", 0.0f, 1e-3f, 1e9f);
     if (settings.timeLimitSeconds > 0.0 && samplerIsFiniteSet(settings.sampler))
         throw UsageError(std::string("--time-limit: the ") + samplerName(settings.sampler) +
                          " sampler's set is no stratification when cut short (pick sobol, "
                          "halton, independent or bluenoise)");
     const std::vector<std::string> aovs = parseAovList(parsed.value("--aov").value_or(""));
-    settings.aov = !aovs.empty();
+    // "samples" alone needs no first hits.
+    settings.aov = std::any_of(aovs.begin(), aovs.end(),
+                               [](const std::string& name) { return name != "samples"; });
     if (settings.aov && parsed.has("--resume"))
         throw UsageError("--aov with --resume: the layers would cover this run's samples only");
     const bool quiet = parsed.has("--quiet");
@@ -294,6 +433,13 @@ int runRenderCommand(const std::vector<std::string>& args) {
     WavefrontRenderer renderer(context, prepared, rest, compiler);
     if (verbose)
         printVerbose(prepared, renderer, context, summary);
+    const StatsContext statsContext{scenePath,          context.deviceName(), settings.width,
+                                    settings.height,    settings.maxDepth,    settings.seed, {}};
+    if (adaptive) {
+        renderAdaptively(renderer, settings, targetError, run,
+                         {*output, parsed.value("--json"), aovs, quiet}, statsContext);
+        return validationExitCode(context);
+    }
 
     // The image so far: the resumed samples and this run's, by sample count.
     auto imageSoFar = [&]() {
@@ -349,24 +495,22 @@ int runRenderCommand(const std::vector<std::string>& args) {
     const RenderStats& stats = renderer.stats();
     RenderPart finished = imageSoFar();
     finished.sppOffset = settings.sppOffset;
+    const std::vector<float> counts(size_t(settings.width) * settings.height,
+                                    float(finished.spp));
     writeRenderPart(*output, finished, {}, true,
-                    settings.aov ? aovChannels(aovs, renderer.readAovs()) : std::vector<ExrChannel>{});
+                    aovs.empty() ? std::vector<ExrChannel>{}
+                                 : aovChannels(aovs, settings.aov ? renderer.readAovs()
+                                                                  : AovImages{},
+                                               counts));
     if (checkpointPath)
         writeCheckpoint();
     if (auto json = parsed.value("--json"))
-        writeStatsJson(*json, stats,
-                       {scenePath, context.deviceName(), settings.width, settings.height,
-                        settings.maxDepth, settings.seed});
+        writeStatsJson(*json, stats, statsContext);
     if (!quiet)
         std::fprintf(stderr, "wavefront: wrote %s and %s (%u spp, %.0f paths/s)\n",
                      output->c_str(), previewPathFor(*output).c_str(), finished.spp,
                      stats.paths / std::max(stats.seconds, 1e-9));
-    if (context.validationMessageCount() > 0) {
-        std::fprintf(stderr, "wavefront: %u validation message(s)\n",
-                     context.validationMessageCount());
-        return 1;
-    }
-    return 0;
+    return validationExitCode(context);
 }
 
 } // namespace wf

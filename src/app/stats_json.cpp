@@ -65,8 +65,10 @@ std::string statsToJson(const RenderStats& stats, const StatsContext& context) {
         << ", \"extension\": " << number(stats.extensionRays / seconds)
         << ", \"shadow\": " << number(stats.shadowRays / seconds)
         << ", \"total\": " << number(totalRays / seconds) << "},\n"
-        << "  \"nonFiniteSamples\": " << stats.nonFiniteSamples << ",\n"
-        << "  \"gpuMilliseconds\": {";
+        << "  \"nonFiniteSamples\": " << stats.nonFiniteSamples << ",\n";
+    for (const auto& [name, json] : context.extraFields)
+        out << "  " << quoted(name) << ": " << json << ",\n";
+    out << "  \"gpuMilliseconds\": {";
     bool first = true;
     for (const auto& [pass, ms] : stats.passMilliseconds) {
         out << (first ? "" : ", ") << quoted(pass) << ": " << number(ms);

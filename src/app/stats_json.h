@@ -1,6 +1,8 @@
 // The --json statistics file of `wavefront render`.
 #pragma once
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "render/wavefront_renderer.h"
 
@@ -13,6 +15,8 @@ struct StatsContext {
     uint32_t height = 0;
     uint32_t maxDepth = 0;
     uint32_t seed = 0;
+    // More top-level fields, each a name and its JSON text (--target-error's "adaptive").
+    std::vector<std::pair<std::string, std::string>> extraFields;
 };
 
 // JSON text pieces, shared with the bench report: a quoted, escaped string; a number (null when

@@ -1,9 +1,11 @@
 #include "render/convergence.h"
 
+#include <algorithm>
 #include <set>
 #include <sstream>
 
 #include "errors.h"
+#include "render/adaptive_sampling.h"
 
 namespace wf {
 
@@ -14,6 +16,7 @@ void ConvergenceMethod::applyTo(RenderSettings& settings) const {
     settings.triangleSolidAngle = triangleSolidAngle;
     settings.sphereSolidAngle = sphereSolidAngle;
     settings.lightSelection = lightSelection;
+    settings.pixelList = adaptive;
 }
 
 std::string methodWords() {
@@ -21,7 +24,7 @@ std::string methodWords() {
     for (const std::string& name : samplerNames())
         words += name + ", ";
     return words + "bsdf, nee, mis, uniform, power, tree, no-randomize, triangle-area, "
-                   "sphere-area";
+                   "sphere-area, adaptive";
 }
 
 ConvergenceMethod parseMethod(const std::string& text) {
@@ -57,6 +60,8 @@ ConvergenceMethod parseMethod(const std::string& text) {
             method.triangleSolidAngle = false;
         } else if (word == "sphere-area") {
             method.sphereSolidAngle = false;
+        } else if (word == "adaptive") {
+            method.adaptive = true;
         } else {
             throw UsageError("--methods: unknown word '" + word + "' in '" + text +
                              "' (words: " + methodWords() + ")");
@@ -65,6 +70,9 @@ ConvergenceMethod parseMethod(const std::string& text) {
     if (!method.randomize && method.sampler == SamplerKind::Independent)
         throw UsageError("--methods: independent has no randomization to remove ('" + text +
                          "')");
+    if (method.adaptive && samplerIsFiniteSet(method.sampler))
+        throw UsageError("--methods: adaptive gives pixels parts of a finite set ('" + text +
+                         "'); pick sobol, halton, independent or bluenoise");
     method.name = std::string(samplerName(method.sampler)) + "+" +
                   lightSamplingName(method.lightSampling) +
                   (method.randomize ? "" : "+no-randomize") +
@@ -72,7 +80,8 @@ ConvergenceMethod parseMethod(const std::string& text) {
                   (method.sphereSolidAngle ? "" : "+sphere-area") +
                   (method.lightSelection == LightSelection::Auto
                        ? ""
-                       : std::string("+") + lightSelectionName(method.lightSelection));
+                       : std::string("+") + lightSelectionName(method.lightSelection)) +
+                  (method.adaptive ? "+adaptive" : "");
     return method;
 }
 
@@ -102,14 +111,13 @@ std::vector<ConvergenceMethod> defaultMethods() {
 
 namespace {
 
-Checkpoint measure(const WavefrontRenderer& renderer, const std::vector<float>& reference,
-                   std::vector<float>* keep) {
+Checkpoint measure(uint32_t spp, const RenderStats& stats, std::vector<float> image,
+                   const std::vector<float>& reference, std::vector<float>* keep) {
     Checkpoint checkpoint;
-    checkpoint.spp = renderer.samplesDone();
-    for (const auto& [pass, ms] : renderer.stats().passMilliseconds)
+    checkpoint.spp = spp;
+    for (const auto& [pass, ms] : stats.passMilliseconds)
         checkpoint.gpuSeconds += ms / 1000.0;
-    checkpoint.wallSeconds = renderer.stats().seconds;
-    std::vector<float> image = renderer.readImage();
+    checkpoint.wallSeconds = stats.seconds;
     checkpoint.error = imageError(image, reference);
     if (keep)
         *keep = std::move(image);
@@ -132,7 +140,10 @@ MethodRun runConvergence(const Context& context, const PreparedScene& scene,
     WavefrontRenderer renderer(context, scene, settings, compiler);
     // Warm-up: a device's first dispatches of fresh pipelines carry one-time costs (lavapipe
     // finishes compiling them), which would land on the first checkpoint's time.
-    renderer.renderSamples(1);
+    if (method.adaptive)
+        renderer.renderPixelList({0}, 0, 1);
+    else
+        renderer.renderSamples(1);
     const bool finiteSet = samplerIsFiniteSet(method.sampler);
 
     MethodRun run;
@@ -148,13 +159,24 @@ MethodRun runConvergence(const Context& context, const PreparedScene& scene,
             // The first seed sets the checkpoints: doubling until the time budget is spent.
             const uint32_t spp = decide ? (c == 0 ? 1u : run.checkpoints.back() * 2)
                                         : run.checkpoints[c];
-            if (finiteSet)
-                renderer.restart(seed, 0, spp);
-            renderer.renderSamples(spp - renderer.samplesDone());
             std::vector<float>* keep = nullptr;
             if (s == 0 && options.keepFirstSeedImages)
                 keep = &run.firstSeedImages.emplace_back();
-            points.push_back(measure(renderer, reference, keep));
+            if (method.adaptive) {
+                AdaptiveSettings adaptive;
+                adaptive.meanSpp = spp;
+                adaptive.maxSpp = std::min(settings.samplesPerPixel, 16 * spp);
+                AdaptiveResult result = renderAdaptive(renderer, seed, adaptive, settings.width,
+                                                       settings.height);
+                points.push_back(
+                    measure(spp, result.stats, std::move(result.rgb), reference, keep));
+            } else {
+                if (finiteSet)
+                    renderer.restart(seed, 0, spp);
+                renderer.renderSamples(spp - renderer.samplesDone());
+                points.push_back(measure(renderer.samplesDone(), renderer.stats(),
+                                         renderer.readImage(), reference, keep));
+            }
             if (onCheckpoint)
                 onCheckpoint(seed, points.back());
             if (decide) {

@@ -8,17 +8,21 @@ using gpu_types::QueueCounters;
 using gpu_types::RenderParams;
 
 PathBuffers::PathBuffers(const Context& context, uint32_t pathCapacity, uint32_t pixelCount,
-                         PathStateUse use, bool aov)
+                         PathStateUse use, const ShaderVariant& variant)
     : params(context, "params", sizeof(RenderParams)),
       counters(context, "queue counters", sizeof(QueueCounters),
                VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT),
       film(context, "film", uint64_t(pixelCount) * 16),
       radiance(context, "path radiance", uint64_t(pathCapacity) * 16) {
+    if (variant.secondMoment)
+        momentFilm = Buffer(context, "moment film", uint64_t(pixelCount) * 16);
+    if (variant.adaptive)
+        activePixels = Buffer(context, "active pixels", uint64_t(pixelCount) * 4);
     if (use == PathStateUse::Megakernel)
         return; // its paths live in registers from camera to film
-    if (aov) {
+    if (variant.aov) {
         aovPaths = Buffer(context, "aov paths", uint64_t(pathCapacity) * 32);
-        aovFilm = Buffer(context, "aov film", uint64_t(pixelCount) * 48);
+        aovFilm = Buffer(context, "aov film", uint64_t(pixelCount) * 32);
     }
     rayOrigin = Buffer(context, "ray origins", uint64_t(pathCapacity) * 16);
     rayDirection = Buffer(context, "ray directions", uint64_t(pathCapacity) * 16);
@@ -45,6 +49,8 @@ void PathBuffers::appendBindings(DescriptorBindings& bindings) const {
         {WF_BINDING_RAY_QUEUES, &rayQueues},
         {WF_BINDING_AOV_PATHS, &aovPaths},
         {WF_BINDING_AOV_FILM, &aovFilm},
+        {WF_BINDING_MOMENT_FILM, &momentFilm},
+        {WF_BINDING_ACTIVE_PIXELS, &activePixels},
         {WF_BINDING_SHADOW_ORIGIN, &shadowOrigin},
         {WF_BINDING_SHADOW_DIRECTION, &shadowDirection},
         {WF_BINDING_SHADOW_RADIANCE, &shadowRadiance},
@@ -68,7 +74,7 @@ void PathBuffers::appendMemoryReport(
     std::vector<std::pair<std::string, uint64_t>>& report) const {
     for (const Buffer* buffer :
          {&params, &counters, &film, &rayOrigin, &rayDirection, &throughput, &radiance, &hits,
-          &shadowOrigin, &shadowDirection, &shadowRadiance, &rayQueues, &aovPaths, &aovFilm})
+          &shadowOrigin, &shadowDirection, &shadowRadiance, &rayQueues, &aovPaths, &aovFilm, &momentFilm, &activePixels})
         if (*buffer)
             report.emplace_back(buffer->name(), buffer->size());
 }

@@ -9,6 +9,7 @@
 
 #include "gpu/buffer.h"
 #include "gpu/compute_program.h"
+#include "render/shader_variant.h"
 
 namespace wf {
 
@@ -17,8 +18,9 @@ class Context;
 enum class PathStateUse { Megakernel, Wavefront, WavefrontWithShadowRays };
 
 struct PathBuffers {
+    // `variant` says which per-pixel extras exist (aov, secondMoment, adaptive).
     PathBuffers(const Context& context, uint32_t pathCapacity, uint32_t pixelCount,
-                PathStateUse use, bool aov = false);
+                PathStateUse use, const ShaderVariant& variant);
 
     void appendBindings(DescriptorBindings& bindings) const;
     void appendMemoryReport(std::vector<std::pair<std::string, uint64_t>>& report) const;
@@ -37,6 +39,8 @@ struct PathBuffers {
     Buffer rayQueues;
     Buffer aovPaths; // --aov only: the first hit per path, and per pixel its sums
     Buffer aovFilm;
+    Buffer momentFilm;   // WF_SECOND_MOMENT: per pixel, the sum of radiance squared
+    Buffer activePixels; // WF_ADAPTIVE: the pixel list waves cover
 };
 
 } // namespace wf

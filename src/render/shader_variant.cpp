@@ -41,6 +41,8 @@ ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& se
                             : need <= WF_BVH_REGISTER_STACK_SIZE ? WF_BVH_REGISTER_STACK_SIZE
                                                                   : 0u;
     variant.aov = settings.aov && !settings.megakernel;
+    variant.secondMoment = settings.aov || settings.pixelList;
+    variant.adaptive = settings.pixelList;
     variant.sampler = settings.sampler;
     variant.randomizeSamples = settings.randomizeSamples;
     return variant;
@@ -70,7 +72,9 @@ ShaderDefines ShaderVariant::defines() const {
             {"WF_SAMPLER_RANDOMIZE", flag(randomizeSamples)},
             {"WF_PACKED_STORES", flag(packedStores)},
             {"WF_BVH_REGISTER_STACK", std::to_string(registerStack)},
-            {"WF_AOV", flag(aov)}};
+            {"WF_AOV", flag(aov)},
+            {"WF_SECOND_MOMENT", flag(secondMoment)},
+            {"WF_ADAPTIVE", flag(adaptive)}};
 }
 
 std::string ShaderVariant::describe() const {

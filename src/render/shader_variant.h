@@ -36,7 +36,9 @@ struct ShaderVariant {
     bool randomizeSamples = true;     // WF_SAMPLER_RANDOMIZE: off for --no-randomize
     bool packedStores = false;        // WF_PACKED_STORES: 64-bit stores, set by the renderer
     uint32_t registerStack = 0;       // WF_BVH_REGISTER_STACK: 8 or 16 entries in vectors, or 0
-    bool aov = false;                 // WF_AOV: first-hit albedo, normal, distance, radiance^2
+    bool aov = false;                 // WF_AOV: first-hit albedo, normal, distance
+    bool secondMoment = false;        // WF_SECOND_MOMENT: radiance^2 per pixel (variance)
+    bool adaptive = false;            // WF_ADAPTIVE: waves cover a list of pixels
 
     bool lightsBuffer() const { return sphereLights || deltaLights; }
     bool lightTree() const {

@@ -28,6 +28,11 @@ using gpu_types::PassConstants;
 using gpu_types::QueueCounters;
 using gpu_types::RenderParams;
 
+double varianceOfMean(double sum, double sumOfSquares, double n) {
+    // (sum x^2 - (sum x)^2 / n) / (n (n - 1)): the sample variance over n.
+    return n > 1.0 ? std::max(0.0, sumOfSquares - sum * sum / n) / (n * (n - 1.0)) : 0.0;
+}
+
 gpu_types::vec3 cameraRight(const Camera& camera) {
     return glm::normalize(glm::cross(camera.forward, camera.up));
 }
@@ -69,7 +74,7 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
                                        ? PathStateUse::WavefrontWithShadowRays
                                        : PathStateUse::Wavefront;
     pathBuffers_ = std::make_unique<PathBuffers>(context, pathCapacity_, pixelCount_, pathState,
-                                                 variant_.aov);
+                                                 variant_);
     DescriptorBindings bindings;
     sceneBuffers_->appendBindings(bindings);
     pathBuffers_->appendBindings(bindings);
@@ -158,12 +163,13 @@ void WavefrontRenderer::recordWave(VkCommandBuffer cmd, const PassConstants& wav
     timer_->finish(cmd);
 }
 
-void WavefrontRenderer::runWave(uint32_t pixelBase, uint32_t pixels, uint32_t samples) {
+void WavefrontRenderer::runWave(uint32_t pixelBase, uint32_t pixels, uint32_t firstSample,
+                                uint32_t samples) {
     const auto start = std::chrono::steady_clock::now();
     const uint32_t paths = pixels * samples;
     // Sample indices start at --spp-offset, so that partial renders merge.
     const PassConstants wave{
-        0, settings_.sppOffset + samplesDone_, paths, samples, pixelBase, pixels, 0, 0};
+        0, settings_.sppOffset + firstSample, paths, samples, pixelBase, pixels, 0, 0};
     context_.submitAndWait([&](VkCommandBuffer cmd) { recordWave(cmd, wave); });
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -206,6 +212,8 @@ void WavefrontRenderer::adaptWaveSize(uint32_t paths, double seconds) {
 // the wave size, one sample in pixel ranges. Either way each pixel receives its samples in
 // order, which is what makes the film independent of the wave sizes.
 uint32_t WavefrontRenderer::advance(uint32_t maxSamples) {
+    if (variant_.adaptive)
+        throw InternalError("a renderer of pixel lists traces through renderPixelList only");
     if (pixelCursor_ > 0) { // a sample left in progress by renderPixels comes first
         finishSample();
         return 1;
@@ -213,11 +221,11 @@ uint32_t WavefrontRenderer::advance(uint32_t maxSamples) {
     uint32_t samples = 1;
     if (wavePaths_ >= pixelCount_) {
         samples = std::min(wavePaths_ / pixelCount_, maxSamples);
-        runWave(0, pixelCount_, samples);
+        runWave(0, pixelCount_, samplesDone_, samples);
     } else {
         for (uint32_t base = 0; base < pixelCount_;) {
             const uint32_t pixels = std::min(wavePaths_, pixelCount_ - base);
-            runWave(base, pixels, 1);
+            runWave(base, pixels, samplesDone_, 1);
             base += pixels;
         }
     }
@@ -227,9 +235,11 @@ uint32_t WavefrontRenderer::advance(uint32_t maxSamples) {
 }
 
 uint32_t WavefrontRenderer::renderPixels(uint32_t paths) {
+    if (variant_.adaptive)
+        throw InternalError("a renderer of pixel lists traces through renderPixelList only");
     const uint32_t left = std::min(pathCapacity_, pixelCount_ - pixelCursor_);
     const uint32_t pixels = std::clamp(paths, 1u, left);
-    runWave(pixelCursor_, pixels, 1);
+    runWave(pixelCursor_, pixels, samplesDone_, 1);
     pixelCursor_ += pixels;
     if (pixelCursor_ == pixelCount_) {
         pixelCursor_ = 0;
@@ -272,11 +282,40 @@ void WavefrontRenderer::render(const std::function<void(const WaveProgress&)>& o
     }
 }
 
+void WavefrontRenderer::renderPixelList(const std::vector<uint32_t>& pixels,
+                                        uint32_t firstSample, uint32_t samples) {
+    if (!pathBuffers_->activePixels)
+        throw InternalError("renderPixelList: the renderer was made without pixelList");
+    if (pixels.size() > pixelCount_)
+        throw InternalError("renderPixelList: more pixels than the image has");
+    if (pixels.empty() || samples == 0)
+        return;
+    pathBuffers_->activePixels.upload(pixels);
+    const uint32_t count = static_cast<uint32_t>(pixels.size());
+    // As advance(): whole samples of every listed pixel per wave, or one sample in ranges.
+    for (uint32_t done = 0; done < samples;) {
+        if (wavePaths_ >= count) {
+            const uint32_t n = std::min(wavePaths_ / count, samples - done);
+            runWave(0, count, firstSample + done, n);
+            done += n;
+            continue;
+        }
+        for (uint32_t base = 0; base < count;) {
+            const uint32_t n = std::min(wavePaths_, count - base);
+            runWave(base, n, firstSample + done, 1);
+            base += n;
+        }
+        ++done;
+    }
+}
+
 void WavefrontRenderer::reset() {
     std::vector<float> zeros(size_t(pixelCount_) * 4, 0.0f);
     pathBuffers_->film.upload(zeros);
+    if (pathBuffers_->momentFilm)
+        pathBuffers_->momentFilm.upload(zeros);
     if (pathBuffers_->aovFilm)
-        pathBuffers_->aovFilm.upload(std::vector<float>(size_t(pixelCount_) * 12, 0.0f));
+        pathBuffers_->aovFilm.upload(std::vector<float>(size_t(pixelCount_) * 8, 0.0f));
     samplesDone_ = 0;
     pixelCursor_ = 0;
     stats_ = {};
@@ -318,10 +357,29 @@ std::vector<float> WavefrontRenderer::readImage() const {
     return rgb;
 }
 
+FilmMoments WavefrontRenderer::readMoments() const {
+    if (!pathBuffers_->momentFilm)
+        throw InternalError("readMoments: the renderer keeps no second moment");
+    const std::vector<float> film = pathBuffers_->film.download<float>();
+    const std::vector<float> squares = pathBuffers_->momentFilm.download<float>();
+    FilmMoments moments;
+    moments.sum.resize(size_t(pixelCount_) * 3);
+    moments.count.resize(pixelCount_);
+    moments.squares.resize(size_t(pixelCount_) * 3);
+    for (size_t i = 0; i < pixelCount_; ++i) {
+        for (int c = 0; c < 3; ++c) {
+            moments.sum[3 * i + c] = film[4 * i + c];
+            moments.squares[3 * i + c] = squares[4 * i + c];
+        }
+        moments.count[i] = film[4 * i + 3];
+    }
+    return moments;
+}
+
 AovImages WavefrontRenderer::readAovs() const {
     if (!pathBuffers_->aovFilm)
         throw InternalError("readAovs: the renderer was made without RenderSettings.aov");
-    const std::vector<float> film = pathBuffers_->film.download<float>();
+    const FilmMoments moments = readMoments();
     const std::vector<float> aov = pathBuffers_->aovFilm.download<float>();
     AovImages images;
     images.albedo.resize(size_t(pixelCount_) * 3);
@@ -329,17 +387,15 @@ AovImages WavefrontRenderer::readAovs() const {
     images.depth.resize(pixelCount_);
     images.variance.resize(size_t(pixelCount_) * 3);
     for (size_t i = 0; i < pixelCount_; ++i) {
-        const double n = film[4 * i + 3];
+        const double n = moments.count[i];
         if (!(n > 0.0))
             continue;
-        const float* sums = &aov[12 * i];
+        const float* sums = &aov[8 * i];
         for (int c = 0; c < 3; ++c) {
             images.albedo[3 * i + c] = float(sums[c] / n);
             images.normal[3 * i + c] = float(sums[4 + c] / n);
-            // Of the mean of n samples: (sum x^2 - (sum x)^2 / n) / (n (n - 1)).
-            const double sum = film[4 * i + c], sumSq = sums[8 + c];
-            images.variance[3 * i + c] =
-                n > 1.0 ? float(std::max(0.0, sumSq - sum * sum / n) / (n * (n - 1.0))) : 0.0f;
+            images.variance[3 * i + c] = float(
+                varianceOfMean(moments.sum[3 * i + c], moments.squares[3 * i + c], n));
         }
         images.depth[i] = float(sums[3] / n);
     }

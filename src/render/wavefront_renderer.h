@@ -78,6 +78,16 @@ struct RenderSettings {
     // --aov: also accumulate the camera ray's first hit (albedo, shading normal, distance) and
     // the radiance squared per pixel (readAovs). The wavefront only; the image is unchanged.
     bool aov = false;
+    // --target-error: waves cover lists of pixels (renderPixelList) and the film keeps each
+    // pixel's radiance squared (readMoments); render() and the progressive calls are refused.
+    bool pixelList = false;
+};
+
+// The film and its second moment, per pixel: rgb sums, sample counts and rgb sums of squares.
+struct FilmMoments {
+    std::vector<float> sum;     // rgb per pixel
+    std::vector<float> count;   // samples per pixel
+    std::vector<float> squares; // rgb per pixel
 };
 
 // Per pixel, the mean over its samples of the camera ray's first hit (zero where it found no
@@ -154,6 +164,12 @@ public:
     // Linear radiance per pixel (mean of the samples), RGB, top row first.
     std::vector<float> readImage() const;
     AovImages readAovs() const; // needs RenderSettings.aov
+    FilmMoments readMoments() const; // needs RenderSettings.aov or pixelList
+    // Needs RenderSettings.pixelList: traces samples [firstSample, firstSample + samples) of
+    // sppOffset on of the listed pixels only (image indices, each at most once), adding them
+    // to the film. samplesDone() is left alone: the pixels' counts are in the film.
+    void renderPixelList(const std::vector<uint32_t>& pixels, uint32_t firstSample,
+                         uint32_t samples);
     const RenderStats& stats() const { return stats_; }
     const ShaderDefines& shaderDefines() const { return defines_; }
     const ShaderVariant& variant() const { return variant_; }
@@ -168,7 +184,9 @@ private:
     void uploadParams();
     uint32_t advance(uint32_t maxSamples);
     void recordWave(VkCommandBuffer cmd, const gpu_types::PassConstants& wave);
-    void runWave(uint32_t pixelBase, uint32_t pixels, uint32_t samples);
+    // Samples [firstSample, firstSample + samples) of sppOffset on, of pixels [pixelBase,
+    // pixelBase + pixels) of the image or (pixelList) of the list.
+    void runWave(uint32_t pixelBase, uint32_t pixels, uint32_t firstSample, uint32_t samples);
     void adaptWaveSize(uint32_t paths, double seconds);
     uint32_t setSize() const; // of the finite-set samplers
 
@@ -198,6 +216,9 @@ private:
     std::unique_ptr<MegakernelPass> megakernel_;
     std::unique_ptr<Buffer> samplerTable_; // only for samplers that read it
 };
+
+// The variance of the mean of n samples with these sums (0 below two samples).
+double varianceOfMean(double sum, double sumOfSquares, double n);
 
 // The camera looking at the scene: the file's, with the image's aspect.
 gpu_types::vec3 cameraRight(const Camera& camera);

@@ -1,0 +1,93 @@
+// Adaptive sampling (--target-error, converge's `adaptive`) by two-stage allocation: a pilot
+// render with its own seed measures each pixel's relative variance; from it alone every pixel
+// gets a sample count, n_i proportional to the square root of that variance (the allocation
+// that minimises the image's relMSE for its total), scaled so that the predicted image relMSE
+// meets the target (or the mean meets a budget); then the image is rendered afresh with those
+// counts and the pilot thrown away. The counts depend only on the pilot, whose samples are
+// independent of the image's, so each pixel's mean stays unbiased; a rule that stops a pixel
+// on its own samples would not be (it stops early where its samples happen to agree, which
+// is where a rare bright path has not been found yet). docs/architecture.md says more.
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "render/wavefront_renderer.h"
+
+namespace wf {
+
+struct AdaptiveSettings {
+    double targetError = 0.0; // the image relMSE to reach; 0: spend meanSpp instead
+    double meanSpp = 0.0;     // the budget, samples per pixel on average (targetError 0)
+    uint32_t maxSpp = 64;     // no pixel gets more (--spp)
+    uint32_t pilotSpp = 0;    // 0: pilotSppFor(maxSpp)
+};
+
+uint32_t pilotSppFor(uint32_t maxSpp); // maxSpp / 16, within 4 .. 16 (and at most maxSpp)
+uint32_t minSppFor(uint32_t pilotSpp); // the fewest samples a pixel gets: half the pilot's
+
+// Per pixel, the relMSE of one sample as converge measures error: the mean over channels of
+// variance / (mean^2 + kRelMseEpsilon), from the pilot's sums (0 for fewer than 2 samples).
+std::vector<double> relativeSampleVariance(const FilmMoments& pilot);
+// Per pixel, the estimated relMSE of its mean: the above over its sample count.
+std::vector<double> relativeErrorOfMean(const FilmMoments& film);
+double meanOf(const std::vector<double>& values);
+
+// Each pixel's largest value over its 3x3 neighbourhood: a pilot that found a rare bright path
+// at one pixel is likely to have missed it at the next.
+std::vector<double> dilate3x3(const std::vector<double>& values, uint32_t width,
+                              uint32_t height);
+
+// Sample counts come in levels, so that the image renders in few rounds (each round traces
+// the pixels whose count reaches its level): minSpp, then about 1.25x each, ending at maxSpp.
+std::vector<uint32_t> sampleLevels(uint32_t minSpp, uint32_t maxSpp);
+
+struct SampleAllocation {
+    std::vector<uint32_t> spp;    // per pixel, one of `levels`
+    std::vector<uint32_t> levels; // increasing
+    double predictedRelMse = 0.0; // mean over pixels of relVariance / spp
+    double meanSpp = 0.0;
+    bool targetMet = true;        // false when even maxSpp everywhere predicts above target
+};
+
+// n_i = the level nearest (in ratio) to c sqrt(shape_i), within [minSpp, maxSpp], with c the
+// smallest that predicts the target, or the largest within the budget. `shape` decides where
+// samples go (the dilated variance), `relVariance` predicts the error they give.
+SampleAllocation allocateSamples(const std::vector<double>& relVariance,
+                                 const std::vector<double>& shape,
+                                 const AdaptiveSettings& settings);
+
+struct AdaptiveProgress {
+    std::string stage;      // "pilot" or "render"
+    uint32_t round = 0;     // 1-based within the stage
+    uint32_t rounds = 0;
+    uint32_t activePixels = 0;
+    uint32_t level = 0;     // spp the round's pixels reach
+    double seconds = 0.0;   // wall time so far, both stages
+    double predictedRelMse = 0.0; // 0 until the allocation is made
+};
+
+struct AdaptiveResult {
+    std::vector<float> rgb;          // the image: each pixel's mean over its samples
+    std::vector<float> sampleCounts; // per pixel
+    SampleAllocation allocation;
+    uint32_t pilotSpp = 0;
+    double estimatedRelMse = 0.0;    // from the image's own second moments
+    RenderStats stats;               // both stages: paths, rays and seconds
+};
+
+// Renders with `renderer` (made with RenderSettings.pixelList and samplesPerPixel >= maxSpp):
+// the pilot with a seed derived from `seed`, then the image with `seed` itself.
+AdaptiveResult renderAdaptive(WavefrontRenderer& renderer, uint32_t seed,
+                              const AdaptiveSettings& settings, uint32_t width, uint32_t height,
+                              const std::function<void(const AdaptiveProgress&)>& onRound = {});
+
+// The pilot's seed: another stream than `seed` and than the small seeds converge and the
+// tests use.
+uint32_t pilotSeedFor(uint32_t seed);
+
+// Adds `more`'s counts and times to `total` (samplesPerPixel left as it is).
+void addRenderStats(RenderStats& total, const RenderStats& more);
+
+} // namespace wf
