@@ -68,6 +68,15 @@ std::vector<double> dilate3x3(const std::vector<double>& values, uint32_t width,
     return out;
 }
 
+std::vector<double> defensiveShape(const std::vector<double>& relVariance, uint32_t width,
+                                   uint32_t height) {
+    std::vector<double> shape = dilate3x3(relVariance, width, height);
+    const double floor = kDefensiveShare * meanOf(shape);
+    for (double& s : shape)
+        s = std::max(s, floor);
+    return shape;
+}
+
 std::vector<uint32_t> sampleLevels(uint32_t minSpp, uint32_t maxSpp) {
     if (minSpp == 0 || minSpp > maxSpp)
         throw InternalError("sampleLevels: need 1 <= minSpp <= maxSpp");
@@ -190,8 +199,8 @@ AdaptiveResult renderAdaptive(WavefrontRenderer& renderer, uint32_t seed,
         onRound({"pilot", 1, 1, renderer.pixelCount(), result.pilotSpp, result.stats.seconds,
                  0.0});
     const std::vector<double> relVariance = relativeSampleVariance(renderer.readMoments());
-    result.allocation =
-        allocateSamples(relVariance, dilate3x3(relVariance, width, height), settings);
+    result.allocation = allocateSamples(relVariance, defensiveShape(relVariance, width, height),
+                                        settings);
     const SampleAllocation& allocation = result.allocation;
 
     renderer.restart(seed, 0);

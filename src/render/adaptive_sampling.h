@@ -39,6 +39,14 @@ double meanOf(const std::vector<double>& values);
 std::vector<double> dilate3x3(const std::vector<double>& values, uint32_t width,
                               uint32_t height);
 
+// Where samples go: the dilated variance, but at least kDefensiveShare of its image mean, so
+// that a pixel the pilot saw as quiet still gets sqrt(kDefensiveShare) of the typical count
+// (the pilot misses rare bright paths; a quiet pixel with few samples that meets one is a
+// firefly): the defensive mixture of defensive importance sampling.
+inline constexpr double kDefensiveShare = 0.1;
+std::vector<double> defensiveShape(const std::vector<double>& relVariance, uint32_t width,
+                                   uint32_t height);
+
 // Sample counts come in levels, so that the image renders in few rounds (each round traces
 // the pixels whose count reaches its level): minSpp, then about 1.25x each, ending at maxSpp.
 std::vector<uint32_t> sampleLevels(uint32_t minSpp, uint32_t maxSpp);

@@ -2,7 +2,7 @@
 # Long renders end to end: `wavefront merge` (parts of one render merge into the image of one
 # run; parts of another render, overlapping ranges and non-parts are refused in one line, exit
 # 2; a gap is reported), `render --time-limit` (stops on a whole pass), --aov layers, and
-# checkpoints (SIGTERM writes one; --resume continues it to the image of an uninterrupted run,
+# --target-error, checkpoints (SIGTERM writes one; --resume continues it to the image of an uninterrupted run,
 # and refuses a checkpoint of another render).
 # Usage: test_long_renders_cli.sh PATH/TO/wavefront PATH/TO/wf_compare_images PATH/TO/scenes
 set -u
@@ -75,6 +75,25 @@ check "unknown aov" 2 "$wavefront" render "$box" -o "$work/x.exr" --aov albedo,s
 expect "unknown aov: one line" one_line_error
 check "aov twice" 2 "$wavefront" render "$box" -o "$work/x.exr" --aov depth,depth
 expect "aov twice: one line" one_line_error
+
+# --target-error: adaptive sampling; the header, the JSON and the progress line say what it
+# aimed at and what it reached; flags that need a uniform sample range are refused.
+check "target error" 0 "$wavefront" render "$box" -o "$work/adaptive.exr" --target-error 0.02 \
+    --spp 256 --width 32 --max-depth 4 --json "$work/adaptive.json" --aov samples,variance
+expect "target in the progress line" grep -q "target relMSE 0.02" "$work/stderr"
+expect "adaptive json" json_has "$work/adaptive.json" \
+    "d['adaptive']['targetError'] == 0.02 and 8 <= d['adaptive']['meanSpp'] < 256 and \
+     d['adaptive']['pilotSpp'] == 16 and d['adaptive']['predictedRelMse'] <= 0.02"
+for attr in targetError estimatedRelMse meanSpp pilotSpp "Sample Count.Y"; do
+    expect "adaptive header: $attr" grep -a -q "$attr" "$work/adaptive.exr"
+done
+for flag in "--time-limit 5" "--spp-offset 8" "--sampler stratified" "--spp 4" \
+            "--checkpoint $work/x.exr"; do
+    # shellcheck disable=SC2086
+    check "target error with $flag" 2 "$wavefront" render "$box" -o "$work/x.exr" \
+        --target-error 0.01 $flag
+    expect "target error with $flag: one line" one_line_error
+done
 
 # Checkpoints: SIGTERM mid-render writes one and ends with 143; resuming it to D + 64 samples
 # gives the image of one run of D + 64.

@@ -108,6 +108,9 @@ TEST(ConvergenceMethods, ParseWordsInAnyOrder) {
     EXPECT_THROW(parseMethod("independent+no-randomize"), UsageError);
     EXPECT_THROW(parseMethods("sobol,sobol+mis"), UsageError);
     EXPECT_THROW(parseMethods(","), UsageError);
+    EXPECT_EQ(parseMethod("adaptive+sobol").name, "sobol+mis+adaptive");
+    EXPECT_TRUE(parseMethod("sobol+adaptive").adaptive);
+    EXPECT_THROW(parseMethod("stratified+adaptive"), UsageError);
 }
 
 } // namespace
