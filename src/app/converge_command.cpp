@@ -48,7 +48,9 @@ const CommandSpec& convergeSpec() {
                 {"--methods", "", "LIST", "comma-separated methods, each words joined by '+': a "
                                           "sampler, bsdf|nee|mis, uniform|power|tree (light "
                                           "selection), no-randomize, triangle-area, "
-                                          "sphere-area (default: every sampler with mis, then "
+                                          "sphere-area, adaptive (each checkpoint rendered "
+                                          "afresh with that mean spp, placed by a pilot whose "
+                                          "time counts) (default: every sampler with mis, then "
                                           "sobol+bsdf, sobol+nee)"},
                 {"--seeds", "", "N", "seeds per method, at least 5 (default 5)"},
                 {"--max-spp", "", "N", "stop doubling here (default 65536)"},
