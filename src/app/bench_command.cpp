@@ -75,7 +75,7 @@ void renderFrame(Timed& timed, uint32_t spp, bool record) {
         return;
     RenderStats frame = statsBetween(before, renderer.stats());
     timed.run.frames.push_back({seconds, frame.passMilliseconds});
-    addStats(timed.run.timed, frame);
+    addRenderStats(timed.run.timed, frame);
 }
 
 } // namespace

@@ -152,26 +152,6 @@ RenderStats statsBetween(const RenderStats& before, const RenderStats& after) {
     return d;
 }
 
-void addStats(RenderStats& total, const RenderStats& frame) {
-    total.samplesPerPixel += frame.samplesPerPixel;
-    total.seconds += frame.seconds;
-    total.paths += frame.paths;
-    total.cameraRays += frame.cameraRays;
-    total.extensionRays += frame.extensionRays;
-    total.shadowRays += frame.shadowRays;
-    total.nonFiniteSamples += frame.nonFiniteSamples;
-    total.waves += frame.waves;
-    total.longestSubmitSeconds = std::max(total.longestSubmitSeconds, frame.longestSubmitSeconds);
-    for (const auto& [pass, ms] : frame.passMilliseconds)
-        total.passMilliseconds[pass] += ms;
-    total.depthRays.resize(frame.depthRays.size());
-    total.depthShadowRays.resize(frame.depthShadowRays.size());
-    for (size_t i = 0; i < frame.depthRays.size(); ++i) {
-        total.depthRays[i] += frame.depthRays[i];
-        total.depthShadowRays[i] += frame.depthShadowRays[i];
-    }
-}
-
 std::string benchTable(const BenchSetup& setup, const BenchRun& run) {
     const RenderStats& t = run.timed;
     const double seconds = std::max(run.seconds(), 1e-12);

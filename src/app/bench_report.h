@@ -59,7 +59,6 @@ Spread spreadOf(std::vector<double> values);
 
 // Per-frame difference of two cumulative renderer statistics (after - before).
 RenderStats statsBetween(const RenderStats& before, const RenderStats& after);
-void addStats(RenderStats& total, const RenderStats& frame);
 
 std::string benchTable(const BenchSetup& setup, const BenchRun& run);
 // "wavefront / megakernel: 1.23x paths/s" and the like, for runs of both kernels.

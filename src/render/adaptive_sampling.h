@@ -95,7 +95,4 @@ AdaptiveResult renderAdaptive(WavefrontRenderer& renderer, uint32_t seed,
 // tests use.
 uint32_t pilotSeedFor(uint32_t seed);
 
-// Adds `more`'s counts and times to `total` (samplesPerPixel left as it is).
-void addRenderStats(RenderStats& total, const RenderStats& more);
-
 } // namespace wf

@@ -116,6 +116,9 @@ struct RenderStats {
     std::vector<uint64_t> depthShadowRays;
 };
 
+// Adds `more`'s counts and times to `total`: sums, except the longest submit (the larger).
+void addRenderStats(RenderStats& total, const RenderStats& more);
+
 struct WaveProgress {
     uint32_t samplesDone;
     uint32_t samplesTotal;
