@@ -79,7 +79,7 @@ double blockMean(const std::vector<float>& rgb, uint32_t bx, uint32_t by) {
 }
 
 TEST_F(Adaptive, EachRegionUnbiasedOverSeeds) {
-    constexpr int kSeeds = 6;
+    constexpr int kSeeds = 20;
     std::vector<std::vector<float>> images;
     for (int s = 0; s < kSeeds; ++s) {
         AdaptiveResult result = renderAdaptively(32, 21 + s);
