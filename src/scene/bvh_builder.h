@@ -18,6 +18,7 @@ struct BvhBuildOptions {
     float traversalCost = 1.0f;        // cost of visiting an interior node ...
     float intersectionCost = 1.0f;     // ... relative to one ray-triangle test
     std::uint32_t maxDepth = BVH_MAX_DEPTH; // root is depth 0; must be <= BVH_MAX_DEPTH
+    std::uint32_t threads = 0;         // 0: every core; the tree is the same for any count
 };
 
 struct BvhBuildStats {
