@@ -1,7 +1,7 @@
 // Top-down binned SAH (Wald 2007): per node, centroids are binned on all three axes and the
-// cheapest bin boundary wins; subtrees and large binning passes run on all cores. Triangles are moved as 32-byte boxes (PrimRef) rather than
-// through an index array, so every pass streams memory; the triangles are permuted once at
-// the end. Nodes are emitted depth-first, which gives "left child = next node" for free.
+// cheapest bin boundary wins; subtrees and large binning passes run on all cores. Triangles
+// are moved as 32-byte boxes (PrimRef) rather than through an index array, so every pass
+// streams memory; the triangles are permuted once at the end. Nodes are emitted depth-first, which gives "left child = next node" for free.
 #include "scene/bvh_builder.h"
 
 #include <algorithm>
