@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "app/cli.h"
+#include "app/host_memory.h"
 #include "app/commands.h"
 #include "app/render_options.h"
 #include "app/signal_stop.h"
@@ -225,12 +226,14 @@ void printVerbose(const PreparedScene& scene, const WavefrontRenderer& renderer,
                  context.deviceName().c_str(), context.driverInfo().c_str(),
                  context.subgroupSize());
     std::fprintf(stderr, "wavefront: scene: %s\n", describe(summary).c_str());
+    const BvhBuildStats& bvh = scene.bvhStats;
     std::fprintf(stderr,
                  "wavefront: %zu triangles, %zu materials, %zu emitters; BVH %u nodes, depth %u, "
-                 "traversal cost %g, SAH cost %.2f, built in %.3f s\n",
+                 "traversal cost %g, SAH cost %.2f, built in %.3f s (%.2f M triangles/s on %u "
+                 "threads)\n",
                  scene.triangles.size(), scene.materials.size(), scene.lights.emitters.size(),
-                 scene.bvhStats.nodeCount, scene.bvhStats.maxDepth, scene.bvhStats.traversalCost,
-                 scene.bvhStats.sahCost, scene.bvhStats.buildSeconds);
+                 bvh.nodeCount, bvh.maxDepth, bvh.traversalCost, bvh.sahCost, bvh.buildSeconds,
+                 scene.triangles.size() / std::max(bvh.buildSeconds, 1e-9) / 1e6, bvh.threads);
     std::fprintf(stderr, "wavefront: light selection: %s\n",
                  describeLightSelection(scene, renderer.variant()).c_str());
     std::fprintf(stderr, "wavefront: shader variant: %s; up to %u paths per wave\n",
@@ -242,6 +245,28 @@ void printVerbose(const PreparedScene& scene, const WavefrontRenderer& renderer,
     }
     std::fprintf(stderr, "wavefront:   %-18s %10.2f MiB\n", "total GPU memory",
                  total / (1024.0 * 1024.0));
+}
+
+// The scene's size and its BVH build, for --json.
+std::vector<std::pair<std::string, std::string>> sceneJsonFields(const PreparedScene& scene) {
+    const BvhBuildStats& bvh = scene.bvhStats;
+    const double perSecond = scene.triangles.size() / std::max(bvh.buildSeconds, 1e-9);
+    return {{"triangles", std::to_string(scene.triangles.size())},
+            {"bvh", "{\"nodes\": " + std::to_string(bvh.nodeCount) +
+                        ", \"depth\": " + std::to_string(bvh.maxDepth) +
+                        ", \"sahCost\": " + jsonNumber(bvh.sahCost) +
+                        ", \"traversalCost\": " + jsonNumber(bvh.traversalCost) +
+                        ", \"buildSeconds\": " + jsonNumber(bvh.buildSeconds) +
+                        ", \"trianglesPerSecond\": " + jsonNumber(perSecond) +
+                        ", \"threads\": " + std::to_string(bvh.threads) + "}"}};
+}
+
+// Peak host memory, once the render is done: --verbose prints it, --json records it.
+void reportPeakHostMemory(bool verbose, StatsContext& statsContext) {
+    const uint64_t peak = peakHostMemoryBytes();
+    if (verbose)
+        std::fprintf(stderr, "wavefront: peak host memory %.1f MiB\n", peak / (1024.0 * 1024.0));
+    statsContext.extraFields.push_back({"peakHostMemoryBytes", std::to_string(peak)});
 }
 
 // 1 (and a line saying so) when the validation layer spoke, else 0.
@@ -279,8 +304,8 @@ struct OutputRequest {
 
 // The --target-error render: pilot, allocation, rounds (render/adaptive_sampling.h).
 void renderAdaptively(WavefrontRenderer& renderer, const RenderSettings& settings,
-                      double targetError, RenderPart run, const OutputRequest& output,
-                      const StatsContext& statsContext) {
+                      double targetError, RenderPart run, bool verbose,
+                      const OutputRequest& output, StatsContext statsContext) {
     AdaptiveSettings adaptive;
     adaptive.targetError = targetError;
     adaptive.maxSpp = settings.samplesPerPixel;
@@ -311,8 +336,9 @@ void renderAdaptively(WavefrontRenderer& renderer, const RenderSettings& setting
                         : aovChannels(output.aovs,
                                       settings.aov ? renderer.readAovs() : AovImages{},
                                       result.sampleCounts));
+    reportPeakHostMemory(verbose, statsContext);
     if (output.json) {
-        StatsContext context = statsContext;
+        StatsContext& context = statsContext;
         context.extraFields.push_back(
             {"adaptive",
              std::string("{\"targetError\": ") + jsonNumber(targetError) +
@@ -433,10 +459,11 @@ int runRenderCommand(const std::vector<std::string>& args) {
     WavefrontRenderer renderer(context, prepared, rest, compiler);
     if (verbose)
         printVerbose(prepared, renderer, context, summary);
-    const StatsContext statsContext{scenePath,          context.deviceName(), settings.width,
-                                    settings.height,    settings.maxDepth,    settings.seed, {}};
+    StatsContext statsContext{scenePath,       context.deviceName(), settings.width,
+                              settings.height, settings.maxDepth,    settings.seed, {}};
+    statsContext.extraFields = sceneJsonFields(prepared);
     if (adaptive) {
-        renderAdaptively(renderer, settings, targetError, run,
+        renderAdaptively(renderer, settings, targetError, run, verbose,
                          {*output, parsed.value("--json"), aovs, quiet}, statsContext);
         return validationExitCode(context);
     }
@@ -504,6 +531,7 @@ int runRenderCommand(const std::vector<std::string>& args) {
                                                counts));
     if (checkpointPath)
         writeCheckpoint();
+    reportPeakHostMemory(verbose, statsContext);
     if (auto json = parsed.value("--json"))
         writeStatsJson(*json, stats, statsContext);
     if (!quiet)

@@ -506,6 +506,7 @@ BvhBuildStats buildBvh(std::vector<Triangle>& triangles, std::vector<BvhNode>& n
         }
     });
     nodes.reserve(std::size_t(n) * 2 / opts.maxLeafSize + 1);
+    stats.threads = threads;
     Builder builder(refs, opts, threads);
     SubtreeStats subtree;
     builder.build(builder.rootRange(n, threads), 0, nodes, subtree);

@@ -29,6 +29,7 @@ struct BvhBuildStats {
     std::uint32_t maxDepth = 0; // deepest node; the root is depth 0
     std::uint32_t stackNeed = 0; // bvhStackNeed of the paired tree (filled in by its caller)
     float traversalCost = 1.0f;  // the SAH traversal cost built with (buildTunedBvh's choice)
+    std::uint32_t threads = 1;   // threads the build ran on
 };
 
 // Builds `nodes` (cleared first) and reorders `triangles` in place so every leaf indexes a
