@@ -229,7 +229,7 @@ void printVerbose(const PreparedScene& scene, const WavefrontRenderer& renderer,
     const BvhBuildStats& bvh = scene.bvhStats;
     std::fprintf(stderr,
                  "wavefront: %zu triangles, %zu materials, %zu emitters; BVH %u nodes, depth %u, "
-                 "traversal cost %g, SAH cost %.2f, built in %.3f s (%.2f M triangles/s on %u "
+                 "traversal cost %g, SAH cost %.2f, built in %.3f s (%.3g M triangles/s on %u "
                  "threads)\n",
                  scene.triangles.size(), scene.materials.size(), scene.lights.emitters.size(),
                  bvh.nodeCount, bvh.maxDepth, bvh.traversalCost, bvh.sahCost, bvh.buildSeconds,

@@ -303,7 +303,8 @@ private:
     // bin per 4 refs keeps the SAH cost within 0.2% of 32 bins everywhere; one per 20 cost
     // 1.3% on a triangle soup for no measurable speed.
     std::uint32_t binsFor(std::uint32_t n) const {
-        return std::min(opts_.binCount, 4u + n / kRefsPerExtraBin);
+        return opts_.fewerBinsForSmallNodes ? std::min(opts_.binCount, 4u + n / kRefsPerExtraBin)
+                                            : opts_.binCount;
     }
 
     static std::uint32_t binOf(float c, float lo, float scale, std::uint32_t bins) {

@@ -157,6 +157,9 @@ BvhBuildStats buildTunedBvh(std::vector<Triangle>& triangles, std::vector<BvhNod
         stats.traversalCost = options.traversalCost;
         return stats;
     }
+    // Scenes this small build in milliseconds: every node gets every bin, which keeps their
+    // trees (chosen per scene by the model below) as they were measured.
+    options.fewerBinsForSmallNodes = false;
     const auto start = std::chrono::steady_clock::now();
     const std::vector<Triangle> input = triangles;
     BvhBuildStats best;

@@ -46,6 +46,7 @@ double candidateCost(std::vector<Triangle> tris, const std::vector<wf::Material>
                      const wf::Camera& camera, float traversalCost) {
     wf::BvhBuildOptions options;
     options.traversalCost = traversalCost;
+    options.fewerBinsForSmallNodes = false; // as buildTunedBvh builds its candidates
     std::vector<BvhNode> nodes;
     wf::buildBvh(tris, nodes, options);
     return wf::simdTraversalWork(nodes, tris, materials, camera).cost();
