@@ -2,10 +2,36 @@
 // storage texel buffers read with imageLoad (src/gpu/compute_program.h says why) and unpacked
 // into the structs of scene_types.h. Unused fields cost nothing: the compiler drops loads whose
 // texel is unread.
+// Triangles and BVH entries may span several buffers ("pages", WF_TRIANGLE_PAGES and
+// WF_BVH_PAGES of 2^shift entries each) where one buffer would pass the device's limit.
 layout(binding = WF_BINDING_TRIANGLES, rgba32ui) uniform readonly restrict uimageBuffer
     triangleTexels;
+#if WF_TRIANGLE_PAGES > 1
+layout(binding = WF_BINDING_TRIANGLE_PAGE1, rgba32ui) uniform readonly restrict uimageBuffer
+    trianglePage1;
+#endif
+#if WF_TRIANGLE_PAGES > 2
+layout(binding = WF_BINDING_TRIANGLE_PAGE1 + 1, rgba32ui) uniform readonly restrict uimageBuffer
+    trianglePage2;
+#endif
+#if WF_TRIANGLE_PAGES > 3
+layout(binding = WF_BINDING_TRIANGLE_PAGE1 + 2, rgba32ui) uniform readonly restrict uimageBuffer
+    trianglePage3;
+#endif
 layout(binding = WF_BINDING_BVH_NODES, rgba32ui) uniform readonly restrict uimageBuffer
     bvhNodeTexels;
+#if WF_BVH_PAGES > 1
+layout(binding = WF_BINDING_BVH_PAGE1, rgba32ui) uniform readonly restrict uimageBuffer
+    bvhPage1;
+#endif
+#if WF_BVH_PAGES > 2
+layout(binding = WF_BINDING_BVH_PAGE1 + 1, rgba32ui) uniform readonly restrict uimageBuffer
+    bvhPage2;
+#endif
+#if WF_BVH_PAGES > 3
+layout(binding = WF_BINDING_BVH_PAGE1 + 2, rgba32ui) uniform readonly restrict uimageBuffer
+    bvhPage3;
+#endif
 layout(binding = WF_BINDING_MATERIALS, rgba32ui) uniform readonly restrict uimageBuffer
     materialTexels;
 #if WF_HAS_EMITTERS
@@ -36,21 +62,62 @@ layout(binding = WF_BINDING_ENVIRONMENT_ALIAS, rgba32ui) uniform readonly restri
 // A macro, as GLSL functions cannot take the images themselves.
 #define wfTexel(table, index) imageLoad(table, int(index))
 
+// Texel `part` of triangle `index`, from its page.
+uvec4 triangleTexel(uint index, uint part) {
+#if WF_TRIANGLE_PAGES > 1
+    const uint page = index >> WF_TRIANGLE_PAGE_SHIFT;
+    const uint texel =
+        (index & ((1u << WF_TRIANGLE_PAGE_SHIFT) - 1u)) * WF_TRIANGLE_TEXELS + part;
+    if (page == 1u)
+        return wfTexel(trianglePage1, texel);
+#if WF_TRIANGLE_PAGES > 2
+    if (page == 2u)
+        return wfTexel(trianglePage2, texel);
+#endif
+#if WF_TRIANGLE_PAGES > 3
+    if (page == 3u)
+        return wfTexel(trianglePage3, texel);
+#endif
+    return wfTexel(triangleTexels, texel);
+#else
+    return wfTexel(triangleTexels, index * WF_TRIANGLE_TEXELS + part);
+#endif
+}
+
+// Texel `part` of BVH entry `index`, from its page.
+uvec4 bvhTexel(uint index, uint part) {
+#if WF_BVH_PAGES > 1
+    const uint page = index >> WF_BVH_PAGE_SHIFT;
+    const uint texel = (index & ((1u << WF_BVH_PAGE_SHIFT) - 1u)) * WF_BVH_PAIR_TEXELS + part;
+    if (page == 1u)
+        return wfTexel(bvhPage1, texel);
+#if WF_BVH_PAGES > 2
+    if (page == 2u)
+        return wfTexel(bvhPage2, texel);
+#endif
+#if WF_BVH_PAGES > 3
+    if (page == 3u)
+        return wfTexel(bvhPage3, texel);
+#endif
+    return wfTexel(bvhNodeTexels, texel);
+#else
+    return wfTexel(bvhNodeTexels, index * WF_BVH_PAIR_TEXELS + part);
+#endif
+}
+
 Triangle triangleAt(uint index) {
-    uint base = index * WF_TRIANGLE_TEXELS;
-    uvec4 a = wfTexel(triangleTexels, base);
-    uvec4 b = wfTexel(triangleTexels, base + 1u);
-    uvec4 c = wfTexel(triangleTexels, base + 2u);
+    uvec4 a = triangleTexel(index, 0u);
+    uvec4 b = triangleTexel(index, 1u);
+    uvec4 c = triangleTexel(index, 2u);
     return Triangle(uintBitsToFloat(a.xyz), a.w, uintBitsToFloat(b.xyz), b.w,
                     uintBitsToFloat(c.xyz), c.w);
 }
 
 BvhPair bvhPairAt(uint index) {
-    uint base = index * WF_BVH_PAIR_TEXELS;
-    uvec4 a = wfTexel(bvhNodeTexels, base);
-    uvec4 b = wfTexel(bvhNodeTexels, base + 1u);
-    uvec4 c = wfTexel(bvhNodeTexels, base + 2u);
-    uvec4 d = wfTexel(bvhNodeTexels, base + 3u);
+    uvec4 a = bvhTexel(index, 0u);
+    uvec4 b = bvhTexel(index, 1u);
+    uvec4 c = bvhTexel(index, 2u);
+    uvec4 d = bvhTexel(index, 3u);
     return BvhPair(uintBitsToFloat(a.xyz), a.w, uintBitsToFloat(b.xyz), b.w,
                    uintBitsToFloat(c.xyz), c.w, uintBitsToFloat(d.xyz), d.w);
 }

@@ -67,13 +67,36 @@ Buffer uploadTable(const Context& context, const char* name, const std::vector<T
     return buffer;
 }
 
+// `values` cut into `pages`, a buffer each ("triangles", "triangles page 2", ...).
+template <typename T>
+std::vector<Buffer> uploadPages(const Context& context, const std::string& name,
+                                const std::vector<T>& values, const TablePages& pages) {
+    std::vector<Buffer> buffers;
+    for (uint32_t page = 0; page < pages.count; ++page) {
+        const size_t first = size_t(page) * pages.entriesPerPage();
+        const size_t count = std::min<size_t>(values.size() - first, pages.entriesPerPage());
+        buffers.emplace_back(context,
+                             page == 0 ? name : name + " page " + std::to_string(page + 1),
+                             count * sizeof(T));
+        buffers.back().upload(values.data() + first, count * sizeof(T));
+    }
+    return buffers;
+}
+
+void bindPages(DescriptorBindings& bindings, const std::vector<Buffer>& pages,
+               uint32_t firstBinding, uint32_t otherBindings) {
+    for (size_t page = 0; page < pages.size(); ++page)
+        bindings.push_back({page == 0 ? firstBinding : otherBindings + uint32_t(page) - 1,
+                            &pages[page], BufferAccess::UintTexels});
+}
+
 } // namespace
 
 SceneBuffers::SceneBuffers(const Context& context, const PreparedScene& scene,
                            const ShaderVariant& variant)
     : defines_(variant.defines()),
-      triangles_(uploadTable(context, "triangles", scene.triangles)),
-      bvhPairs_(uploadTable(context, "bvh nodes", scene.bvhPairs)),
+      trianglePages_(uploadPages(context, "triangles", scene.triangles, variant.trianglePages)),
+      bvhPages_(uploadPages(context, "bvh nodes", scene.bvhPairs, variant.bvhPages)),
       materials_(uploadTable(context, "materials", scene.materials)) {
     if (variant.nextEventEstimation)
         emitters_ = uploadTable(context, "emitters",
@@ -101,8 +124,8 @@ SceneBuffers::SceneBuffers(const Context& context, const PreparedScene& scene,
 void SceneBuffers::appendBindings(
     DescriptorBindings& bindings) const {
     // The tables every ray and shading point reads at scattered indices (compute_program.h).
-    bindings.push_back({WF_BINDING_TRIANGLES, &triangles_, BufferAccess::UintTexels});
-    bindings.push_back({WF_BINDING_BVH_NODES, &bvhPairs_, BufferAccess::UintTexels});
+    bindPages(bindings, trianglePages_, WF_BINDING_TRIANGLES, WF_BINDING_TRIANGLE_PAGE1);
+    bindPages(bindings, bvhPages_, WF_BINDING_BVH_NODES, WF_BINDING_BVH_PAGE1);
     bindings.push_back({WF_BINDING_MATERIALS, &materials_, BufferAccess::UintTexels});
     if (emitters_)
         bindings.push_back({WF_BINDING_EMITTERS, &emitters_, BufferAccess::UintTexels});
@@ -123,7 +146,10 @@ void SceneBuffers::appendBindings(
 
 void SceneBuffers::appendMemoryReport(
     std::vector<std::pair<std::string, uint64_t>>& report) const {
-    for (const Buffer* buffer : {&triangles_, &bvhPairs_, &materials_, &emitters_, &lightTree_,
+    for (const std::vector<Buffer>* pages : {&trianglePages_, &bvhPages_})
+        for (const Buffer& page : *pages)
+            report.emplace_back(page.name(), page.size());
+    for (const Buffer* buffer : {&materials_, &emitters_, &lightTree_,
                                  &lightTreeTrails_, &lights_, &environment_, &environmentAlias_})
         if (*buffer)
             report.emplace_back(buffer->name(), buffer->size());

@@ -53,8 +53,8 @@ public:
 
 private:
     ShaderDefines defines_;
-    Buffer triangles_;
-    Buffer bvhPairs_;
+    std::vector<Buffer> trianglePages_; // the variant's trianglePages
+    std::vector<Buffer> bvhPages_;      // and bvhPages
     Buffer materials_;
     Buffer emitters_; // empty handle when the scene has no emitters
     Buffer lightTree_;       // nodes and each emitter's trail, with --light-selection tree

@@ -20,6 +20,20 @@ enum class LightSampling { Bsdf = 0, Nee = 1, Mis = 2 };
 enum class LightSelection { Auto, Uniform, Power, Tree };
 constexpr uint32_t kLightTreeMinLights = 4;
 
+// How a table of entries spreads over buffers: `count` pages of 2^shift entries (shift 31 and
+// one page when it fits in one buffer).
+struct TablePages {
+    uint32_t count = 1;
+    uint32_t shift = 31;
+    uint64_t entriesPerPage() const { return uint64_t(1) << shift; }
+    bool operator==(const TablePages&) const = default;
+};
+
+// The pages `entries` entries of `entryBytes` need where one buffer holds at most `pageBytes`;
+// InputError naming the table and the limit past WF_MAX_TABLE_PAGES pages.
+TablePages tablePaging(uint64_t entries, uint64_t entryBytes, uint64_t pageBytes,
+                       const char* table);
+
 struct ShaderVariant {
     LightSampling lightSampling = LightSampling::Mis;
     bool nextEventEstimation = false; // a light table to sample, and shadow rays
@@ -39,6 +53,8 @@ struct ShaderVariant {
     bool aov = false;                 // WF_AOV: first-hit albedo, normal, distance
     bool secondMoment = false;        // WF_SECOND_MOMENT: radiance^2 per pixel (variance)
     bool adaptive = false;            // WF_ADAPTIVE: waves cover a list of pixels
+    TablePages trianglePages;         // WF_TRIANGLE_PAGES, _SHIFT: set by the renderer
+    TablePages bvhPages;              // WF_BVH_PAGES, _SHIFT: set by the renderer
 
     bool lightsBuffer() const { return sphereLights || deltaLights; }
     bool lightTree() const {

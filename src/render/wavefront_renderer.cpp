@@ -85,6 +85,16 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
     variant_ = chooseVariant(scene, settings);
     variant_.surface = surfaceFeatures(scene.surface, scene.materials, texelPageBytes(context));
     variant_.packedStores = settings.packedStores && context.shaderInt64();
+    const VkPhysicalDeviceLimits& limits = context.properties().limits;
+    const uint64_t pageBytes =
+        settings.tablePageBytes > 0
+            ? settings.tablePageBytes
+            : std::min<uint64_t>(limits.maxStorageBufferRange,
+                                 uint64_t(limits.maxTexelBufferElements) * 16);
+    variant_.trianglePages =
+        tablePaging(scene.triangles.size(), sizeof(Triangle), pageBytes, "triangles");
+    variant_.bvhPages =
+        tablePaging(scene.bvhPairs.size(), sizeof(BvhPair), pageBytes, "BVH nodes");
     defines_ = variant_.defines();
     if (sharedScene && sharedScene->defines() != defines_)
         throw InternalError("scene buffers shared between renderers of different variants");

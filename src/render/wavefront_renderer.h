@@ -81,6 +81,9 @@ struct RenderSettings {
     // --target-error: waves cover lists of pixels (renderPixelList) and the film keeps each
     // pixel's radiance squared (readMoments); render() and the progressive calls are refused.
     bool pixelList = false;
+    // Most bytes of the triangle or BVH table in one buffer (0: the device's limit); a test
+    // sets it low to spread a small scene over pages as a large one spreads.
+    uint64_t tablePageBytes = 0;
 };
 
 // The film and its second moment, per pixel: rgb sums, sample counts and rgb sums of squares.

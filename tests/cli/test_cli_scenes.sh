@@ -2,7 +2,7 @@
 # The command line on real and broken scenes: every invalid corpus file is refused with exit
 # code 2, one line on stderr and no output file; --camera and --env choose and refuse cleanly;
 # textured scenes render; a generated scene of over 300k triangles renders with its BVH
-# statistics in --verbose.
+# statistics in --verbose; one of 3 M triangles, over one buffer's limit, renders.
 # Usage: test_cli_scenes.sh PATH/TO/wavefront SOURCE_DIR
 set -u
 wavefront=$1
@@ -52,5 +52,15 @@ triangles=$(grep -o '[0-9]* triangles, [0-9]* materials, [0-9]* emitters' "$work
 expect "big scene has >= 300k triangles ($triangles)" test "${triangles:-0}" -ge 300000
 expect "big scene: BVH build time and SAH cost" grep -q "SAH cost .*built in" "$work/stderr"
 expect "big scene: vertex normals buffer" grep -q "vertex normals" "$work/stderr"
+
+# Over one buffer's limit on lavapipe (128 MiB: 2.8 M triangles of 48 bytes): the triangle
+# table spreads over two buffers and the scene renders.
+python3 "$source_dir/bench/make_scaling_scene.py" "$work/over.gltf" --triangles 3000000 >/dev/null
+check "scene over one buffer renders" 0 "$wavefront" render "$work/over.gltf" \
+    -o "$work/over.exr" --spp 1 --width 16 --max-depth 2 --verbose --json "$work/over.json"
+if grep -q "device llvmpipe" "$work/stderr"; then # other devices may hold it in one buffer
+    expect "over one buffer: a second triangle page" grep -q "triangles page 2" "$work/stderr"
+fi
+expect "over one buffer: all its triangles" json_has "$work/over.json" "d['triangles'] > 2900000"
 
 finish
