@@ -96,6 +96,7 @@ private:
     std::vector<int> rootNodes() const;
     glm::dmat4 localTransform(int nodeIndex) const;
     void walkNodes(gltf::PrimitiveBuilder& builder);
+    void checkPlacedTriangles() const;
     void addDefaultEnvironment();
 
     const tinygltf::Model& model_;
@@ -219,6 +220,59 @@ glm::dmat4 Converter::localTransform(int nodeIndex) const {
     return m;
 }
 
+// Counts the triangles the scene flattens to from the accessors' counts alone, before any is
+// read, so that a small file placing a big mesh at many nodes is refused at once rather than
+// after filling memory. Bad indices are left to walkNodes, which names them.
+void Converter::checkPlacedTriangles() const {
+    // An accessor's count where its buffer view could hold it; 0 otherwise (walkNodes then
+    // names the accessor, which says more than a triangle count would).
+    auto countOf = [&](int index) -> std::size_t {
+        if (index < 0 || std::size_t(index) >= model_.accessors.size())
+            return 0;
+        const tinygltf::Accessor& accessor = model_.accessors[index];
+        if (accessor.bufferView < 0 ||
+            std::size_t(accessor.bufferView) >= model_.bufferViews.size())
+            return 0;
+        const int component = tinygltf::GetComponentSizeInBytes(accessor.componentType);
+        const int components = tinygltf::GetNumComponentsInType(accessor.type);
+        if (component <= 0 || components <= 0)
+            return 0;
+        const std::size_t element = std::size_t(component) * std::size_t(components);
+        return accessor.count <= model_.bufferViews[accessor.bufferView].byteLength / element
+                   ? accessor.count
+                   : 0;
+    };
+    std::size_t total = 0;
+    std::vector<int> stack = rootNodes();
+    std::vector<bool> seen(model_.nodes.size(), false);
+    while (!stack.empty()) {
+        const int index = stack.back();
+        stack.pop_back();
+        if (index < 0 || std::size_t(index) >= model_.nodes.size() || seen[index])
+            continue;
+        seen[index] = true;
+        const tinygltf::Node& node = model_.nodes[index];
+        if (node.mesh >= 0 && std::size_t(node.mesh) < model_.meshes.size()) {
+            for (const tinygltf::Primitive& primitive : model_.meshes[node.mesh].primitives) {
+                auto position = primitive.attributes.find("POSITION");
+                const std::size_t n = primitive.indices >= 0 ? countOf(primitive.indices)
+                                      : position != primitive.attributes.end()
+                                          ? countOf(position->second)
+                                          : 0;
+                if (primitive.mode == TINYGLTF_MODE_TRIANGLES || primitive.mode == -1)
+                    total += n / 3;
+                else if (primitive.mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
+                         primitive.mode == TINYGLTF_MODE_TRIANGLE_FAN)
+                    total += n >= 3 ? n - 2 : 0;
+            }
+        }
+        if (total > gltf::maxSceneTriangles())
+            fail("its nodes place more than " + std::to_string(gltf::maxSceneTriangles()) +
+                 " triangles, " + gltf::sceneTriangleLimitReason());
+        stack.insert(stack.end(), node.children.begin(), node.children.end());
+    }
+}
+
 // Depth-first, children in file order, without recursion so deep trees cannot overflow the
 // stack; checkNodeTree guarantees each node is reached at most once from the roots.
 void Converter::walkNodes(gltf::PrimitiveBuilder& builder) {
@@ -277,6 +331,7 @@ Scene Converter::run() {
     checkNodeTree();
     const uint32_t defaultIndex = uint32_t(tables.materials.size());
     gltf::PrimitiveBuilder builder(model_, file_, tables, defaultIndex);
+    checkPlacedTriangles();
     walkNodes(builder);
     builder.finish(scene_);
     gltf::loadImages(model_, file_, policy_.images, tables, scene_.surface);

@@ -2,6 +2,8 @@
 // position, so indexed, non-indexed, strip and fan primitives share one loop.
 #include "scene/gltf_primitives.h"
 
+#include <unistd.h>
+
 #include <tiny_gltf.h>
 
 #include <cmath>
@@ -12,6 +14,32 @@
 #include <glm/gtc/matrix_inverse.hpp>
 
 namespace wf::gltf {
+
+namespace {
+
+std::size_t physicalMemoryBytes() {
+    const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGE_SIZE);
+    return pages > 0 && pageSize > 0 ? std::size_t(pages) * std::size_t(pageSize) : 0;
+}
+
+std::size_t memoryTriangleLimit() {
+    const std::size_t bytes = physicalMemoryBytes();
+    return bytes > 0 ? bytes / kHostBytesPerTriangle : kTraversalTriangleLimit;
+}
+
+} // namespace
+
+std::size_t maxSceneTriangles() {
+    return std::min(kTraversalTriangleLimit, memoryTriangleLimit());
+}
+
+std::string sceneTriangleLimitReason() {
+    if (memoryTriangleLimit() >= kTraversalTriangleLimit)
+        return "the BVH's triangle index limit";
+    return "the most this machine's " + std::to_string(physicalMemoryBytes() >> 30) +
+           " GiB of memory holds at about " + std::to_string(kHostBytesPerTriangle) +
+           " bytes a triangle (meshes placed by several nodes are copied)";
+}
 namespace {
 
 // The GPU normalizes cross(p1 - p0, p2 - p0) in float; a triangle whose float cross product
@@ -64,8 +92,9 @@ std::vector<uint32_t> PrimitiveBuilder::corners(int mode, size_t vertexCount, in
         fail(file_, where + ": " + std::to_string(n) + " vertices do not make whole triangles");
     }
     const size_t triangles = mode == TINYGLTF_MODE_TRIANGLES ? n / 3 : (n >= 3 ? n - 2 : 0);
-    if (triangles > MAX_TRIANGLES - triangles_.size()) {
-        fail(file_, "more than " + std::to_string(MAX_TRIANGLES) + " triangles");
+    if (triangles > maxSceneTriangles() - triangles_.size()) {
+        fail(file_, "more than " + std::to_string(maxSceneTriangles()) + " triangles, " +
+                        sceneTriangleLimitReason());
     }
     std::vector<uint32_t> out;
     out.reserve(triangles * 3);

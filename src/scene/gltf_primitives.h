@@ -20,9 +20,19 @@ struct Primitive;
 
 namespace wf::gltf {
 
-// Far above what the GPU buffers hold; it only stops a small file that instances a big mesh
-// from thousands of nodes from exhausting memory here.
-constexpr std::size_t MAX_TRIANGLES = std::size_t(1) << 24;
+// Host bytes a triangle takes at the peak of loading and building (measured ~200: a 3.5 M
+// triangle scene peaked at 710 MiB).
+constexpr std::size_t kHostBytesPerTriangle = 256;
+// The BVH's triangle index limit (bvh_traverse.h: 32 - WF_BVH_COUNT_BITS bits).
+constexpr std::size_t kTraversalTriangleLimit = (std::size_t(1) << 27) - 1;
+
+// The most triangles a scene may flatten to: the traversal's limit, or what this machine's
+// memory holds at kHostBytesPerTriangle, whichever is less. Meshes placed by many nodes are
+// flattened, so a small file can ask for far more; the loader refuses it before loading.
+std::size_t maxSceneTriangles();
+// Why maxSceneTriangles() is what it is, for the refusal: "this machine's 24 GiB of memory
+// (256 bytes a triangle)" or "the BVH's triangle index limit".
+std::string sceneTriangleLimitReason();
 
 // Octahedral encoding of a unit vector in two 16-bit snorms (decoded by octDecode).
 uint32_t octEncode(glm::vec3 n);

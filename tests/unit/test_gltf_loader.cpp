@@ -11,6 +11,7 @@
 
 #include "errors.h"
 #include "scene/gltf_loader.h"
+#include "scene/gltf_primitives.h"
 #include "scene/scene_summary.h"
 
 namespace wf {
@@ -522,6 +523,41 @@ TEST(GltfLoader, UnreadableOrWrongFilesAreInputErrors) {
         << "{\"asset\":{\"version\":\"2.0\"},\"extras\":" << std::string(100000, '[')
         << std::string(100000, ']') << "}";
     EXPECT_NE(inputError(dir.file("deep.gltf")).find("nested"), std::string::npos);
+}
+
+} // namespace
+} // namespace wf
+
+namespace wf {
+namespace {
+
+// A small file that places one 1000-triangle mesh at more nodes than memory can flatten is
+// refused at once, from the accessors' counts, naming the limit, before any triangle is read.
+TEST(GltfLoader, PlacingAMeshPastTheTriangleLimitIsRefusedUpFront) {
+    TempDir dir;
+    MiniGltf g;
+    std::vector<float> xyz;
+    for (int t = 0; t < 1000; ++t)
+        for (float v : {0.0f, 0.0f, float(t), 1.0f, 0.0f, float(t), 0.0f, 1.0f, float(t)})
+            xyz.push_back(v);
+    g.addMesh(g.addPositions(xyz));
+    const std::size_t nodes = gltf::maxSceneTriangles() / 1000 + 1;
+    std::string roots;
+    for (std::size_t i = 0; i < nodes; ++i) {
+        g.nodes.push_back("{\"mesh\":0}");
+        roots += (i ? "," : "") + std::to_string(i);
+    }
+    g.scenes = "[{\"nodes\":[" + roots + "]}]";
+    const std::string path = g.write(dir);
+    try {
+        loadGltf(path);
+        FAIL() << "a scene of " << nodes * 1000 << " triangles loaded";
+    } catch (const InputError& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find(std::to_string(gltf::maxSceneTriangles())), std::string::npos)
+            << message;
+        EXPECT_NE(message.find(gltf::sceneTriangleLimitReason()), std::string::npos) << message;
+    }
 }
 
 } // namespace
