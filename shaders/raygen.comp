@@ -7,6 +7,7 @@
 layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "bindings.glsl"
 #include "rng.h"
+#include "sampling.h"
 #include "wave_paths.glsl"
 #include "camera_ray.glsl"
 

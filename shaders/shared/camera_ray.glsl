@@ -1,5 +1,5 @@
 // The camera ray of one pixel sample, shared by the raygen pass and the megakernel.
-// Needs bindings.glsl (params) and rng.h.
+// Needs bindings.glsl (params), rng.h and (WF_THIN_LENS) sampling.h.
 #ifndef WF_CAMERA_RAY_GLSL
 #define WF_CAMERA_RAY_GLSL
 
@@ -12,8 +12,17 @@ void cameraRay(uint pixel, uint sampleIndex, out vec3 origin, out vec3 direction
     vec3 d = params.cameraForward +
              params.cameraRight * (ndc.x * params.tanHalfFovY * params.aspect) -
              params.cameraUp * (ndc.y * params.tanHalfFovY);
+#if WF_THIN_LENS
+    // d has unit length along cameraForward, so d x focusDistance lands on the plane in focus;
+    // the ray leaves a point of the lens disc (concentric mapping) towards it.
+    vec2 lens = params.lensRadius *
+                sampleConcentricDisk(sample2D(pixel, sampleIndex, WF_DIM_LENS, params.seed));
+    origin = params.cameraPosition + params.cameraRight * lens.x + params.cameraUp * lens.y;
+    direction = normalize(params.cameraPosition + d * params.focusDistance - origin);
+#else
     origin = params.cameraPosition;
     direction = normalize(d);
+#endif
 }
 
 #endif

@@ -87,6 +87,10 @@ struct RenderParams {
     uint environmentHeight;
     float minThroughput; // --min-throughput (0: off)
     float clampRadiance; // --clamp (0: off)
+    float lensRadius;    // thin lens (WF_THIN_LENS): half the aperture
+    float focusDistance; // along cameraForward, to the plane in focus
+    uint pad0;
+    uint pad1;
 };
 
 // VkDispatchIndirectCommand followed by the item count the dispatch covers.
@@ -133,7 +137,7 @@ struct PassConstants {
 
 #ifdef __cplusplus
 } // namespace wf::gpu_types
-static_assert(sizeof(wf::gpu_types::RenderParams) == 128);
+static_assert(sizeof(wf::gpu_types::RenderParams) == 144);
 static_assert(offsetof(wf::gpu_types::RenderParams, sceneCenter) == 96);
 static_assert(offsetof(wf::gpu_types::RenderParams, clampRadiance) == 124);
 static_assert(offsetof(wf::gpu_types::RenderParams, seed) == 44);

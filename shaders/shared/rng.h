@@ -9,6 +9,8 @@
 //
 // Sample dimensions, in this fixed order (every sampler plugs into the same numbering):
 //   0-1               pixel position inside the pixel (box filter)
+//   2-3               with a thin lens only (WF_THIN_LENS): the point on the lens, so that
+//                     pinhole renders keep their numbering
 //   per bounce d:     WF_DIM_BOUNCE_BASE + d * WF_DIMS_PER_BOUNCE + offset, offset:
 //     0               light choice
 //     1-2             point on the light
@@ -46,7 +48,15 @@ namespace wf::gpu_types {
 #endif
 
 #define WF_DIM_PIXEL 0u
+#ifndef WF_THIN_LENS
+#define WF_THIN_LENS 0
+#endif
+#define WF_DIM_LENS 2u
+#if WF_THIN_LENS
+#define WF_DIM_BOUNCE_BASE 4u
+#else
 #define WF_DIM_BOUNCE_BASE 2u
+#endif
 #define WF_DIMS_PER_BOUNCE 8u
 #define WF_DIM_LIGHT_CHOICE 0u
 #define WF_DIM_LIGHT_POINT 1u

@@ -39,6 +39,7 @@ const CommandSpec& benchSpec() {
                 {"--spp", "", "N", "samples per pixel in one frame (default 1)"},
             },
             depthOptions(kDefaultMaxDepth),
+            lensOptions(),
             samplingOptions(),
             {
                 noRandomizeOption(),

@@ -61,6 +61,7 @@ const CommandSpec& convergeSpec() {
                                       "camera's aspect)"},
             },
             depthOptions(kDefaultMaxDepth),
+            lensOptions(),
             {
                 {"--crop", "", "X,Y,W,H", "region of the equal-time crops (default: the central "
                                           "half of the image)"},

@@ -65,6 +65,7 @@ const CommandSpec& renderSpec() {
             },
             imageSizeOptions(kDefaultWidth),
             depthOptions(kDefaultMaxDepth),
+            lensOptions(),
             samplingOptions(),
             {
                 noRandomizeOption(),
@@ -216,6 +217,8 @@ std::string renderSettingsKey(const RenderSettings& s, const ParsedArgs& parsed)
            (s.sphereSolidAngle ? "solid-angle" : "area") + " " + samplerName(s.sampler) +
            (s.randomizeSamples ? "" : " no-randomize") + " camera " +
            parsed.value("--camera").value_or("default") +
+           (parsed.has("--aperture") ? " aperture " + *parsed.value("--aperture") : "") +
+           (parsed.has("--focus-distance") ? " focus " + *parsed.value("--focus-distance") : "") +
            (parsed.has("--target-error") ? " target-error " + *parsed.value("--target-error")
                                          : "");
 }

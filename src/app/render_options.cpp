@@ -1,6 +1,7 @@
 #include "app/render_options.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 
@@ -66,6 +67,15 @@ OptionSpec cameraOption() {
                                           "(default: the first)"};
 }
 
+std::vector<OptionSpec> lensOptions() {
+    return {{"--aperture", "", "D", "thin-lens camera: the lens's diameter in scene units "
+                                    "(default: the camera's extras.aperture, else 0, a "
+                                    "pinhole)"},
+            {"--focus-distance", "", "F", "distance along the view to the plane in focus "
+                                          "(default: the camera's extras.focusDistance, else "
+                                          "the scene's centre's)"}};
+}
+
 OptionSpec envOption() {
     return {"--env", "", "FILE.exr", "equirectangular environment map, linear RGB, +Y up "
                                      "(default: none; uniform white if nothing emits)"};
@@ -103,6 +113,30 @@ ContextOptions contextOptionsFrom(const ParsedArgs& parsed) {
     return options;
 }
 
+namespace {
+
+// --aperture and --focus-distance over the camera's own; an unset focus distance with a lens
+// focuses on the scene's centre (its bounds' centre, along the view).
+void applyLensFlags(const ParsedArgs& parsed, Scene& scene) {
+    Camera& camera = scene.camera;
+    camera.aperture = parsed.floatValue("--aperture", camera.aperture, 0.0f, 1e30f);
+    camera.focusDistance =
+        parsed.floatValue("--focus-distance", camera.focusDistance, 1e-30f, 1e30f);
+    if (camera.aperture <= 0.0f || camera.focusDistance > 0.0f)
+        return;
+    glm::vec3 lo(FLT_MAX), hi(-FLT_MAX);
+    for (const Triangle& t : scene.triangles)
+        for (const glm::vec3& p : {t.p0, t.p1, t.p2}) {
+            lo = glm::min(lo, p);
+            hi = glm::max(hi, p);
+        }
+    const float along =
+        scene.triangles.empty() ? 0.0f : glm::dot(0.5f * (lo + hi) - camera.position, camera.forward);
+    camera.focusDistance = along > 0.0f ? along : 1.0f;
+}
+
+} // namespace
+
 Scene loadSceneWithFlags(const ParsedArgs& parsed, const std::string& path,
                          SceneSummary* summary) {
     std::vector<std::string> warnings; // printed once the scene and flags are accepted
@@ -119,6 +153,7 @@ Scene loadSceneWithFlags(const ParsedArgs& parsed, const std::string& path,
         std::fprintf(stderr, "%s\n", line.c_str());
     if (!scene.hasCamera)
         scene.camera = frameBounds(scene);
+    applyLensFlags(parsed, scene);
     return scene;
 }
 

@@ -29,6 +29,7 @@ OptionSpec deviceOption();      // --device
 OptionSpec quietOption();       // --quiet, -q: no progress lines
 OptionSpec cameraOption();      // --camera: one of the file's cameras
 OptionSpec envOption();         // --env
+std::vector<OptionSpec> lensOptions(); // --aperture, --focus-distance
 
 // depthOptions, samplingOptions and --no-randomize into `settings` (UsageError on a bad value).
 void applyRenderFlags(const ParsedArgs& parsed, uint32_t defaultMaxDepth,
@@ -39,7 +40,8 @@ ContextOptions contextOptionsFrom(const ParsedArgs& parsed);
 
 // Loads the glTF file at `path`, takes the file's camera that --camera names and the
 // environment map --env names, prints the loader's warnings once those are accepted, then
-// frames the scene when it has no camera. `summary`, when given, describes the scene as loaded
+// frames the scene when it has no camera and sets its lens from --aperture and
+// --focus-distance. `summary`, when given, describes the scene as loaded
 // (before framing). Throws InputError for a bad file, camera or map.
 Scene loadSceneWithFlags(const ParsedArgs& parsed, const std::string& path,
                          SceneSummary* summary = nullptr);

@@ -32,6 +32,7 @@ const CommandSpec& viewSpec() {
                                    "finite-set sampler: 256)"},
             },
             depthOptions(kDefaultMaxDepth),
+            lensOptions(),
             samplingOptions(),
             {
                 envOption(),

@@ -43,6 +43,7 @@ ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& se
     variant.aov = settings.aov && !settings.megakernel;
     variant.secondMoment = settings.aov || settings.pixelList;
     variant.adaptive = settings.pixelList;
+    variant.thinLens = scene.camera.aperture > 0.0f;
     variant.sampler = settings.sampler;
     variant.randomizeSamples = settings.randomizeSamples;
     return variant;
@@ -97,6 +98,7 @@ ShaderDefines ShaderVariant::defines() const {
             {"WF_AOV", flag(aov)},
             {"WF_SECOND_MOMENT", flag(secondMoment)},
             {"WF_ADAPTIVE", flag(adaptive)},
+            {"WF_THIN_LENS", flag(thinLens)},
             {"WF_TRIANGLE_PAGES", std::to_string(trianglePages.count)},
             {"WF_TRIANGLE_PAGE_SHIFT", std::to_string(trianglePages.shift)},
             {"WF_BVH_PAGES", std::to_string(bvhPages.count)},

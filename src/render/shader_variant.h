@@ -53,6 +53,7 @@ struct ShaderVariant {
     bool aov = false;                 // WF_AOV: first-hit albedo, normal, distance
     bool secondMoment = false;        // WF_SECOND_MOMENT: radiance^2 per pixel (variance)
     bool adaptive = false;            // WF_ADAPTIVE: waves cover a list of pixels
+    bool thinLens = false;            // WF_THIN_LENS: the camera has an aperture
     TablePages trianglePages;         // WF_TRIANGLE_PAGES, _SHIFT: set by the renderer
     TablePages bvhPages;              // WF_BVH_PAGES, _SHIFT: set by the renderer
 

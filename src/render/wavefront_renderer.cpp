@@ -165,6 +165,8 @@ void WavefrontRenderer::uploadParams() {
     params.environmentHeight = scene_.environment.height;
     params.minThroughput = settings_.minThroughput;
     params.clampRadiance = settings_.clampRadiance;
+    params.lensRadius = 0.5f * camera.aperture;
+    params.focusDistance = camera.focusDistance;
     pathBuffers_->params.upload(&params, sizeof params);
 }
 

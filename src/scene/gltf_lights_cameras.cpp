@@ -44,6 +44,18 @@ void addNodeCamera(const tinygltf::Model& model, const std::string& file, int no
     out.up = glm::vec3(up);
     out.yfov = float(yfov);
     out.aspect = float(aspect);
+    // A thin lens from extras (glTF has none of its own); a bad value is ignored with a warning.
+    for (const char* key : {"aperture", "focusDistance"}) {
+        if (!camera.extras.IsObject() || !camera.extras.Has(key))
+            continue;
+        const tinygltf::Value& v = camera.extras.Get(key);
+        const double value = v.IsNumber() ? v.GetNumberAsDouble() : -1.0;
+        if (!(value >= 0.0 && value < 1e30)) {
+            warn(file, name + ": extras." + key + " must be a finite number >= 0; ignored");
+            continue;
+        }
+        (std::string(key) == "aperture" ? out.aperture : out.focusDistance) = float(value);
+    }
     scene.cameras.push_back(out);
     scene.cameraNames.push_back(!camera.name.empty() ? camera.name
                                 : !node.name.empty() ? node.name

@@ -11,7 +11,7 @@ expect "top help lists render" grep -q "render" "$work/stdout"
 check "render help" 0 "$wavefront" render --help
 for flag in --output --spp --width --height --max-depth --rr-depth --seed --json --quiet \
     --device --light-sampling --light-selection --triangle-sampling --sphere-sampling \
-    --min-throughput --clamp; do
+    --min-throughput --clamp --aperture --focus-distance; do
     expect "render help lists $flag" grep -q -- "$flag" "$work/stdout"
 done
 
@@ -29,6 +29,13 @@ expect "json scene and bvh build" json_has "$work/stats.json" \
      d['bvh']['threads'] >= 1 and d['peakHostMemoryBytes'] > 0"
 expect "progress on stderr" grep -q "spp" "$work/stderr"
 expect "no temp files left" bash -c "! ls '$work' | grep -q tmp"
+
+check "thin lens" 0 "$wavefront" render "$scenes/cornell_box.gltf" -o "$work/lens.exr" --spp 2 \
+    --width 24 --max-depth 2 --aperture 0.3 --focus-distance 8 --verbose --quiet
+expect "thin lens: its variant" grep -q "WF_THIN_LENS=1" "$work/stderr"
+check "negative aperture" 2 "$wavefront" render "$scenes/cornell_box.gltf" -o "$work/x.exr" \
+    --aperture -1
+expect "negative aperture: one line" one_line_error
 
 check "quiet render" 0 "$wavefront" render "$scenes/cornell_box.gltf" -o "$work/q.exr" --spp 1 \
     --width 16 --quiet
