@@ -47,8 +47,8 @@ namespace wf::gpu_types {
 #define WF_BINDING_AOV_FILM 35  // --aov: per pixel, sums of those (2 vec4)
 #define WF_BINDING_MOMENT_FILM 36   // --aov variance, --target-error: per pixel, radiance^2 sums
 #define WF_BINDING_ACTIVE_PIXELS 37 // --target-error: the pixels a wave's pixel range lists
-#define WF_BINDING_TRIANGLE_PAGE1 49 // pages 1-3 of the triangles (49, 50, 51)
-#define WF_BINDING_BVH_PAGE1 52      // pages 1-3 of the BVH entries (52, 53, 54)
+#define WF_BINDING_TRIANGLE_PAGE1 49 // pages 1-7 of the triangles (49 .. 55)
+#define WF_BINDING_BVH_PAGE1 56      // pages 1-7 of the BVH entries (56 .. 62)
 #define WF_BINDING_LIGHTS 17
 #define WF_BINDING_ENVIRONMENT 18       // vec4 radiance per texel
 #define WF_BINDING_ENVIRONMENT_ALIAS 19 // Emitter-shaped alias table over texels

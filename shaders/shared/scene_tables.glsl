@@ -7,7 +7,7 @@
 layout(binding = WF_BINDING_TRIANGLES, rgba32ui) uniform readonly restrict uimageBuffer
     triangleTexels;
 #if WF_TRIANGLE_PAGES > 1
-layout(binding = WF_BINDING_TRIANGLE_PAGE1, rgba32ui) uniform readonly restrict uimageBuffer
+layout(binding = WF_BINDING_TRIANGLE_PAGE1 + 0, rgba32ui) uniform readonly restrict uimageBuffer
     trianglePage1;
 #endif
 #if WF_TRIANGLE_PAGES > 2
@@ -18,10 +18,26 @@ layout(binding = WF_BINDING_TRIANGLE_PAGE1 + 1, rgba32ui) uniform readonly restr
 layout(binding = WF_BINDING_TRIANGLE_PAGE1 + 2, rgba32ui) uniform readonly restrict uimageBuffer
     trianglePage3;
 #endif
+#if WF_TRIANGLE_PAGES > 4
+layout(binding = WF_BINDING_TRIANGLE_PAGE1 + 3, rgba32ui) uniform readonly restrict uimageBuffer
+    trianglePage4;
+#endif
+#if WF_TRIANGLE_PAGES > 5
+layout(binding = WF_BINDING_TRIANGLE_PAGE1 + 4, rgba32ui) uniform readonly restrict uimageBuffer
+    trianglePage5;
+#endif
+#if WF_TRIANGLE_PAGES > 6
+layout(binding = WF_BINDING_TRIANGLE_PAGE1 + 5, rgba32ui) uniform readonly restrict uimageBuffer
+    trianglePage6;
+#endif
+#if WF_TRIANGLE_PAGES > 7
+layout(binding = WF_BINDING_TRIANGLE_PAGE1 + 6, rgba32ui) uniform readonly restrict uimageBuffer
+    trianglePage7;
+#endif
 layout(binding = WF_BINDING_BVH_NODES, rgba32ui) uniform readonly restrict uimageBuffer
     bvhNodeTexels;
 #if WF_BVH_PAGES > 1
-layout(binding = WF_BINDING_BVH_PAGE1, rgba32ui) uniform readonly restrict uimageBuffer
+layout(binding = WF_BINDING_BVH_PAGE1 + 0, rgba32ui) uniform readonly restrict uimageBuffer
     bvhPage1;
 #endif
 #if WF_BVH_PAGES > 2
@@ -31,6 +47,22 @@ layout(binding = WF_BINDING_BVH_PAGE1 + 1, rgba32ui) uniform readonly restrict u
 #if WF_BVH_PAGES > 3
 layout(binding = WF_BINDING_BVH_PAGE1 + 2, rgba32ui) uniform readonly restrict uimageBuffer
     bvhPage3;
+#endif
+#if WF_BVH_PAGES > 4
+layout(binding = WF_BINDING_BVH_PAGE1 + 3, rgba32ui) uniform readonly restrict uimageBuffer
+    bvhPage4;
+#endif
+#if WF_BVH_PAGES > 5
+layout(binding = WF_BINDING_BVH_PAGE1 + 4, rgba32ui) uniform readonly restrict uimageBuffer
+    bvhPage5;
+#endif
+#if WF_BVH_PAGES > 6
+layout(binding = WF_BINDING_BVH_PAGE1 + 5, rgba32ui) uniform readonly restrict uimageBuffer
+    bvhPage6;
+#endif
+#if WF_BVH_PAGES > 7
+layout(binding = WF_BINDING_BVH_PAGE1 + 6, rgba32ui) uniform readonly restrict uimageBuffer
+    bvhPage7;
 #endif
 layout(binding = WF_BINDING_MATERIALS, rgba32ui) uniform readonly restrict uimageBuffer
     materialTexels;
@@ -68,17 +100,38 @@ uvec4 triangleTexel(uint index, uint part) {
     const uint page = index >> WF_TRIANGLE_PAGE_SHIFT;
     const uint texel =
         (index & ((1u << WF_TRIANGLE_PAGE_SHIFT) - 1u)) * WF_TRIANGLE_TEXELS + part;
-    if (page == 1u)
+    switch (page) {
+#if WF_TRIANGLE_PAGES > 1
+    case 1u:
         return wfTexel(trianglePage1, texel);
+#endif
 #if WF_TRIANGLE_PAGES > 2
-    if (page == 2u)
+    case 2u:
         return wfTexel(trianglePage2, texel);
 #endif
 #if WF_TRIANGLE_PAGES > 3
-    if (page == 3u)
+    case 3u:
         return wfTexel(trianglePage3, texel);
 #endif
-    return wfTexel(triangleTexels, texel);
+#if WF_TRIANGLE_PAGES > 4
+    case 4u:
+        return wfTexel(trianglePage4, texel);
+#endif
+#if WF_TRIANGLE_PAGES > 5
+    case 5u:
+        return wfTexel(trianglePage5, texel);
+#endif
+#if WF_TRIANGLE_PAGES > 6
+    case 6u:
+        return wfTexel(trianglePage6, texel);
+#endif
+#if WF_TRIANGLE_PAGES > 7
+    case 7u:
+        return wfTexel(trianglePage7, texel);
+#endif
+    default:
+        return wfTexel(triangleTexels, texel);
+    }
 #else
     return wfTexel(triangleTexels, index * WF_TRIANGLE_TEXELS + part);
 #endif
@@ -89,17 +142,38 @@ uvec4 bvhTexel(uint index, uint part) {
 #if WF_BVH_PAGES > 1
     const uint page = index >> WF_BVH_PAGE_SHIFT;
     const uint texel = (index & ((1u << WF_BVH_PAGE_SHIFT) - 1u)) * WF_BVH_PAIR_TEXELS + part;
-    if (page == 1u)
+    switch (page) {
+#if WF_BVH_PAGES > 1
+    case 1u:
         return wfTexel(bvhPage1, texel);
+#endif
 #if WF_BVH_PAGES > 2
-    if (page == 2u)
+    case 2u:
         return wfTexel(bvhPage2, texel);
 #endif
 #if WF_BVH_PAGES > 3
-    if (page == 3u)
+    case 3u:
         return wfTexel(bvhPage3, texel);
 #endif
-    return wfTexel(bvhNodeTexels, texel);
+#if WF_BVH_PAGES > 4
+    case 4u:
+        return wfTexel(bvhPage4, texel);
+#endif
+#if WF_BVH_PAGES > 5
+    case 5u:
+        return wfTexel(bvhPage5, texel);
+#endif
+#if WF_BVH_PAGES > 6
+    case 6u:
+        return wfTexel(bvhPage6, texel);
+#endif
+#if WF_BVH_PAGES > 7
+    case 7u:
+        return wfTexel(bvhPage7, texel);
+#endif
+    default:
+        return wfTexel(bvhNodeTexels, texel);
+    }
 #else
     return wfTexel(bvhNodeTexels, index * WF_BVH_PAIR_TEXELS + part);
 #endif

@@ -104,7 +104,7 @@ struct Emitter {
 #define WF_BVH_PAIR_TEXELS 4u
 // Pages (buffers) the triangle and BVH tables may span, of 2^shift entries each: set per scene
 // by the host (ShaderVariant), defaults for code compiled without them.
-#define WF_MAX_TABLE_PAGES 4u
+#define WF_MAX_TABLE_PAGES 8u
 #ifndef WF_TRIANGLE_PAGES
 #define WF_TRIANGLE_PAGES 1
 #define WF_TRIANGLE_PAGE_SHIFT 31

@@ -1,5 +1,5 @@
 // The triangle and BVH tables spread over several buffers (pages) where one would pass the
-// device's limit. A small scene made to spread over 2-4 pages of each (RenderSettings::
+// device's limit. A small scene made to spread over 2-8 pages of each (RenderSettings::
 // tablePageBytes) renders the image it renders from single buffers, bit for bit, in the
 // wavefront and in the megakernel; a scene past the most pages is refused naming the limit.
 #include <gtest/gtest.h>
@@ -20,8 +20,8 @@ TEST(TablePages, PagingRule) {
     EXPECT_EQ(pages.entriesPerPage(), 256u); // the largest power of two that fits
     EXPECT_EQ(pages.count, 4u);
     try {
-        tablePaging(1000, 48, 48 * 200, "triangles");
-        FAIL() << "five pages accepted";
+        tablePaging(1000, 48, 48 * 100, "triangles");
+        FAIL() << "sixteen pages accepted";
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("triangles"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("device's limit"), std::string::npos) << e.what();
@@ -42,7 +42,7 @@ TEST(TablePages, PagedTablesRenderTheSameImage) {
         scene.triangles.push_back(Triangle{c, 0, c + e1, WF_NO_EMITTER, c + e2, 0});
     }
     const PreparedScene prepared = prepareScene(scene);
-    // A page size at which both tables take 2 to 4 pages.
+    // A page size at which both tables take 2 to 8 pages.
     auto pagesAt = [&](uint64_t bytes) -> std::pair<uint32_t, uint32_t> {
         try {
             return {tablePaging(prepared.triangles.size(), sizeof(Triangle), bytes, "triangles")
