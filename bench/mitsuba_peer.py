@@ -1,14 +1,19 @@
 #!/usr/bin/env python3
-"""A peer on the same machine: renders the project's Cornell box with Mitsuba 3 (scalar_rgb,
-path tracer) and with Wavefront at the same resolution, max depth and samples per pixel, and
-prints paths/s and relMSE x time of both, plus the wavefront/megakernel ratio from a
+"""A peer on the same machine: renders the project's Cornell box with Mitsuba 3 (the --variant
+given, path tracer) and with Wavefront at the same resolution, max depth and samples per pixel,
+and prints paths/s and relMSE x time of both, plus the wavefront/megakernel ratio from a
 `wavefront bench --compare-megakernel` in the same run. A manual benchmark, not a test: it
 needs `pip install mitsuba` (into a virtual environment of your own, not the project's CI).
 
-    python3 -m venv /tmp/mi && /tmp/mi/bin/pip install mitsuba
-    /tmp/mi/bin/python bench/mitsuba_peer.py [--wavefront build/wavefront] [--width 256]
-        [--spp 64] [--max-depth 8] [--reference-spp 512] [--repeats 3] [--sampler NAME]
-        [--json bench/results/peer.json]
+    python3 -m venv /tmp/mi && /tmp/mi/bin/pip install mitsuba==3.9.1 numpy
+    /tmp/mi/bin/python bench/mitsuba_peer.py [--variant scalar_rgb|llvm_ad_rgb|cuda_ad_rgb]
+        [--wavefront build/wavefront] [--width 256] [--spp 64] [--max-depth 8]
+        [--reference-spp 512] [--repeats 3] [--sampler NAME] [--json bench/results/peer.json]
+
+`llvm_ad_rgb` (Dr.Jit's LLVM JIT, vectorised: what a CPU user would pick) needs an LLVM that
+Dr.Jit can drive: on Debian 12 `apt install libllvm19`; the script points DRJIT_LIBLLVM_PATH at
+its libLLVM.so.19.1 when the variable is unset (Debian's LLVM 15 crashes Dr.Jit on AVX-512
+machines). The JIT variants compile their kernels in a first, untimed render.
 
 The Mitsuba scene is built from scenes/make_cornell_box.py, the generator of
 scenes/cornell_box.gltf: the same quads, node transforms, Lambert albedos, the light's
@@ -98,6 +103,16 @@ def mitsuba_scene(mi, folder, width, height, spp, max_depth, rr_depth):
     return scene
 
 
+def find_libllvm19():
+    """The libLLVM.so.19.1 of Debian's libllvm19, or None."""
+    try:
+        files = subprocess.run(["dpkg", "-L", "libllvm19"], capture_output=True, text=True,
+                               check=True).stdout.split()
+    except (OSError, subprocess.CalledProcessError):
+        return None
+    return next((f for f in files if f.endswith("libLLVM.so.19.1")), None)
+
+
 def render_mitsuba(mi, folder, width, height, spp, max_depth, rr_depth, seed=0):
     scene = mi.load_dict(mitsuba_scene(mi, folder, width, height, spp, max_depth, rr_depth))
     start = time.perf_counter()
@@ -152,15 +167,26 @@ def main():
     parser.add_argument("--repeats", type=int, default=3,
                         help="timed renders of each, alternating (median time, mean relMSE)")
     parser.add_argument("--json", help="write the numbers here")
+    parser.add_argument("--variant", default="scalar_rgb",
+                        choices=["scalar_rgb", "llvm_ad_rgb", "cuda_ad_rgb"],
+                        help="Mitsuba's variant (default scalar_rgb; llvm_ad_rgb is the fast one "
+                             "on a CPU, cuda_ad_rgb on an NVIDIA GPU)")
     args = parser.parse_args()
 
+    if args.variant == "llvm_ad_rgb" and "DRJIT_LIBLLVM_PATH" not in os.environ:
+        llvm = find_libllvm19()
+        if llvm:
+            os.environ["DRJIT_LIBLLVM_PATH"] = llvm
     import mitsuba as mi
-    mi.set_variant("scalar_rgb")
+    mi.set_variant(args.variant)
+    mitsuba_name = "Mitsuba 3 " + args.variant
     w, h, spp, depth = args.width, args.height, args.spp, args.max_depth
     with tempfile.TemporaryDirectory() as folder:
         # The references' seed is none of the timed renders' (0 .. repeats - 1): a reference
         # that shared a timed render's first samples would understate that render's error.
         ref_seed = 1000
+        # A first render compiles the JIT variants' kernels; a new seed does not recompile.
+        render_mitsuba(mi, folder, w, h, 4, depth, args.rr_depth + 1, ref_seed + 1)
         mi_ref, mi_ref_s = render_mitsuba(mi, folder, w, h, args.reference_spp, depth,
                                           args.rr_depth + 1, ref_seed)
         wf_ref, wf_ref_s = render_wavefront(mi, args.wavefront, folder, w, h, args.reference_spp,
@@ -180,7 +206,7 @@ def main():
     paths = w * h * spp
     rows = {}
     matched_name = "Wavefront, Mitsuba's estimator"
-    for name, runs, ref in (("Mitsuba 3 scalar_rgb", mi_runs, mi_ref),
+    for name, runs, ref in ((mitsuba_name, mi_runs, mi_ref),
                             ("Wavefront", wf_runs, wf_ref), (matched_name, matched_runs, wf_ref)):
         seconds = float(np.median([run[1] for run in runs]))
         err = float(np.mean([rel_mse(run[0], ref) for run in runs]))
@@ -188,10 +214,10 @@ def main():
                       "relMSETimesSeconds": err * seconds,
                       "imageMean": float(np.mean([run[0].mean() for run in runs])),
                       "runSeconds": [run[1] for run in runs]}
-    ratio = rows["Wavefront"]["pathsPerSecond"] / rows["Mitsuba 3 scalar_rgb"]["pathsPerSecond"]
-    efficiency = (rows["Mitsuba 3 scalar_rgb"]["relMSETimesSeconds"] /
+    ratio = rows["Wavefront"]["pathsPerSecond"] / rows[mitsuba_name]["pathsPerSecond"]
+    efficiency = (rows[mitsuba_name]["relMSETimesSeconds"] /
                   rows["Wavefront"]["relMSETimesSeconds"])
-    matched = rows[matched_name]["pathsPerSecond"] / rows["Mitsuba 3 scalar_rgb"]["pathsPerSecond"]
+    matched = rows[matched_name]["pathsPerSecond"] / rows[mitsuba_name]["pathsPerSecond"]
     print("Cornell box %dx%d, %d spp, max depth %d; references %d spp; %d alternating timed "
           "renders each (median seconds, mean relMSE)" % (w, h, spp, depth, args.reference_spp,
                                                         args.repeats))
@@ -210,7 +236,8 @@ def main():
     print("wavefront / megakernel (bench, same run): %.3f" % bench["wavefrontOverMegakernel"])
     if args.json:
         with open(args.json, "w") as f:
-            json.dump({"width": w, "height": h, "spp": spp, "maxDepth": depth,
+            json.dump({"mitsubaVariant": args.variant,
+                       "width": w, "height": h, "spp": spp, "maxDepth": depth,
                        "referenceSpp": args.reference_spp, "repeats": args.repeats,
                        "wavefrontSampler": args.sampler or "default",
                        "renderers": rows,
