@@ -32,7 +32,6 @@ const CommandSpec& viewSpec() {
                                    "finite-set sampler: 256)"},
             },
             depthOptions(kDefaultMaxDepth),
-            lensOptions(),
             samplingOptions(),
             {
                 envOption(),
