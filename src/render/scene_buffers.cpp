@@ -15,9 +15,13 @@ PreparedScene prepareScene(Scene scene) {
     prepared.environment = std::move(scene.environment);
     prepared.surface = std::move(scene.surface);
     tagTriangles(prepared.triangles); // the per-triangle arrays follow the BVH's order
-    prepared.bvhStats = buildTunedBvh(prepared.triangles, prepared.nodes, prepared.materials,
-                                      prepared.camera);
-    prepared.bvhPairs = pairBvhNodes(prepared.nodes);
+    {
+        // The builder's tree is needed only until it is paired (what traversal reads).
+        std::vector<BvhNode> nodes;
+        prepared.bvhStats =
+            buildTunedBvh(prepared.triangles, nodes, prepared.materials, prepared.camera);
+        prepared.bvhPairs = pairBvhNodes(nodes);
+    }
     prepared.bvhStats.stackNeed = bvhStackNeed(prepared.bvhPairs);
     followTriangleOrder(prepared.triangles, prepared.surface);
     prepared.bounds = sceneBounds(prepared.triangles, prepared.punctualLights);

@@ -20,7 +20,6 @@ class Context;
 // The loaded scene after the BVH build (which reorders triangles) and the light table.
 struct PreparedScene {
     std::vector<Triangle> triangles;
-    std::vector<BvhNode> nodes; // the built tree, for statistics
     std::vector<BvhPair> bvhPairs; // what traversal reads
     std::vector<Material> materials;
     LightTable lights;
