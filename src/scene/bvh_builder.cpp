@@ -12,6 +12,8 @@
 #include <limits>
 #include <string>
 #include <thread>
+
+#include <sys/mman.h>
 #include <atomic>
 #include <bit>
 
@@ -22,6 +24,37 @@ namespace wf {
 namespace {
 
 static_assert(BVH_MAX_DEPTH + 1 <= WF_BVH_STACK_SIZE, "traversal stack too small for the tree");
+
+// A large scratch array, uninitialised, in transparent huge pages where the kernel gives them
+// on request (THP "madvise" mode): a first touch of each 4 KiB page is slow in a virtual
+// machine, and the builder's arrays of 10 M triangles spent a second in page faults.
+template <typename T> class ScratchArray {
+public:
+    static constexpr std::size_t kHugePage = std::size_t(2) << 20;
+
+    explicit ScratchArray(std::size_t count)
+        : bytes_((count * sizeof(T) + 2 * kHugePage - 1) / kHugePage * kHugePage) {
+        mapping_ = mmap(nullptr, bytes_, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS,
+                        -1, 0);
+        if (mapping_ == MAP_FAILED)
+            throw std::bad_alloc();
+        // Huge pages need 2 MiB-aligned ranges: start at the first boundary inside.
+        const auto address = reinterpret_cast<std::uintptr_t>(mapping_);
+        data_ = reinterpret_cast<T*>((address + kHugePage - 1) / kHugePage * kHugePage);
+        madvise(static_cast<void*>(data_), bytes_ - kHugePage, MADV_HUGEPAGE); // a hint
+    }
+    ~ScratchArray() { munmap(mapping_, bytes_); }
+    ScratchArray(const ScratchArray&) = delete;
+    ScratchArray& operator=(const ScratchArray&) = delete;
+
+    T* data() { return data_; }
+    T& operator[](std::size_t i) { return data_[i]; }
+
+private:
+    std::size_t bytes_;
+    void* mapping_ = nullptr;
+    T* data_ = nullptr;
+};
 
 using glm::vec3;
 
@@ -162,7 +195,7 @@ struct Bins {
 // children's boxes, and the partition, which also gives their centroid bounds.
 class Builder {
 public:
-    Builder(std::vector<PrimRef>& refs, const BvhBuildOptions& opts, std::uint32_t threads)
+    Builder(PrimRef* refs, const BvhBuildOptions& opts, std::uint32_t threads)
         : refs_(refs), opts_(opts), spareThreads_(int(threads) - 1) {}
 
     void build(const Range& range, std::uint32_t depth, std::vector<BvhNode>& out,
@@ -177,21 +210,23 @@ public:
         }
         std::uint32_t rightIndex;
         if (range.size() >= kSpawnMin && takeThread()) {
-            std::vector<BvhNode> leftNodes, rightNodes;
-            SubtreeStats leftStats, rightStats;
-            // The worker hands its thread back as soon as it is done, so that a thread still
-            // busy with a larger subtree can give a part of it away.
+            // The worker builds the right subtree into an array of its own, appended after the
+            // left one, which this thread builds in place: only the right half is copied. The
+            // worker hands its thread back as soon as it is done, so that a thread still busy
+            // with a larger subtree can give a part of it away.
+            std::vector<BvhNode> rightNodes;
+            rightNodes.reserve(2 * std::size_t(right.size()) / opts_.maxLeafSize + 1);
+            SubtreeStats rightStats;
             std::thread worker([&] {
-                build(left, depth + 1, leftNodes, leftStats);
+                build(right, depth + 1, rightNodes, rightStats);
                 spareThreads_.fetch_add(1);
             });
-            build(right, depth + 1, rightNodes, rightStats);
+            build(left, depth + 1, out, stats);
             worker.join();
-            append(out, leftNodes);
             rightIndex = std::uint32_t(out.size());
             append(out, rightNodes);
-            stats.leafCount += leftStats.leafCount + rightStats.leafCount;
-            stats.maxDepth = std::max({stats.maxDepth, leftStats.maxDepth, rightStats.maxDepth});
+            stats.leafCount += rightStats.leafCount;
+            stats.maxDepth = std::max(stats.maxDepth, rightStats.maxDepth);
         } else {
             build(left, depth + 1, out, stats);
             rightIndex = std::uint32_t(out.size());
@@ -231,6 +266,7 @@ private:
     // Appends a subtree built with indices from 0, moving its interior references along.
     static void append(std::vector<BvhNode>& out, const std::vector<BvhNode>& subtree) {
         const auto base = std::uint32_t(out.size());
+        out.reserve(out.size() + subtree.size());
         for (BvhNode node : subtree) {
             if (node.count == 0)
                 node.rightOrFirst += base;
@@ -439,14 +475,14 @@ private:
 
     std::uint32_t medianSplit(std::uint32_t begin, std::uint32_t end, int axis) {
         std::uint32_t mid = begin + (end - begin) / 2;
-        std::nth_element(refs_.begin() + begin, refs_.begin() + mid, refs_.begin() + end,
+        std::nth_element(refs_ + begin, refs_ + mid, refs_ + end,
                          [axis](const PrimRef& x, const PrimRef& y) {
                              return x.centroid()[axis] < y.centroid()[axis];
                          });
         return mid;
     }
 
-    std::vector<PrimRef>& refs_;
+    PrimRef* refs_;
     const BvhBuildOptions& opts_;
     std::atomic<int> spareThreads_;
 };
@@ -498,7 +534,7 @@ BvhBuildStats buildBvh(std::vector<Triangle>& triangles, std::vector<BvhNode>& n
     }
     const std::uint32_t threads =
         opts.threads > 0 ? opts.threads : std::max(1u, std::thread::hardware_concurrency());
-    std::vector<PrimRef> refs(n);
+    ScratchArray<PrimRef> refs(n);
     parallelChunks(n, threads, [&](std::uint32_t, std::uint32_t begin, std::uint32_t end) {
         for (std::uint32_t i = begin; i < end; ++i) {
             const Triangle& t = triangles[i];
@@ -506,21 +542,26 @@ BvhBuildStats buildBvh(std::vector<Triangle>& triangles, std::vector<BvhNode>& n
                               glm::max(t.p0, glm::max(t.p1, t.p2)));
         }
     });
-    nodes.reserve(std::size_t(n) * 2 / opts.maxLeafSize + 1);
+    // Address space only (pages are touched as nodes are written); a reallocation would copy.
+    nodes.reserve(std::size_t(n) * 2);
     stats.threads = threads;
-    Builder builder(refs, opts, threads);
+    Builder builder(refs.data(), opts, threads);
     SubtreeStats subtree;
     builder.build(builder.rootRange(n, threads), 0, nodes, subtree);
     stats.leafCount = subtree.leafCount;
     stats.maxDepth = subtree.maxDepth;
     assert(stats.maxDepth <= BVH_MAX_DEPTH);
 
-    std::vector<Triangle> ordered(n);
+    // Into leaf order: the triangles go to scratch and are gathered back into their own
+    // array, whose pages are in memory already.
+    ScratchArray<Triangle> original(n);
+    parallelChunks(n, threads, [&](std::uint32_t, std::uint32_t begin, std::uint32_t end) {
+        std::copy(triangles.begin() + begin, triangles.begin() + end, original.data() + begin);
+    });
     parallelChunks(n, threads, [&](std::uint32_t, std::uint32_t begin, std::uint32_t end) {
         for (std::uint32_t i = begin; i < end; ++i)
-            ordered[i] = triangles[refs[i].index()];
+            triangles[i] = original[refs[i].index()];
     });
-    triangles.swap(ordered);
 
     stats.nodeCount = std::uint32_t(nodes.size());
     stats.sahCost = sahCost(nodes, opts);
