@@ -1,0 +1,114 @@
+// pairBvhNodes and bvhStackNeed (bvh_builder.h): the built tree in the layout traversal reads.
+#include <cassert>
+#include <string>
+
+#include "errors.h"
+#include "scene/bvh_builder.h"
+#include "shaders/shared/bvh_traverse.h"
+
+namespace wf {
+
+using glm::vec3;
+
+namespace {
+
+// Packs child references (BvhPair in scene_types.h); leaves over WF_BVH_MAX_LEAF_COUNT become
+// extra pair entries whose two children share the leaf's box and halve its range.
+class BvhPairer {
+public:
+    explicit BvhPairer(const std::vector<BvhNode>& nodes)
+        : nodes_(nodes), pairOf_(nodes.size(), WF_BVH_NO_CHILD) {}
+
+    std::vector<BvhPair> pair() {
+        const BvhNode& root = nodes_[0];
+        if (root.count > 0 || nodes_.size() == 1) { // a leaf root, or the empty scene
+            pairs_.emplace_back(); // entry 0, before any entries an oversized leaf adds
+            const std::uint32_t only =
+                root.count > 0 ? leafRef(root.lo, root.hi, root.rightOrFirst, root.count)
+                               : WF_BVH_NO_CHILD;
+            pairs_[0] = BvhPair{root.lo, only, root.hi, 0, vec3(0.0f), WF_BVH_NO_CHILD,
+                                vec3(0.0f), 0};
+            return std::move(pairs_);
+        }
+        // Interior nodes become the first entries, in depth-first order: the root's is 0.
+        for (std::size_t i = 0; i < nodes_.size(); ++i)
+            if (nodes_[i].count == 0)
+                pairOf_[i] = std::uint32_t(pairs_.size()), pairs_.emplace_back();
+        for (std::size_t i = 0; i < nodes_.size(); ++i) {
+            if (nodes_[i].count > 0)
+                continue;
+            const std::size_t right = nodes_[i].rightOrFirst;
+            const BvhPair pair{nodes_[i + 1].lo, childRef(i + 1), nodes_[i + 1].hi, 0,
+                               nodes_[right].lo, childRef(right), nodes_[right].hi, 0};
+            pairs_[pairOf_[i]] = pair;
+        }
+        return std::move(pairs_);
+    }
+
+private:
+    std::uint32_t childRef(std::size_t node) {
+        const BvhNode& n = nodes_[node];
+        return n.count > 0 ? leafRef(n.lo, n.hi, n.rightOrFirst, n.count)
+                           : pairRef(pairOf_[node]);
+    }
+
+    static std::uint32_t pairRef(std::size_t entry) {
+        if (entry >= kMaxIndex)
+            throw InputError("the BVH needs " + std::to_string(entry + 1) +
+                             " nodes, over the traversal's limit of " + std::to_string(kMaxIndex));
+        return std::uint32_t(entry) << WF_BVH_COUNT_BITS;
+    }
+
+    std::uint32_t leafRef(vec3 lo, vec3 hi, std::uint32_t first, std::uint32_t count) {
+        if (std::uint64_t(first) + count >= kMaxIndex)
+            throw InputError("the scene has " + std::to_string(std::uint64_t(first) + count) +
+                             " triangles, over the traversal's limit of " +
+                             std::to_string(kMaxIndex - 1));
+        if (count <= WF_BVH_MAX_LEAF_COUNT)
+            return first << WF_BVH_COUNT_BITS | count;
+        const std::size_t entry = pairs_.size();
+        pairs_.emplace_back();
+        const std::uint32_t half = count / 2;
+        const std::uint32_t low = leafRef(lo, hi, first, half);
+        const std::uint32_t high = leafRef(lo, hi, first + half, count - half);
+        pairs_[entry] = BvhPair{lo, low, hi, 0, lo, high, hi, 0};
+        return pairRef(entry);
+    }
+
+    // Indices stay below this, so no reference can equal WF_BVH_NO_CHILD.
+    static constexpr std::uint64_t kMaxIndex = (1ull << (32 - WF_BVH_COUNT_BITS)) - 1;
+
+    const std::vector<BvhNode>& nodes_;
+    std::vector<std::uint32_t> pairOf_;
+    std::vector<BvhPair> pairs_;
+};
+
+} // namespace
+
+std::vector<BvhPair> pairBvhNodes(const std::vector<BvhNode>& nodes) {
+    assert(!nodes.empty() && "buildBvh always emits a root");
+    return BvhPairer(nodes).pair();
+}
+
+std::uint32_t bvhStackNeed(const std::vector<BvhPair>& pairs) {
+    // Children come after their parents (BvhPairer), so one backward sweep sees them first.
+    std::vector<std::uint32_t> need(pairs.size(), 0);
+    auto interior = [](std::uint32_t child) {
+        return child != WF_BVH_NO_CHILD && (child & WF_BVH_MAX_LEAF_COUNT) == 0;
+    };
+    for (std::size_t i = pairs.size(); i-- > 0;) {
+        const std::uint32_t children[2] = {pairs[i].child0, pairs[i].child1};
+        std::uint32_t deepest = 0;
+        for (const std::uint32_t child : children) {
+            if (!interior(child))
+                continue;
+            const std::size_t entry = child >> WF_BVH_COUNT_BITS;
+            assert(entry > i && entry < pairs.size() && "pair entries follow their parents");
+            deepest = std::max(deepest, need[entry]);
+        }
+        need[i] = deepest + (interior(children[0]) && interior(children[1]) ? 1 : 0);
+    }
+    return pairs.empty() ? 0 : need[0];
+}
+
+} // namespace wf
