@@ -39,7 +39,8 @@ const CommandSpec& renderSpec() {
         joinOptions({
             {
                 {"--output", "-o", "OUT.exr", "output OpenEXR file (required; must end in .exr)"},
-                {"--spp", "", "N", "samples per pixel (default 64)"},
+                {"--spp", "", "N", "samples per pixel (default 64); with --target-error, the "
+                                  "most any pixel gets (default 1024)"},
                 {"--time-limit", "", "SECONDS", "stop before the sample pass that would end past "
                                                 "SECONDS of rendering (at least one pass; the EXR's "
                                                 "spp says how many were done; not with the "
