@@ -1,7 +1,6 @@
 #include "app/render_options.h"
 
 #include <algorithm>
-#include <cfloat>
 #include <cmath>
 #include <cstdio>
 
@@ -9,6 +8,7 @@
 #include "render/samplers.h"
 #include "scene/default_camera.h"
 #include "scene/environment_map.h"
+#include "scene/light_table.h"
 #include "scene/gltf_loader.h"
 
 namespace wf {
@@ -116,7 +116,7 @@ ContextOptions contextOptionsFrom(const ParsedArgs& parsed) {
 namespace {
 
 // --aperture and --focus-distance over the camera's own; an unset focus distance with a lens
-// focuses on the scene's centre (its bounds' centre, along the view).
+// focuses on the scene's centre (its bounding sphere's, along the view).
 void applyLensFlags(const ParsedArgs& parsed, Scene& scene) {
     Camera& camera = scene.camera;
     camera.aperture = parsed.floatValue("--aperture", camera.aperture, 0.0f, 1e30f);
@@ -124,14 +124,11 @@ void applyLensFlags(const ParsedArgs& parsed, Scene& scene) {
         parsed.floatValue("--focus-distance", camera.focusDistance, 1e-30f, 1e30f);
     if (camera.aperture <= 0.0f || camera.focusDistance > 0.0f)
         return;
-    glm::vec3 lo(FLT_MAX), hi(-FLT_MAX);
-    for (const Triangle& t : scene.triangles)
-        for (const glm::vec3& p : {t.p0, t.p1, t.p2}) {
-            lo = glm::min(lo, p);
-            hi = glm::max(hi, p);
-        }
+    const bool empty = scene.triangles.empty() && scene.lights.empty();
     const float along =
-        scene.triangles.empty() ? 0.0f : glm::dot(0.5f * (lo + hi) - camera.position, camera.forward);
+        empty ? 0.0f
+              : glm::dot(sceneBounds(scene.triangles, scene.lights).center - camera.position,
+                         camera.forward);
     camera.focusDistance = along > 0.0f ? along : 1.0f;
 }
 

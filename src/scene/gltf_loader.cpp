@@ -259,11 +259,7 @@ void Converter::checkPlacedTriangles() const {
                                       : position != primitive.attributes.end()
                                           ? countOf(position->second)
                                           : 0;
-                if (primitive.mode == TINYGLTF_MODE_TRIANGLES || primitive.mode == -1)
-                    total += n / 3;
-                else if (primitive.mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
-                         primitive.mode == TINYGLTF_MODE_TRIANGLE_FAN)
-                    total += n >= 3 ? n - 2 : 0;
+                total += gltf::trianglesOfPrimitive(primitive.mode, n);
             }
         }
         if (total > gltf::maxSceneTriangles())

@@ -33,6 +33,14 @@ std::size_t maxSceneTriangles() {
     return std::min(kTraversalTriangleLimit, memoryTriangleLimit());
 }
 
+std::size_t trianglesOfPrimitive(int mode, std::size_t corners) {
+    if (mode == TINYGLTF_MODE_TRIANGLES)
+        return corners / 3;
+    if (mode == TINYGLTF_MODE_TRIANGLE_STRIP || mode == TINYGLTF_MODE_TRIANGLE_FAN)
+        return corners >= 3 ? corners - 2 : 0;
+    return 0;
+}
+
 std::string sceneTriangleLimitReason() {
     if (memoryTriangleLimit() >= kTraversalTriangleLimit)
         return "the BVH's triangle index limit";
@@ -91,7 +99,7 @@ std::vector<uint32_t> PrimitiveBuilder::corners(int mode, size_t vertexCount, in
     if (mode == TINYGLTF_MODE_TRIANGLES && n % 3 != 0) {
         fail(file_, where + ": " + std::to_string(n) + " vertices do not make whole triangles");
     }
-    const size_t triangles = mode == TINYGLTF_MODE_TRIANGLES ? n / 3 : (n >= 3 ? n - 2 : 0);
+    const size_t triangles = trianglesOfPrimitive(mode, n);
     if (triangles > maxSceneTriangles() - triangles_.size()) {
         fail(file_, "more than " + std::to_string(maxSceneTriangles()) + " triangles, " +
                         sceneTriangleLimitReason());

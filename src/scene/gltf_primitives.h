@@ -34,6 +34,10 @@ std::size_t maxSceneTriangles();
 // (256 bytes a triangle)" or "the BVH's triangle index limit".
 std::string sceneTriangleLimitReason();
 
+// Triangles a primitive of `mode` makes from `corners` vertices (list: n / 3, strip and fan:
+// n - 2); 0 for points, lines and unknown modes.
+std::size_t trianglesOfPrimitive(int mode, std::size_t corners);
+
 // Octahedral encoding of a unit vector in two 16-bit snorms (decoded by octDecode).
 uint32_t octEncode(glm::vec3 n);
 
