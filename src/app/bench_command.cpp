@@ -132,6 +132,8 @@ int runBenchCommand(const std::vector<std::string>& args) {
                      spp, settings.maxDepth, settings.seed, warmup, frames,
                      settings.submitBudgetSeconds, prepared.triangles.size(),
                      prepared.materials.size(), prepared.bvhStats};
+    setup.instances = prepared.instances.size();
+    setup.instancedTriangles = prepared.instancedTriangles;
     const ShaderVariant& variant = kernels[0].renderer->variant();
     setup.lightSelection = variant.nextEventEstimation
                                ? lightSelectionName(variant.lightSelection) : "none";
@@ -166,6 +168,10 @@ int runBenchCommand(const std::vector<std::string>& args) {
                 setup.bvh.leafCount, setup.bvh.maxDepth, setup.bvh.stackNeed,
                 setup.bvh.traversalCost, setup.bvh.sahCost,
                 setup.bvh.buildSeconds * 1e3);
+    if (setup.instances > 0)
+        std::printf("instances: %llu (%llu triangles as placed)\n",
+                    static_cast<unsigned long long>(setup.instances),
+                    static_cast<unsigned long long>(setup.instancedTriangles));
     std::printf("light selection: %s\n\n", setup.lightSelectionText.c_str());
     // --megakernel shows the megakernel's table, --compare-megakernel both.
     if (!withMegakernel || compare)

@@ -239,6 +239,12 @@ void printVerbose(const PreparedScene& scene, const WavefrontRenderer& renderer,
                  scene.triangles.size(), scene.materials.size(), scene.lights.emitters.size(),
                  bvh.nodeCount, bvh.maxDepth, bvh.traversalCost, bvh.sahCost, bvh.buildSeconds,
                  scene.triangles.size() / std::max(bvh.buildSeconds, 1e-9) / 1e6, bvh.threads);
+    if (!scene.instances.empty())
+        std::fprintf(stderr,
+                     "wavefront: two-level BVH: %zu instances of %u meshes and the world "
+                     "geometry, %llu triangles as placed\n",
+                     scene.instances.size(), scene.meshCount,
+                     static_cast<unsigned long long>(scene.instancedTriangles));
     std::fprintf(stderr, "wavefront: light selection: %s\n",
                  describeLightSelection(scene, renderer.variant()).c_str());
     std::fprintf(stderr, "wavefront: shader variant: %s; up to %u paths per wave\n",
@@ -257,6 +263,8 @@ std::vector<std::pair<std::string, std::string>> sceneJsonFields(const PreparedS
     const BvhBuildStats& bvh = scene.bvhStats;
     const double perSecond = scene.triangles.size() / std::max(bvh.buildSeconds, 1e-9);
     return {{"triangles", std::to_string(scene.triangles.size())},
+            {"instances", std::to_string(scene.instances.size())},
+            {"instancedTriangles", std::to_string(scene.instancedTriangles)},
             {"bvh", "{\"nodes\": " + std::to_string(bvh.nodeCount) +
                         ", \"depth\": " + std::to_string(bvh.maxDepth) +
                         ", \"sahCost\": " + jsonNumber(bvh.sahCost) +
