@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "app/bench_report.h"
+#include "app/host_memory.h"
 #include "app/cli.h"
 #include "app/commands.h"
 #include "app/render_options.h"
@@ -155,6 +156,7 @@ int runBenchCommand(const std::vector<std::string>& args) {
                          f < warmup ? " (warm-up)" : "");
     }
 
+    setup.peakHostMemoryBytes = peakHostMemoryBytes();
     std::printf("Wavefront bench: %s, %ux%u, %u spp per frame, max depth %u, seed %u; %u frames "
                 "after %u warm-up\n",
                 scenePath.c_str(), settings.width, settings.height, spp, settings.maxDepth,
