@@ -260,8 +260,8 @@ void PrimitiveBuilder::add(const tinygltf::Primitive& primitive, const std::stri
 
 void PrimitiveBuilder::place(uint32_t mesh, const glm::dmat4& world, const std::string& where) {
     const double det = glm::determinant(glm::dmat3(world));
-    // A zero scale flattens the mesh to nothing: as flattened, every triangle would be dropped
-    // as degenerate; an inverse would be infinite.
+    // A zero scale flattens the mesh to nothing, and a huge one overflows float: flattened,
+    // every triangle would be dropped as degenerate; and an inverse would not be finite.
     if (!(std::abs(det) >= double(std::numeric_limits<float>::min()) &&
           std::abs(det) <= double(std::numeric_limits<float>::max()))) {
         ++flatteningPlacements_;
@@ -330,7 +330,8 @@ void PrimitiveBuilder::groupByMesh(Scene& scene) {
 void PrimitiveBuilder::finish(Scene& scene) {
     if (flatteningPlacements_ > 0) {
         warn(file_, "skipped " + std::to_string(flatteningPlacements_) +
-                        " placements of instanced meshes whose transform has a zero scale");
+                        " placements of instanced meshes whose transform has a zero or "
+                        "overflowing scale (flattened, every triangle would be degenerate)");
     }
     if (skippedPrimitives_ > 0) {
         warn(file_, "skipped " + std::to_string(skippedPrimitives_) +
