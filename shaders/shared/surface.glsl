@@ -29,10 +29,23 @@ struct SurfaceHit {
 
 vec3 decodeUnit(uint packed) { return octDecode(unpackSnorm2x16(packed)); }
 
+// A shading lookup of reference `ref` at the hit: filtered by the ray cone's footprint where
+// the variant has ray cones (textures.glsl), else level 0.
+#if WF_HAS_TEXTURES
+vec4 surfaceTexture(uint ref, uint triangleIndex, float b1, float b2, float footprint) {
+#if WF_RAY_CONES
+    return sampleTriangleTextureCone(ref, triangleIndex, b1, b2, footprint);
+#else
+    return sampleTriangleTexture(ref, triangleIndex, b1, b2);
+#endif
+}
+#endif
+
 // The shading normal on the front (counter-clockwise) side: interpolated vertex normals, then
 // the normal map in the tangent frame. Falls back to the geometric normal wherever the data
 // would give a zero or non-finite vector.
-vec3 frontShadingNormal(uint triangleIndex, Material material, float b1, float b2, vec3 ng) {
+vec3 frontShadingNormal(uint triangleIndex, Material material, float b1, float b2, vec3 ng,
+                        float footprint) {
     vec3 n = ng;
 #if WF_HAS_NORMALS
     TriangleNormals corners = triangleNormalsAt(triangleIndex);
@@ -52,7 +65,7 @@ vec3 frontShadingNormal(uint triangleIndex, Material material, float b1, float b
         if (tLen > 1e-6) {
             t /= tLen;
             vec3 b = cross(n, t) * ((frame.signs & 1u) != 0u ? -1.0 : 1.0);
-            vec3 m = sampleTriangleTexture(material.normalTexture, triangleIndex, b1, b2).xyz;
+            vec3 m = surfaceTexture(material.normalTexture, triangleIndex, b1, b2, footprint).xyz;
             m = m * 2.0 - 1.0;
             m.xy *= material.normalScale;
             vec3 mapped = t * m.x + b * m.y + n * m.z;
@@ -66,6 +79,8 @@ vec3 frontShadingNormal(uint triangleIndex, Material material, float b1, float b
 
 // Emitted radiance of a triangle's front at barycentrics (b1, b2): emissiveFactor x strength x
 // emissiveTexture. Light sampling should use this too, so that NEE and BSDF hits agree.
+// Level 0 also with ray cones: light sampling has no cone at the point it picks, and both must
+// see one emission for MIS to weigh one integrand.
 vec3 surfaceEmission(uint triangleIndex, Material material, float b1, float b2) {
     vec3 emission = material.emission;
 #if WF_HAS_TEXTURES
@@ -75,7 +90,8 @@ vec3 surfaceEmission(uint triangleIndex, Material material, float b1, float b2) 
     return emission;
 }
 
-SurfaceHit loadSurface(uint triangleIndex, float b1, float b2, vec3 wo) {
+// coneWidth: the ray cone's width at the hit (ray_cones.glsl; unused without WF_RAY_CONES).
+SurfaceHit loadSurface(uint triangleIndex, float b1, float b2, vec3 wo, float coneWidth) {
     Triangle tri = triangleAt(triangleIndex);
     Material material = materialAt(tri.material);
     SurfaceHit s;
@@ -86,7 +102,12 @@ SurfaceHit loadSurface(uint triangleIndex, float b1, float b2, vec3 wo) {
     vec3 ng = normalize(cross12);
     s.frontFace = dot(ng, wo) > 0.0;
     s.ng = s.frontFace ? ng : -ng; // two-sided shading
-    vec3 ns = frontShadingNormal(triangleIndex, material, b1, b2, ng);
+#if WF_RAY_CONES
+    float footprint = coneFootprint(coneWidth, dot(ng, wo), length(cross12));
+#else
+    float footprint = 0.0;
+#endif
+    vec3 ns = frontShadingNormal(triangleIndex, material, b1, b2, ng, footprint);
     s.ns = s.frontFace ? ns : -ns;
     // A shading normal past the horizon of the geometric one would leak light: use ng there.
     if (!(dot(s.ns, s.ng) > 0.0))
@@ -102,15 +123,16 @@ SurfaceHit loadSurface(uint triangleIndex, float b1, float b2, vec3 wo) {
     s.specularColor = material.specularColor;
 #if WF_HAS_TEXTURES
     if (material.baseColorTexture != WF_NO_TEXTURE)
-        base *= sampleTriangleTexture(material.baseColorTexture, triangleIndex, b1, b2);
+        base *= surfaceTexture(material.baseColorTexture, triangleIndex, b1, b2, footprint);
     if (material.metallicRoughnessTexture != WF_NO_TEXTURE) {
-        vec4 mr = sampleTriangleTexture(material.metallicRoughnessTexture, triangleIndex, b1, b2);
+        vec4 mr = surfaceTexture(material.metallicRoughnessTexture, triangleIndex, b1, b2,
+                                 footprint);
         s.metallic *= mr.b;
         s.roughness *= mr.g;
     }
     if (material.transmissionTexture != WF_NO_TEXTURE)
-        s.transmission *= sampleTriangleTexture(material.transmissionTexture, triangleIndex, b1,
-                                                b2).r;
+        s.transmission *= surfaceTexture(material.transmissionTexture, triangleIndex, b1, b2,
+                                         footprint).r;
 #endif
     s.baseColor = base.rgb;
     s.alpha = base.a;
