@@ -105,14 +105,17 @@ vec4 sampleTriangleTexture(uint refIndex, uint triangle, float b1, float b2) {
 #if WF_RAY_CONES
 #include "ray_cones.h"
 
+// The level below `level`: max(1, width >> 1) x max(1, height >> 1), right after it.
+MipLevel nextLevel(MipLevel level) {
+    return MipLevel(level.offset + uint(level.width * level.height), max(1, level.width >> 1),
+                    max(1, level.height >> 1));
+}
+
 // Level k of the chain: max(1, width >> k) x max(1, height >> k), after the levels above it.
 MipLevel mipLevel(TextureRef ref, uint k) {
     MipLevel level = baseLevel(ref);
-    for (uint i = 0u; i < k; ++i) {
-        level.offset += uint(level.width * level.height);
-        level.width = max(1, level.width >> 1);
-        level.height = max(1, level.height >> 1);
-    }
+    for (uint i = 0u; i < k; ++i)
+        level = nextLevel(level);
     return level;
 }
 
@@ -135,8 +138,11 @@ vec4 sampleTriangleTextureCone(uint refIndex, uint triangle, float b1, float b2,
     vec2 uv = textureSpaceUv(ref, interpolateUv(uvs, b1, b2));
     float lod = textureLod(ref, uvs, footprint);
     uint k = uint(lod);
-    vec4 fine = sampleLevel(ref, mipLevel(ref, k), uv);
-    vec4 coarse = sampleLevel(ref, mipLevel(ref, min(k + 1u, ref.levels - 1u)), uv);
+    MipLevel level = mipLevel(ref, k);
+    vec4 fine = sampleLevel(ref, level, uv);
+    // At the last level lod - k is 0 (the clamp), so reading past the chain's end is avoided
+    // by staying on it.
+    vec4 coarse = sampleLevel(ref, k + 1u < ref.levels ? nextLevel(level) : level, uv);
     return mix(fine, coarse, lod - float(k));
 }
 #endif

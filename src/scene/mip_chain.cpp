@@ -29,15 +29,26 @@ std::vector<Span> spans(uint32_t m, uint32_t n) {
     return out;
 }
 
-std::vector<float> decode(const TextureImage& image, bool srgb) {
-    std::vector<float> out(image.rgba.size() * 4);
-    for (size_t i = 0; i < image.rgba.size(); ++i) {
-        for (int c = 0; c < 4; ++c) {
-            const float v = float(image.rgba[i] >> (8 * c) & 0xffu) / 255.0f;
-            out[4 * i + c] = srgb && c < 3 ? srgbToLinear(v) : v;
+// The box filter over any source: `read(texel, channel)` gives the value above.
+template <typename Read>
+void boxFilter(const Read& read, uint32_t aboveWidth, uint32_t aboveHeight,
+               std::vector<float>& out, uint32_t width, uint32_t height) {
+    const std::vector<Span> xs = spans(aboveWidth, width), ys = spans(aboveHeight, height);
+    out.assign(size_t(width) * height * 4, 0.0f);
+    for (uint32_t y = 0; y < height; ++y) {
+        for (uint32_t x = 0; x < width; ++x) {
+            float* o = &out[(size_t(y) * width + x) * 4];
+            for (size_t j = 0; j < ys[y].weight.size(); ++j) {
+                const size_t row = size_t(ys[y].first + j) * aboveWidth;
+                for (size_t i = 0; i < xs[x].weight.size(); ++i) {
+                    const float w = ys[y].weight[j] * xs[x].weight[i];
+                    const size_t texel = row + xs[x].first + i;
+                    for (int c = 0; c < 4; ++c)
+                        o[c] += w * read(texel, c);
+                }
+            }
         }
     }
-    return out;
 }
 
 TextureImage encode(const std::vector<float>& values, uint32_t width, uint32_t height, bool srgb) {
@@ -84,37 +95,35 @@ uint64_t mipChainTexels(uint32_t width, uint32_t height) {
 
 void boxFilterLevel(const std::vector<float>& above, uint32_t aboveWidth, uint32_t aboveHeight,
                     std::vector<float>& out, uint32_t width, uint32_t height) {
-    const std::vector<Span> xs = spans(aboveWidth, width), ys = spans(aboveHeight, height);
-    out.assign(size_t(width) * height * 4, 0.0f);
-    for (uint32_t y = 0; y < height; ++y) {
-        for (uint32_t x = 0; x < width; ++x) {
-            float* o = &out[(size_t(y) * width + x) * 4];
-            for (size_t j = 0; j < ys[y].weight.size(); ++j) {
-                const size_t row = size_t(ys[y].first + j) * aboveWidth;
-                for (size_t i = 0; i < xs[x].weight.size(); ++i) {
-                    const float w = ys[y].weight[j] * xs[x].weight[i];
-                    const float* a = &above[(row + xs[x].first + i) * 4];
-                    for (int c = 0; c < 4; ++c)
-                        o[c] += w * a[c];
-                }
-            }
-        }
-    }
+    boxFilter([&](size_t texel, int c) { return above[texel * 4 + c]; }, aboveWidth,
+              aboveHeight, out, width, height);
 }
 
 std::vector<TextureImage> buildMipChain(const TextureImage& base, bool srgb) {
     std::vector<TextureImage> levels;
-    std::vector<float> above = decode(base, srgb), next;
-    uint32_t w = base.width, h = base.height;
-    for (uint32_t level = 1; level < mipLevelCount(base.width, base.height); ++level) {
+    if (mipLevelCount(base.width, base.height) < 2)
+        return levels;
+    // Level 1 straight from the bytes (a float copy of a 64-Mpixel level 0 would be 1 GiB).
+    float table[256];
+    for (int i = 0; i < 256; ++i)
+        table[i] = srgb ? srgbToLinear(float(i) / 255.0f) : float(i) / 255.0f;
+    auto byte = [&](size_t texel, int c) { return base.rgba[texel] >> (8 * c) & 0xffu; };
+    std::vector<float> above, next;
+    uint32_t w = std::max(1u, base.width / 2), h = std::max(1u, base.height / 2);
+    boxFilter([&](size_t texel, int c) { return c < 3 ? table[byte(texel, c)]
+                                                      : float(byte(texel, c)) / 255.0f; },
+              base.width, base.height, above, w, h);
+    levels.push_back(encode(above, w, h, srgb));
+    for (uint32_t level = 2; level < mipLevelCount(base.width, base.height); ++level) {
         const uint32_t nw = std::max(1u, w / 2), nh = std::max(1u, h / 2);
         boxFilterLevel(above, w, h, next, nw, nh);
         levels.push_back(encode(next, nw, nh, srgb));
-        levels.back().name = base.name;
         above.swap(next);
         w = nw;
         h = nh;
     }
+    for (TextureImage& level : levels)
+        level.name = base.name;
     return levels;
 }
 
