@@ -7,11 +7,12 @@
 // whose projected tangents point exactly opposite), so one frame per group is its answer.
 #include "scene/tangent_generation.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <limits>
-#include <unordered_map>
 
 #include <glm/geometric.hpp>
 
@@ -44,34 +45,54 @@ glm::vec3 anyTangent(glm::vec3 n) {
     return glm::vec3(1.0f + s * n.x * n.x * a, s * n.x * n.y * a, -s * n.x);
 }
 
-// Corners with equal position, normal and UV bits share an id (the first such corner); -0 and
-// +0 count as equal, as in MikkTSpace's comparison.
+// The bits a corner is joined by: position, normal, UV, with -0 as +0 (MikkTSpace compares
+// floats, for which they are equal).
+std::array<uint32_t, 8> cornerBits(const TangentCorners& in, size_t c) {
+    const float values[8] = {in.positions[c].x, in.positions[c].y, in.positions[c].z,
+                             in.normals[c].x,   in.normals[c].y,   in.normals[c].z,
+                             in.uvs[c].x,       in.uvs[c].y};
+    std::array<uint32_t, 8> bits;
+    for (int k = 0; k < 8; ++k) {
+        const float v = values[k] + 0.0f;
+        std::memcpy(&bits[k], &v, 4);
+    }
+    return bits;
+}
+
+// Corners with equal bits share an id (the first such corner). Sorted by a 64-bit hash of the
+// bits, then compared within runs of equal hashes: 12 bytes a corner, where a hash map of the
+// bits took 3-4 times the memory on meshes of millions of triangles.
 std::vector<uint32_t> joinCorners(const TangentCorners& in) {
-    struct Key {
-        uint32_t bits[8];
-        bool operator==(const Key& o) const { return std::memcmp(bits, o.bits, sizeof bits) == 0; }
-    };
-    struct Hash {
-        size_t operator()(const Key& k) const {
-            uint64_t h = 1469598103934665603ull; // FNV-1a over the words
-            for (uint32_t b : k.bits)
-                h = (h ^ b) * 1099511628211ull;
-            return size_t(h);
+    const size_t n = in.positions.size();
+    std::vector<std::pair<uint64_t, uint32_t>> order(n);
+    for (size_t c = 0; c < n; ++c) {
+        uint64_t h = 1469598103934665603ull; // FNV-1a over the words, then a final mix
+        for (uint32_t word : cornerBits(in, c))
+            h = (h ^ word) * 1099511628211ull;
+        h ^= h >> 29;
+        order[c] = {h * 0xbf58476d1ce4e5b9ull, uint32_t(c)};
+    }
+    std::sort(order.begin(), order.end());
+    std::vector<uint32_t> id(n), distinct;
+    for (size_t start = 0; start < n;) {
+        size_t end = start + 1;
+        while (end < n && order[end].first == order[start].first)
+            ++end;
+        distinct.clear(); // the run's first corner of each distinct key (almost always one)
+        for (size_t i = start; i < end; ++i) {
+            const uint32_t c = order[i].second;
+            const std::array<uint32_t, 8> bits = cornerBits(in, c);
+            id[c] = c;
+            for (uint32_t first : distinct) {
+                if (cornerBits(in, first) == bits) {
+                    id[c] = first;
+                    break;
+                }
+            }
+            if (id[c] == c)
+                distinct.push_back(c);
         }
-    };
-    std::unordered_map<Key, uint32_t, Hash> first;
-    first.reserve(in.positions.size());
-    std::vector<uint32_t> id(in.positions.size());
-    for (size_t c = 0; c < in.positions.size(); ++c) {
-        const float values[8] = {in.positions[c].x, in.positions[c].y, in.positions[c].z,
-                                 in.normals[c].x,   in.normals[c].y,   in.normals[c].z,
-                                 in.uvs[c].x,       in.uvs[c].y};
-        Key key;
-        for (int k = 0; k < 8; ++k) {
-            const float v = values[k] + 0.0f; // -0 -> +0
-            std::memcpy(&key.bits[k], &v, 4);
-        }
-        id[c] = first.emplace(key, uint32_t(c)).first->second;
+        start = end;
     }
     return id;
 }
@@ -105,27 +126,41 @@ std::vector<Face> faceFrames(const TangentCorners& in, const std::vector<uint32_
             face.os = os * (sign / lengthS);
         face.groupWithAny = !(notZero(lengthS / std::abs(area)) && notZero(lengthT / std::abs(area)));
     }
-    // Pair each edge with one edge running the other way between the same joined corners.
-    std::unordered_map<uint64_t, std::vector<uint32_t>> edges; // (from, to) -> 3 f + k
+    // Pair each edge with one edge running the other way between the same joined corners:
+    // edges sorted by (from, to); each key's run keeps a cursor past its matched entries, so a
+    // hostile edge shared by a million faces costs linear time.
+    struct Edge {
+        uint64_t key;     // from << 32 | to
+        uint32_t corner;  // 3 f + k: edge (k, k + 1) of face f
+        bool operator<(const Edge& o) const { return key != o.key ? key < o.key : corner < o.corner; }
+    };
+    std::vector<Edge> edges;
+    edges.reserve(faces.size() * 3);
     auto key = [](uint32_t a, uint32_t b) { return uint64_t(a) << 32 | b; };
     for (size_t f = 0; f < faces.size(); ++f)
         if (!faces[f].degenerate)
             for (uint32_t k = 0; k < 3; ++k)
-                edges[key(id[3 * f + k], id[3 * f + (k + 1) % 3])].push_back(uint32_t(3 * f + k));
+                edges.push_back({key(id[3 * f + k], id[3 * f + (k + 1) % 3]), uint32_t(3 * f + k)});
+    std::sort(edges.begin(), edges.end());
+    std::vector<uint32_t> cursor(edges.size()); // per run start: first entry not yet matched
+    for (size_t i = 0; i < edges.size(); ++i)
+        cursor[i] = uint32_t(i);
     for (size_t f = 0; f < faces.size(); ++f) {
         for (uint32_t k = 0; k < 3 && !faces[f].degenerate; ++k) {
             if (faces[f].neighbour[k] != kNone)
                 continue;
-            auto found = edges.find(key(id[3 * f + (k + 1) % 3], id[3 * f + k]));
-            if (found == edges.end())
+            const uint64_t reverse = key(id[3 * f + (k + 1) % 3], id[3 * f + k]);
+            const auto run = std::lower_bound(edges.begin(), edges.end(), Edge{reverse, 0});
+            if (run == edges.end() || run->key != reverse)
                 continue;
-            for (uint32_t other : found->second) {
-                Face& g = faces[other / 3];
-                if (other / 3 != f && g.neighbour[other % 3] == kNone) {
-                    faces[f].neighbour[k] = other / 3;
-                    g.neighbour[other % 3] = uint32_t(f);
-                    break;
-                }
+            uint32_t& next = cursor[size_t(run - edges.begin())];
+            while (next < edges.size() && edges[next].key == reverse &&
+                   faces[edges[next].corner / 3].neighbour[edges[next].corner % 3] != kNone)
+                ++next;
+            if (next < edges.size() && edges[next].key == reverse && edges[next].corner / 3 != f) {
+                const uint32_t other = edges[next].corner;
+                faces[f].neighbour[k] = other / 3;
+                faces[other / 3].neighbour[other % 3] = uint32_t(f);
             }
         }
     }
@@ -192,19 +227,15 @@ std::vector<glm::vec4> generateTangents(const TangentCorners& in) {
         }
     }
     std::vector<glm::vec4> out(corners);
-    std::unordered_map<uint32_t, uint32_t> healthy; // joined id -> first corner of a kept face
+    std::vector<uint32_t> healthy(corners, kNone); // joined id -> first corner of a kept face
     for (size_t c = 0; c < corners; ++c) {
         out[c] = group[c] != kNone ? frames[group[c]] : glm::vec4(anyTangent(in.normals[c]), 1.0f);
-        if (!faces[c / 3].degenerate)
-            healthy.emplace(id[c], uint32_t(c));
+        if (!faces[c / 3].degenerate && healthy[id[c]] == kNone)
+            healthy[id[c]] = uint32_t(c);
     }
-    for (size_t c = 0; c < corners; ++c) {
-        if (!faces[c / 3].degenerate)
-            continue;
-        auto twin = healthy.find(id[c]);
-        if (twin != healthy.end())
-            out[c] = out[twin->second];
-    }
+    for (size_t c = 0; c < corners; ++c)
+        if (faces[c / 3].degenerate && healthy[id[c]] != kNone)
+            out[c] = out[healthy[id[c]]];
     return out;
 }
 
