@@ -78,7 +78,8 @@ void PathBuffers::appendMemoryReport(
     std::vector<std::pair<std::string, uint64_t>>& report) const {
     for (const Buffer* buffer :
          {&params, &counters, &film, &rayOrigin, &rayDirection, &throughput, &radiance, &hits,
-          &shadowOrigin, &shadowDirection, &shadowRadiance, &rayQueues, &aovPaths, &aovFilm, &momentFilm, &activePixels, &rayCones})
+          &shadowOrigin, &shadowDirection, &shadowRadiance, &rayQueues, &aovPaths, &aovFilm,
+          &momentFilm, &activePixels, &rayCones})
         if (*buffer)
             report.emplace_back(buffer->name(), buffer->size());
 }

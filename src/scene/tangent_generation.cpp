@@ -21,7 +21,9 @@ namespace {
 
 constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
 
-bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finite(const glm::vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 bool notZero(float x) { return std::abs(x) > std::numeric_limits<float>::min(); }
 
@@ -124,7 +126,8 @@ std::vector<Face> faceFrames(const TangentCorners& in, const std::vector<uint32_
         const float sign = face.preserving ? 1.0f : -1.0f;
         if (notZero(lengthS))
             face.os = os * (sign / lengthS);
-        face.groupWithAny = !(notZero(lengthS / std::abs(area)) && notZero(lengthT / std::abs(area)));
+        face.groupWithAny =
+            !(notZero(lengthS / std::abs(area)) && notZero(lengthT / std::abs(area)));
     }
     // Pair each edge with one edge running the other way between the same joined corners:
     // edges sorted by (from, to); each key's run keeps a cursor past its matched entries, so a
@@ -132,7 +135,9 @@ std::vector<Face> faceFrames(const TangentCorners& in, const std::vector<uint32_
     struct Edge {
         uint64_t key;     // from << 32 | to
         uint32_t corner;  // 3 f + k: edge (k, k + 1) of face f
-        bool operator<(const Edge& o) const { return key != o.key ? key < o.key : corner < o.corner; }
+        bool operator<(const Edge& o) const {
+            return key != o.key ? key < o.key : corner < o.corner;
+        }
     };
     std::vector<Edge> edges;
     edges.reserve(faces.size() * 3);

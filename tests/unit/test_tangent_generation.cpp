@@ -175,8 +175,9 @@ TEST(TangentGeneration, UvSeamKeepsSharedPositionsApart) {
     const std::vector<glm::vec4> frames = generateTangents(mesh);
     expectUsable(frames, mesh);
     for (size_t c = 0; c < frames.size(); ++c)
-        expectFrame(frames[c], faceCentreX(mesh, c) < 1.0f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0),
-                    1.0f, 1e-4f, std::to_string(c));
+        expectFrame(frames[c],
+                    faceCentreX(mesh, c) < 1.0f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0), 1.0f,
+                    1e-4f, std::to_string(c));
 }
 
 TEST(TangentGeneration, DegenerateUvsGetFiniteFramesFromHealthyNeighbours) {
