@@ -250,5 +250,21 @@ TEST(TangentGeneration, LoaderFramesFollowTheNodeTransformAndMirroring) {
     }
 }
 
+TEST(TangentGeneration, GeneratedFramesAgreeWithTheFilesMikkTangents) {
+    // The same cylinder, once with TANGENT holding its MikkTSpace frames (closed form) and once
+    // without: the loader's frames agree corner by corner, handedness included, on both nodes.
+    const std::string dir = std::string(WF_TEST_CORPUS_DIR) + "/valid/";
+    const Scene given = loadGltf(dir + "normal_map_cylinder_with_tangents.gltf");
+    const Scene generated = loadGltf(dir + "normal_map_cylinder_mirrored.gltf");
+    ASSERT_EQ(given.surface.tangents.size(), generated.surface.tangents.size());
+    for (size_t i = 0; i < given.surface.tangents.size(); ++i) {
+        const TriangleTangents& a = given.surface.tangents[i];
+        const TriangleTangents& b = generated.surface.tangents[i];
+        EXPECT_EQ(a.signs, b.signs) << i;
+        for (auto [ta, tb] : {std::pair{a.t0, b.t0}, {a.t1, b.t1}, {a.t2, b.t2}})
+            EXPECT_LT(angleBetween(decode(ta), decode(tb)), 2e-3f) << i;
+    }
+}
+
 } // namespace
 } // namespace wf
