@@ -1,8 +1,8 @@
 // Texture sampling for the shading and alpha-test code: UVs interpolated from the per-triangle
 // UV buffers, KHR_texture_transform, the sampler's wrap modes, bilinear (or nearest) filtering
 // of RGBA8 texels, and sRGB decoding of colour textures per texel, before filtering, as
-// hardware samplers do. With WF_RAY_CONES, shading lookups are trilinear between two levels of
-// the image's mip chain, chosen from the ray cone's footprint (ray_cones.glsl); alpha tests and
+// hardware samplers do. With WF_RAY_CONES, shading lookups read the image's mip chain at the
+// level the ray cone's footprint asks for (ray_cones.h), stochastic trilinear; alpha tests and
 // light sampling read level 0. Compiled only in variants with WF_HAS_TEXTURES.
 #ifndef WF_TEXTURES_GLSL
 #define WF_TEXTURES_GLSL
@@ -130,7 +130,25 @@ float textureLod(TextureRef ref, TriangleUvs uvs, float footprint) {
     return coneTextureLod(footprint, uvArea2 * float(ref.width) * float(ref.height), ref.levels);
 }
 
-// Trilinear: the two levels around the footprint's, mixed by its fraction.
+// Which of the two levels around the footprint's a lookup reads: a hash of the hit, uniform in
+// [0, 1), against the fraction. Inputs differ per sample (the barycentrics) and per texture.
+float levelChoice(uint refIndex, uint triangle, float b1, float b2) {
+    uint h = (floatBitsToUint(b1) * 0x9e3779b9u) ^ floatBitsToUint(b2);
+    h ^= triangle * 0x85ebca6bu + refIndex * 0xc2b2ae35u;
+    h ^= h >> 16; // lowbias32 (Wellons)
+    h *= 0x7feb352du;
+    h ^= h >> 15;
+    h *= 0x846ca68bu;
+    h ^= h >> 16;
+    return float(h >> 8) * (1.0 / 16777216.0);
+}
+
+// Stochastic trilinear filtering (Pharr et al., "Filtering After Shading With Stochastic
+// Texture Filtering", 2024): one bilinear lookup of level k or k + 1, the coarser with
+// probability lod - k. Its expected value is the trilinear blend, at half the texel fetches
+// and sRGB decodes (on lavapipe, which runs both sides of every branch, the blend of two
+// lookups cost the shade pass 1.5-2x on a textured floor); the pixel's samples average the
+// choice away like any other.
 vec4 sampleTriangleTextureCone(uint refIndex, uint triangle, float b1, float b2,
                                float footprint) {
     TextureRef ref = textureRefAt(refIndex);
@@ -138,14 +156,10 @@ vec4 sampleTriangleTextureCone(uint refIndex, uint triangle, float b1, float b2,
     vec2 uv = textureSpaceUv(ref, interpolateUv(uvs, b1, b2));
     float lod = textureLod(ref, uvs, footprint);
     uint k = uint(lod);
-    MipLevel level = mipLevel(ref, k);
-    vec4 fine = sampleLevel(ref, level, uv);
-    // At the last level lod - k is 0 (the clamp), so reading past the chain's end is avoided
-    // by staying on it.
-    vec4 coarse = sampleLevel(ref, k + 1u < ref.levels ? nextLevel(level) : level, uv);
-    return mix(fine, coarse, lod - float(k));
+    bool coarser = levelChoice(refIndex, triangle, b1, b2) < lod - float(k);
+    // At the last level lod - k is 0 (the clamp), so the choice never steps past the chain.
+    return sampleLevel(ref, mipLevel(ref, coarser ? k + 1u : k), uv);
 }
 #endif
-
 #endif
 #endif
