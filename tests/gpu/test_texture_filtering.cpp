@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "gpu_test_util.h"
 #include "scene/gltf_materials.h"
