@@ -4,6 +4,7 @@
 // trace the same paths. Includers provide bindings, geometry, rng, sampling, light_sampling,
 // bsdf, lights and surface.
 // Estimator: WF_LIGHT_SAMPLING 0 = BSDF sampling only, 1 = NEE only, 2 = MIS (power heuristic).
+#include "ray_cones.glsl"
 
 struct PathVertex {
     // In: where the path is.
@@ -18,6 +19,9 @@ struct PathVertex {
     float previousNormal; // encodeReceiverNormal at the vertex it left (light tree MIS; 0: none)
     vec3 beta;         // throughput
     float etaScale;    // product of eta^2 over refractions, so that RR ignores radiance scaling
+#if WF_RAY_CONES
+    vec2 cone;         // the ray's cone: width at its origin, spread (ray_cones.glsl)
+#endif
     // Out.
     vec3 radiance;     // emission found by this ray, weighted
     bool continues;
@@ -115,14 +119,20 @@ void shadePathVertex(inout PathVertex v) {
         return;
 
     vec3 wo = -v.direction;
-    SurfaceHit surface = loadSurface(v.hit.x, v.hit.w, uintBitsToFloat(v.hit.y),
-                                     uintBitsToFloat(v.hit.z), wo);
 #if WF_HAS_INSTANCES
     // x held the instance (intersectClosest); the direction is unit length.
-    float t = length(surface.p - v.origin);
+    float t = instancedHitDistance(v.hit.x, v.hit.w, uintBitsToFloat(v.hit.y),
+                                   uintBitsToFloat(v.hit.z), v.origin);
 #else
     float t = uintBitsToFloat(v.hit.x);
 #endif
+#if WF_RAY_CONES
+    float coneWidth = coneWidthAt(v.cone, t);
+#else
+    float coneWidth = 0.0;
+#endif
+    SurfaceHit surface = loadSurface(v.hit.x, v.hit.w, uintBitsToFloat(v.hit.y),
+                                     uintBitsToFloat(v.hit.z), wo, coneWidth);
 #if WF_AOV
     v.aovAlbedoDistance = vec4(surface.baseColor, t);
     v.aovNormal = surface.ns;
@@ -207,5 +217,8 @@ void shadePathVertex(inout PathVertex v) {
         v.previousNormal = receiver;
         v.beta = beta;
         v.etaScale = etaScale;
+#if WF_RAY_CONES
+        v.cone = coneAfterBounce(v.cone, coneWidth, v.previousPdf);
+#endif
     }
 }

@@ -60,11 +60,23 @@ bool instanceMirrors(Instance instance) {
 #endif
 }
 
+// A shading lookup of reference `ref` at the hit: filtered by the ray cone's footprint where
+// the variant has ray cones (textures.glsl), else level 0.
+#if WF_HAS_TEXTURES
+vec4 surfaceTexture(uint ref, uint triangleIndex, float b1, float b2, float footprint) {
+#if WF_RAY_CONES
+    return sampleTriangleTextureCone(ref, triangleIndex, b1, b2, footprint);
+#else
+    return sampleTriangleTexture(ref, triangleIndex, b1, b2);
+#endif
+}
+#endif
+
 // The shading normal on the front (counter-clockwise) side: interpolated vertex normals, then
 // the normal map in the tangent frame. Falls back to the geometric normal wherever the data
 // would give a zero or non-finite vector.
 vec3 frontShadingNormal(Instance instance, uint triangleIndex, Material material, float b1,
-                        float b2, vec3 ng) {
+                        float b2, vec3 ng, float footprint) {
     vec3 n = ng;
 #if WF_HAS_NORMALS
     TriangleNormals corners = triangleNormalsAt(triangleIndex);
@@ -88,7 +100,7 @@ vec3 frontShadingNormal(Instance instance, uint triangleIndex, Material material
             // flattens a mirrored mesh).
             bool flipped = ((frame.signs & 1u) != 0u) != instanceMirrors(instance);
             vec3 b = cross(n, t) * (flipped ? -1.0 : 1.0);
-            vec3 m = sampleTriangleTexture(material.normalTexture, triangleIndex, b1, b2).xyz;
+            vec3 m = surfaceTexture(material.normalTexture, triangleIndex, b1, b2, footprint).xyz;
             m = m * 2.0 - 1.0;
             m.xy *= material.normalScale;
             vec3 mapped = t * m.x + b * m.y + n * m.z;
@@ -102,6 +114,8 @@ vec3 frontShadingNormal(Instance instance, uint triangleIndex, Material material
 
 // Emitted radiance of a triangle's front at barycentrics (b1, b2): emissiveFactor x strength x
 // emissiveTexture. Light sampling should use this too, so that NEE and BSDF hits agree.
+// Level 0 also with ray cones: light sampling has no cone at the point it picks, and both must
+// see one emission for MIS to weigh one integrand.
 vec3 surfaceEmission(uint triangleIndex, Material material, float b1, float b2) {
     vec3 emission = material.emission;
 #if WF_HAS_TEXTURES
@@ -131,9 +145,28 @@ vec3 instancedSpawnError(Instance instance, Triangle tri, vec3 p0, vec3 p1, vec3
                          instance.objectFromWorld2, abs(p)));
     return triangleHitPointError(p0, p1, p2, b1, b2) + cornerError + slack + backError;
 }
+
+// The distance along a unit-length ray from `origin` to an instanced hit, which the hit record
+// does not keep (its x holds the instance): the world point as loadSurface computes it.
+float instancedHitDistance(uint instanceIndex, uint triangleIndex, float b1, float b2,
+                           vec3 origin) {
+    Triangle tri = triangleAt(triangleIndex);
+    Instance instance = instanceAt(instanceIndex);
+    vec3 p = triangleHitPoint(
+        affinePoint(instance.worldFromObject0, instance.worldFromObject1,
+                    instance.worldFromObject2, tri.p0),
+        affinePoint(instance.worldFromObject0, instance.worldFromObject1,
+                    instance.worldFromObject2, tri.p1),
+        affinePoint(instance.worldFromObject0, instance.worldFromObject1,
+                    instance.worldFromObject2, tri.p2),
+        b1, b2);
+    return length(p - origin);
+}
 #endif
 
-SurfaceHit loadSurface(uint instanceIndex, uint triangleIndex, float b1, float b2, vec3 wo) {
+// coneWidth: the ray cone's width at the hit (ray_cones.glsl; unused without WF_RAY_CONES).
+SurfaceHit loadSurface(uint instanceIndex, uint triangleIndex, float b1, float b2, vec3 wo,
+                       float coneWidth) {
     Triangle tri = triangleAt(triangleIndex);
     Material material = materialAt(tri.material);
     SurfaceHit s;
@@ -161,7 +194,12 @@ SurfaceHit loadSurface(uint instanceIndex, uint triangleIndex, float b1, float b
     vec3 ng = normalize(cross12) * (instanceMirrors(instance) ? -1.0 : 1.0);
     s.frontFace = dot(ng, wo) > 0.0;
     s.ng = s.frontFace ? ng : -ng; // two-sided shading
-    vec3 ns = frontShadingNormal(instance, triangleIndex, material, b1, b2, ng);
+#if WF_RAY_CONES
+    float footprint = coneFootprint(coneWidth, dot(ng, wo), length(cross12));
+#else
+    float footprint = 0.0;
+#endif
+    vec3 ns = frontShadingNormal(instance, triangleIndex, material, b1, b2, ng, footprint);
     s.ns = s.frontFace ? ns : -ns;
     // A shading normal past the horizon of the geometric one would leak light: use ng there.
     if (!(dot(s.ns, s.ng) > 0.0))
@@ -177,15 +215,16 @@ SurfaceHit loadSurface(uint instanceIndex, uint triangleIndex, float b1, float b
     s.specularColor = material.specularColor;
 #if WF_HAS_TEXTURES
     if (material.baseColorTexture != WF_NO_TEXTURE)
-        base *= sampleTriangleTexture(material.baseColorTexture, triangleIndex, b1, b2);
+        base *= surfaceTexture(material.baseColorTexture, triangleIndex, b1, b2, footprint);
     if (material.metallicRoughnessTexture != WF_NO_TEXTURE) {
-        vec4 mr = sampleTriangleTexture(material.metallicRoughnessTexture, triangleIndex, b1, b2);
+        vec4 mr = surfaceTexture(material.metallicRoughnessTexture, triangleIndex, b1, b2,
+                                 footprint);
         s.metallic *= mr.b;
         s.roughness *= mr.g;
     }
     if (material.transmissionTexture != WF_NO_TEXTURE)
-        s.transmission *= sampleTriangleTexture(material.transmissionTexture, triangleIndex, b1,
-                                                b2).r;
+        s.transmission *= surfaceTexture(material.transmissionTexture, triangleIndex, b1, b2,
+                                         footprint).r;
 #endif
     s.baseColor = base.rgb;
     s.alpha = base.a;

@@ -217,7 +217,8 @@ std::string renderSettingsKey(const RenderSettings& s, const ParsedArgs& parsed)
            lightSelectionName(s.lightSelection) + " triangle " +
            (s.triangleSolidAngle ? "solid-angle" : "area") + " sphere " +
            (s.sphereSolidAngle ? "solid-angle" : "area") + " " + samplerName(s.sampler) +
-           (s.randomizeSamples ? "" : " no-randomize") + " camera " +
+           (s.randomizeSamples ? "" : " no-randomize") +
+           (s.textureLod ? "" : " texture-filter none") + " camera " +
            parsed.value("--camera").value_or("default") +
            (parsed.has("--aperture") ? " aperture " + *parsed.value("--aperture") : "") +
            (parsed.has("--focus-distance") ? " focus " + *parsed.value("--focus-distance") : "") +

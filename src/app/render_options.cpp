@@ -47,6 +47,8 @@ std::vector<OptionSpec> samplingOptions() {
         {"--seed", "", "S", "random seed; same seed, same image bit for bit (default 0)"},
         {"--sampler", "", "NAME", "sample pattern: independent, stratified, multijitter, "
                                   "halton, hammersley, sobol (default) or bluenoise"},
+        {"--texture-filter", "", "MODE", "cone (mip levels chosen by ray cones; default) or "
+                                         "none (full-resolution bilinear lookups)"},
     };
 }
 
@@ -106,6 +108,8 @@ void applyRenderFlags(const ParsedArgs& parsed, uint32_t defaultMaxDepth,
     settings.sampler = parseSampler(
         parsed.choiceValue("--sampler", samplerName(kDefaultSampler), samplerNames()));
     settings.randomizeSamples = !parsed.has("--no-randomize");
+    settings.textureLod =
+        parsed.choiceValue("--texture-filter", "cone", {"cone", "none"}) == "cone";
     if (!settings.randomizeSamples && settings.sampler == SamplerKind::Independent)
         throw UsageError("--no-randomize: the independent sampler has no randomization to "
                          "remove (pick another --sampler)");

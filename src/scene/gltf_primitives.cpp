@@ -13,6 +13,8 @@
 #include <glm/gtc/packing.hpp>
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include "scene/tangent_generation.h"
+
 namespace wf::gltf {
 
 namespace {
@@ -67,6 +69,37 @@ glm::vec3 orthogonal(const glm::vec3& n) {
     const float s = std::copysign(1.0f, n.z);
     const float a = -1.0f / (s + n.z);
     return glm::vec3(1.0f + s * n.x * n.x * a, s * n.x * n.y * a, -s * n.x);
+}
+
+// MikkTSpace frames for a primitive without TANGENT, per corner of `order`, in the primitive's
+// own space (before any node transform, so every placement of a mesh gets the same frames).
+// glTF's v runs down the image; MikkTSpace's t runs up, so it reads (u, -v).
+std::vector<glm::vec4> mikkTangents(const FloatArray& points, const FloatArray* normals,
+                                    const FloatArray* uvs, const std::vector<uint32_t>& order) {
+    TangentCorners corners;
+    corners.positions.resize(order.size());
+    corners.normals.resize(order.size());
+    corners.uvs.resize(order.size(), glm::vec2(0.0f));
+    for (size_t c = 0; c < order.size(); ++c) {
+        const float* q = points[order[c]];
+        corners.positions[c] = glm::vec3(q[0], q[1], q[2]);
+        if (uvs)
+            corners.uvs[c] = glm::vec2((*uvs)[order[c]][0], -(*uvs)[order[c]][1]);
+    }
+    for (size_t t = 0; t + 2 < order.size(); t += 3) {
+        const glm::vec3* p = &corners.positions[t];
+        const glm::vec3 face = glm::normalize(glm::cross(p[1] - p[0], p[2] - p[0]));
+        for (size_t k = 0; k < 3; ++k) {
+            glm::vec3 n = face;
+            if (normals) {
+                const float* q = (*normals)[order[t + k]];
+                const glm::vec3 given = glm::normalize(glm::vec3(q[0], q[1], q[2]));
+                n = finite(given) ? given : face;
+            }
+            corners.normals[t + k] = n;
+        }
+    }
+    return generateTangents(corners);
 }
 
 } // namespace
@@ -181,10 +214,15 @@ void PrimitiveBuilder::add(const tinygltf::Primitive& primitive, const std::stri
     const glm::dmat3 linear(world);
     const bool mirrored = glm::determinant(linear) < 0.0;
     const glm::dmat3 normalMatrix = glm::inverseTranspose(linear);
+    const std::vector<glm::vec4> generated =
+        normalMap && !tangents ? mikkTangents(points, normals, uvs[needs.normalMapTexCoord], order)
+                               : std::vector<glm::vec4>{};
     for (size_t t = 0; t < order.size(); t += 3) {
         uint32_t idx[3] = {order[t], order[t + 1], order[t + 2]};
+        size_t slot[3] = {t, t + 1, t + 2}; // corners of `generated`
         if (mirrored) {
             std::swap(idx[1], idx[2]);
+            std::swap(slot[1], slot[2]);
         }
         glm::vec3 p[3];
         for (int k = 0; k < 3; ++k) {
@@ -229,29 +267,15 @@ void PrimitiveBuilder::add(const tinygltf::Primitive& primitive, const std::stri
             continue;
         }
         TriangleTangents frame{};
-        if (normalMap && tangents) {
+        if (normalMap) {
             uint32_t packed[3];
             for (int k = 0; k < 3; ++k) {
-                const float* q = (*tangents)[idx[k]];
+                const float* q = tangents ? (*tangents)[idx[k]] : &generated[slot[k]].x;
                 glm::vec3 axis(glm::normalize(linear * glm::dvec3(q[0], q[1], q[2])));
                 packed[k] = octEncode(finite(axis) ? axis : orthogonal(n[k]));
                 frame.signs |= ((q[3] < 0.0f) != mirrored) ? 1u << k : 0u;
             }
             frame = {packed[0], packed[1], packed[2], frame.signs};
-        } else if (normalMap) {
-            // Per triangle from the normal map's UVs: T = dP/du; glTF's v runs down the image,
-            // so the bitangent of an unmirrored mapping is -dP/dv = cross(n, T).
-            const TriangleUvs& m = uv[needs.normalMapTexCoord];
-            const glm::vec3 e1 = p[1] - p[0], e2 = p[2] - p[0];
-            const glm::vec2 d1 = m.uv1 - m.uv0, d2 = m.uv2 - m.uv0;
-            const float det = d1.x * d2.y - d2.x * d1.y;
-            glm::vec3 axis = (e1 * d2.y - e2 * d1.y) / det;
-            const glm::vec3 dpdv = (e2 * d1.x - e1 * d2.x) / det;
-            const bool usable = finite(axis) && finite(dpdv) && glm::length(axis) > 0.0f;
-            axis = usable ? glm::normalize(axis) : orthogonal(ng);
-            const bool flip = usable && glm::dot(glm::cross(ng, axis), -dpdv) < 0.0f;
-            const uint32_t packed = octEncode(axis);
-            frame = {packed, packed, packed, flip ? 7u : 0u};
         }
         surface_.tangents.resize(triangles_.size() - 1);
         surface_.tangents.push_back(frame);

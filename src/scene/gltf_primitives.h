@@ -1,7 +1,7 @@
 // One glTF primitive to world-space triangles plus, per triangle, what shading may need:
-// shading normals (NORMAL, else flat), UVs (TEXCOORD_0/1) and tangents (TANGENT, else made per
-// triangle from the normal map's UVs). Triangle lists, strips and fans; indexed or not. The
-// loader decides at the end which of the collected attributes the scene keeps.
+// shading normals (NORMAL, else flat), UVs (TEXCOORD_0/1) and tangents (TANGENT, else MikkTSpace
+// frames from the normal map's UVs, tangent_generation.h). Triangle lists, strips and fans;
+// indexed or not. The loader decides at the end which of the collected attributes it keeps.
 #pragma once
 #include <cstddef>
 #include <string>

@@ -274,6 +274,36 @@ g = Gltf()
 m = g.material(normalTexture={"index": g.texture(g.image(normal_png()))})
 quad(g, m, normals=True, extra={"TANGENT": g.floats([1, 0, 0, 1] * 4, "VEC4")})
 case("valid/normal_map_with_tangents.gltf", "loads 2 normals=1 tangents=1", g)
+# A smooth, UV-mapped cylinder with a normal map and no TANGENT (MikkTSpace frames are known in
+# closed form: the tangent is dP/du), placed as it is and mirrored.
+pos, nrm, uv, idx = [], [], [], []
+for j in range(3):
+    for i in range(17):
+        a = 2 * math.pi * i / 16
+        pos += [math.sin(a), j / 2, math.cos(a)]
+        nrm += [math.sin(a), 0, math.cos(a)]
+        uv += [i / 16, 1 - j / 2]
+for j in range(2):
+    for i in range(16):
+        a, b, c, d = j * 17 + i, j * 17 + i + 1, (j + 1) * 17 + i + 1, (j + 1) * 17 + i
+        idx += [a, b, c, a, c, d]
+cylinder = (pos, nrm, uv, idx)
+for name, tangents in (("normal_map_cylinder_mirrored.gltf", False),
+                       ("normal_map_cylinder_with_tangents.gltf", True)):
+    g = Gltf()
+    m = g.material(normalTexture={"index": g.texture(g.image(normal_png()))})
+    attrs = {"POSITION": g.floats(pos, "VEC3"), "NORMAL": g.floats(nrm, "VEC3"),
+             "TEXCOORD_0": g.floats(uv, "VEC2")}
+    if tangents:  # the MikkTSpace frames in closed form: dP/du, w = +1
+        tan = []
+        for k in range(0, len(nrm), 3):
+            tan += [nrm[k + 2], 0, -nrm[k], 1]
+        attrs["TANGENT"] = g.floats(tan, "VEC4")
+    mesh = g.mesh(attrs, g.indices(idx), m)
+    g.node(mesh=mesh)
+    g.node(mesh=mesh, scale=[-1, 1, 1], translation=[3, 0, 0])
+    g.doc["scenes"][0]["nodes"] = [0, 1]
+    case("valid/" + name, "loads 128 normals=1 tangents=1", g)
 g = Gltf()
 tex = g.texture(g.image(checker_png(alpha_hole=True)))
 mr = g.texture(g.image(checker_png()))
