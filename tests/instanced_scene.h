@@ -16,6 +16,7 @@ namespace wf::test {
 struct BlobMesh {
     std::vector<float> positions; // xyz
     std::vector<float> normals;   // xyz, area-weighted face normals
+    std::vector<float> uvs;       // the sphere's longitude and latitude, seam duplicated
     std::vector<uint16_t> indices;
 };
 
@@ -32,6 +33,7 @@ inline BlobMesh blobMesh(int rings = 8) {
             p.x += 0.6f * std::max(p.x, 0.0f) * std::max(p.x, 0.0f); // a bulge on +x only
             p.y *= 0.8f + 0.2f * (p.z + 1.0f);                        // taller towards +z
             points.push_back(p);
+            mesh.uvs.insert(mesh.uvs.end(), {float(s) / float(segments), float(r) / float(rings)});
         }
     std::vector<glm::vec3> normals(points.size(), glm::vec3(0.0f));
     auto at = [&](int r, int s) { return uint16_t(r * (segments + 1) + s); };
@@ -57,13 +59,23 @@ inline BlobMesh blobMesh(int rings = 8) {
     return mesh;
 }
 
-// Writes the scene; `blobMaterial` is the blob's glTF material JSON.
+// Writes the scene; `blobMaterial` is the blob's glTF material JSON. With `normalMapPng` (the
+// bytes of a PNG), the blob gets UVs and that image as texture 0, for a material that names it.
 inline std::string writeInstancedScene(const TempDir& dir, const std::string& blobMaterial =
                                            R"({"pbrMetallicRoughness":{"baseColorFactor":
                                            [0.8,0.5,0.3,1],"metallicFactor":0,
-                                           "roughnessFactor":0.35}})") {
+                                           "roughnessFactor":0.35}})",
+                                       const std::string& normalMapPath = "") {
     MiniGltf g;
     const BlobMesh blob = blobMesh();
+    std::string uvAttribute;
+    if (!normalMapPath.empty()) {
+        const int uvs = g.addAccessor(g.addView(blob.uvs.data(), blob.uvs.size() * sizeof(float)),
+                                      F32, blob.uvs.size() / 2, "VEC2");
+        uvAttribute = ",\"TEXCOORD_0\":" + std::to_string(uvs);
+        g.images.push_back("{\"uri\":\"" + normalMapPath + "\"}");
+        g.textures.push_back(R"({"source":0})");
+    }
     const int positions = g.addPositions(blob.positions);
     const int normals = g.addAccessor(
         g.addView(blob.normals.data(), blob.normals.size() * sizeof(float)), F32,
@@ -74,7 +86,7 @@ inline std::string writeInstancedScene(const TempDir& dir, const std::string& bl
                           "metallicFactor":0,"roughnessFactor":1}})");
     g.materials.push_back(R"({"emissiveFactor":[1,1,1],"extensions":{
                           "KHR_materials_emissive_strength":{"emissiveStrength":12}}})");
-    g.addMesh(positions, indices, 0, 4, ",\"NORMAL\":" + std::to_string(normals));
+    g.addMesh(positions, indices, 0, 4, ",\"NORMAL\":" + std::to_string(normals) + uvAttribute);
     const std::vector<float> floor = {-4, 0, -4, -4, 0, 4, 4, 0, 4, -4, 0, -4, 4, 0, 4, 4, 0, -4};
     g.addMesh(g.addPositions(floor), -1, 1);
     const std::vector<float> lamp = {-1, 4, -1, 1, 4, -1, 1, 4, 1, -1, 4, -1, 1, 4, 1, -1, 4, 1};

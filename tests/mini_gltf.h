@@ -74,6 +74,7 @@ inline std::string join(const std::vector<std::string>& items) {
 struct MiniGltf {
     std::vector<uint8_t> bin;
     std::vector<std::string> views, accessors, meshes, nodes, materials, cameras;
+    std::vector<std::string> images, textures; // written only when a test adds some
     std::string scenes = R"([{"nodes":[0]}])";
     std::string bufferUri; // empty: the buffer is embedded as a data: URI
 
@@ -125,6 +126,8 @@ struct MiniGltf {
         return "{\"asset\":{\"version\":\"2.0\"},\"scenes\":" + scenes +
                ",\"nodes\":" + join(nodes) + ",\"meshes\":" + join(meshes) +
                ",\"materials\":" + join(materials) + ",\"cameras\":" + join(cameras) +
+               (images.empty() ? "" : ",\"images\":" + join(images)) +
+               (textures.empty() ? "" : ",\"textures\":" + join(textures)) +
                ",\"accessors\":" + join(accessors) + ",\"bufferViews\":" + join(views) +
                ",\"buffers\":[" + buffer + "}]}";
     }
