@@ -54,8 +54,13 @@ struct Grid {
 
 // A glTF document whose buffer 0 is `bin`, written as .glb or as .gltf with a data: URI.
 struct Document {
-    Json json = {{"asset", {{"version", "2.0"}}}, {"scene", 0}, {"scenes", {{{"nodes", {0}}}}},
-                 {"bufferViews", Json::array()}, {"accessors", Json::array()}};
+    // Json::object and Json::array wherever a brace list has one element: compilers differ on
+    // whether {x} copies x or makes a one-element array.
+    Json json = {{"asset", Json::object({{"version", "2.0"}})},
+                 {"scene", 0},
+                 {"scenes", Json::array({Json::object({{"nodes", Json::array({0})}})})},
+                 {"bufferViews", Json::array()},
+                 {"accessors", Json::array()}};
     std::vector<unsigned char> bin;
     Json moreBuffers = Json::array();
 
@@ -79,7 +84,7 @@ struct Document {
         fs::create_directories(dir);
         const fs::path path = dir / name;
         Json doc = json;
-        doc["buffers"] = Json::array({{{"byteLength", bin.size()}}});
+        doc["buffers"] = Json::array({Json::object({{"byteLength", bin.size()}})});
         for (const Json& b : moreBuffers) {
             doc["buffers"].push_back(b);
         }
@@ -117,11 +122,12 @@ struct Document {
 };
 
 void primitive(Document& doc, int position, int normal, int indices, Json node = Json::object()) {
-    doc.json["meshes"] = {{{"primitives",
-                            {{{"attributes", {{"POSITION", position}, {"NORMAL", normal}}},
-                              {"indices", indices}}}}}};
+    const Json attributes = {{"POSITION", position}, {"NORMAL", normal}};
+    const Json primitive = {{"attributes", attributes}, {"indices", indices}};
+    doc.json["meshes"] =
+        Json::array({Json::object({{"primitives", Json::array({primitive})}})});
     node["mesh"] = 0;
-    doc.json["nodes"] = {node};
+    doc.json["nodes"] = Json::array({node});
 }
 
 std::string writeOriginal(const Grid& grid) {
@@ -204,7 +210,8 @@ void expectSameTriangles(const Scene& actual, const Scene& expected, float toler
 Document dracoDocument(const test::DracoOutput& encoded, int positionType, bool normalized,
                        Json node = Json::object()) {
     Document doc;
-    doc.json["extensionsUsed"] = doc.json["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+    doc.json["extensionsUsed"] = doc.json["extensionsRequired"] =
+        Json::array({"KHR_draco_mesh_compression"});
     if (positionType != 5126) {
         doc.json["extensionsUsed"].push_back("KHR_mesh_quantization");
         doc.json["extensionsRequired"].push_back("KHR_mesh_quantization");
@@ -219,10 +226,11 @@ Document dracoDocument(const test::DracoOutput& encoded, int positionType, bool 
     const int i = doc.accessor({{"componentType", 5123}, {"count", encoded.faces * 3},
                                 {"type", "SCALAR"}});
     primitive(doc, p, n, i, node);
-    doc.json["meshes"][0]["primitives"][0]["extensions"] = {
-        {"KHR_draco_mesh_compression",
-         {{"bufferView", v},
-          {"attributes", {{"POSITION", encoded.ids[0]}, {"NORMAL", encoded.ids[1]}}}}}};
+    const Json draco = {
+        {"bufferView", v},
+        {"attributes", {{"POSITION", encoded.ids[0]}, {"NORMAL", encoded.ids[1]}}}};
+    doc.json["meshes"][0]["primitives"][0]["extensions"] =
+        Json::object({{"KHR_draco_mesh_compression", draco}});
     return doc;
 }
 
@@ -281,7 +289,7 @@ int meshoptView(Document& doc, const char* extension, const std::vector<unsigned
         ext["filter"] = filter;
     }
     Json view = {{"buffer", 1}, {"byteOffset", target}, {"byteLength", stride * count},
-                 {"extensions", {{extension, ext}}}};
+                 {"extensions", Json::object({{extension, ext}})}};
     if (std::string(mode) == "ATTRIBUTES") {
         view["byteStride"] = stride;
     }
@@ -320,7 +328,8 @@ TEST(GltfCompression, MeshoptQuantizedAsGltfpackWritesIt) {
 
     Document doc;
     const char* ext = "EXT_meshopt_compression";
-    doc.json["extensionsUsed"] = doc.json["extensionsRequired"] = {ext, "KHR_mesh_quantization"};
+    doc.json["extensionsUsed"] = doc.json["extensionsRequired"] =
+        Json::array({ext, "KHR_mesh_quantization"});
     std::size_t fallback = 0;
     const int pv = meshoptView(doc, ext, encodeVertices(positions.data(), n, 8), 8, n,
                                "ATTRIBUTES", nullptr, fallback);
@@ -328,8 +337,9 @@ TEST(GltfCompression, MeshoptQuantizedAsGltfpackWritesIt) {
                                "ATTRIBUTES", "OCTAHEDRAL", fallback);
     const int iv = meshoptView(doc, ext, triangles, 2, indices.size(), "TRIANGLES", nullptr,
                                fallback);
-    doc.moreBuffers.push_back({{"byteLength", fallback},
-                               {"extensions", {{ext, {{"fallback", true}}}}}});
+    const Json fallbackBuffer = Json::object({{"fallback", true}});
+    doc.moreBuffers.push_back(
+        {{"byteLength", fallback}, {"extensions", Json::object({{ext, fallbackBuffer}})}});
     const int p = doc.accessor({{"bufferView", pv}, {"componentType", 5123},
                                 {"normalized", true}, {"count", n}, {"type", "VEC3"}});
     const int nn = doc.accessor({{"bufferView", nv}, {"componentType", 5120},
@@ -355,7 +365,7 @@ TEST(GltfCompression, MeshoptKhrFloatsInGltf) {
                                                 grid.indices.data(), grid.indices.size()));
     Document doc;
     const char* ext = "KHR_meshopt_compression";
-    doc.json["extensionsUsed"] = doc.json["extensionsRequired"] = {ext};
+    doc.json["extensionsUsed"] = doc.json["extensionsRequired"] = Json::array({ext});
     std::size_t fallback = 0;
     const int pv = meshoptView(doc, ext, encodeVertices(exponential.data(), n, 12), 12, n,
                                "ATTRIBUTES", "EXPONENTIAL", fallback);
@@ -363,7 +373,7 @@ TEST(GltfCompression, MeshoptKhrFloatsInGltf) {
                                "ATTRIBUTES", nullptr, fallback);
     const int iv = meshoptView(doc, ext, sequence, 4, grid.indices.size(), "INDICES", nullptr,
                                fallback);
-    doc.moreBuffers.push_back({{"byteLength", fallback}});
+    doc.moreBuffers.push_back(Json::object({{"byteLength", fallback}}));
     const int p = doc.accessor({{"bufferView", pv}, {"componentType", 5126}, {"count", n},
                                 {"type", "VEC3"}});
     const int nn = doc.accessor({{"bufferView", nv}, {"componentType", 5126}, {"count", n},
@@ -417,16 +427,20 @@ TEST(GltfCompression, CutOrCorruptedStreamsAreRefusedCleanly) {
     for (std::size_t cut = 0; cut < vertices.size();
          cut += std::max<std::size_t>(1, vertices.size() / 40)) {
         Document doc;
-        doc.json["extensionsUsed"] = doc.json["extensionsRequired"] = {"EXT_meshopt_compression"};
+        doc.json["extensionsUsed"] = doc.json["extensionsRequired"] =
+            Json::array({"EXT_meshopt_compression"});
         std::size_t fallback = 0;
         const std::vector<unsigned char> part(vertices.begin(), vertices.begin() + long(cut));
         const int pv = meshoptView(doc, "EXT_meshopt_compression", part, 12, grid.vertices(),
                                    "ATTRIBUTES", nullptr, fallback);
-        doc.moreBuffers.push_back({{"byteLength", fallback}});
+        doc.moreBuffers.push_back(Json::object({{"byteLength", fallback}}));
         const int p = doc.accessor({{"bufferView", pv}, {"componentType", 5126},
                                     {"count", grid.vertices()}, {"type", "VEC3"}});
-        doc.json["meshes"] = {{{"primitives", {{{"attributes", {{"POSITION", p}}}}}}}};
-        doc.json["nodes"] = {{{"mesh", 0}}};
+        const Json attributes = Json::object({{"POSITION", p}});
+        const Json primitive = Json::object({{"attributes", attributes}});
+        doc.json["meshes"] =
+            Json::array({Json::object({{"primitives", Json::array({primitive})}})});
+        doc.json["nodes"] = Json::array({Json::object({{"mesh", 0}})});
         refusedInOneLine(doc.write("meshopt_cut.glb"));
     }
 }
