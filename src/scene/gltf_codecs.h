@@ -13,6 +13,10 @@ class Model;
 
 namespace wf::gltf {
 
+inline constexpr const char* DRACO = "KHR_draco_mesh_compression";
+inline constexpr const char* MESHOPT_NAMES[] = {"EXT_meshopt_compression",
+                                                "KHR_meshopt_compression"};
+
 // Fails unless the extension object obeys the specification's rules for its mode and filter,
 // and names only what meshoptimizer 0.18 decodes. Called while planning, before any data.
 void checkMeshoptParameters(const MeshoptView& ext, const std::string& file);

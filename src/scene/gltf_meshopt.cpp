@@ -101,11 +101,13 @@ std::vector<unsigned char> decodeMeshopt(const MeshoptView& m, const unsigned ch
                        " elements of " + std::to_string(m.byteStride) + " bytes (meshopt " +
                        "error " + std::to_string(result) + ")");
     }
-    switch (m.filter) {
-    case MeshoptView::OCTAHEDRAL: meshopt_decodeFilterOct(out.data(), m.count, m.byteStride); break;
-    case MeshoptView::QUATERNION: meshopt_decodeFilterQuat(out.data(), m.count, m.byteStride); break;
-    case MeshoptView::EXPONENTIAL: meshopt_decodeFilterExp(out.data(), m.count, m.byteStride); break;
-    case MeshoptView::NONE: break;
+    // In place; checkMeshoptParameters has matched each filter's strides.
+    if (m.filter == MeshoptView::OCTAHEDRAL) {
+        meshopt_decodeFilterOct(out.data(), m.count, m.byteStride);
+    } else if (m.filter == MeshoptView::QUATERNION) {
+        meshopt_decodeFilterQuat(out.data(), m.count, m.byteStride);
+    } else if (m.filter == MeshoptView::EXPONENTIAL) {
+        meshopt_decodeFilterExp(out.data(), m.count, m.byteStride);
     }
     return out;
 }
