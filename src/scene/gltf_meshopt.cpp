@@ -3,6 +3,8 @@
 // build), so every precondition is checked here first, as the specification words them.
 #include <meshoptimizer.h>
 
+#include <algorithm>
+
 #include "scene/gltf_accessors.h"
 #include "scene/gltf_codecs.h"
 
@@ -29,6 +31,23 @@ const char* filterName(MeshoptView::Filter filter) {
 // The first byte of each stream: 0xa0 + version for attributes, 0xe0 + version for triangles,
 // 0xd0 + version for indices. meshoptimizer 0.18 decodes vertex version 0 only; KHR allows 1.
 constexpr unsigned char VERTEX_V1_HEADER = 0xa1;
+
+// A lower bound on the compressed size of a valid stream, so that a few bytes claiming
+// gigabytes are refused before the output is allocated. Attributes: every block stores, per
+// byte of the element, one 2-bit header per group of 16 elements, and the tail holds one whole
+// element; triangles take a code byte each and indices at least a byte each.
+std::size_t minimumBytes(const MeshoptView& m) {
+    if (m.mode == MeshoptView::TRIANGLES) {
+        return m.count / 3;
+    }
+    if (m.mode == MeshoptView::INDICES) {
+        return m.count;
+    }
+    const std::size_t blockElements = std::min<std::size_t>((8192 / m.byteStride) & ~15u, 256);
+    const std::size_t fullBlocks = m.count / blockElements, rest = m.count % blockElements;
+    const auto headerBytes = [](std::size_t elements) { return ((elements + 15) / 16 + 3) / 4; };
+    return m.byteStride * (fullBlocks * headerBytes(blockElements) + headerBytes(rest) + 1);
+}
 
 } // namespace
 
@@ -66,6 +85,12 @@ void checkMeshoptParameters(const MeshoptView& m, const std::string& file) {
     if (m.count > MAX_ACCESSOR_ELEMENTS * 4) { // a view may hold several accessors' elements
         fail(file, where + ": count " + std::to_string(m.count) + " is over the limit of " +
                        std::to_string(MAX_ACCESSOR_ELEMENTS * 4));
+    }
+    if (m.count > 0 && m.byteLength < minimumBytes(m)) {
+        fail(file, where + ": " + std::to_string(m.byteLength) + " bytes cannot hold " +
+                       std::to_string(m.count) + " elements of " + std::to_string(m.byteStride) +
+                       " bytes (" + modeName(m.mode) + " data needs at least " +
+                       std::to_string(minimumBytes(m)) + ")");
     }
 }
 
