@@ -233,13 +233,14 @@ CompressionPlan planDecompression(std::vector<unsigned char>& bytes, bool binary
     CompressionPlan out;
     std::size_t jsonStart = 0, jsonLength = bytes.size();
     if (binary) {
-        std::uint32_t chunkLength = 0;
+        std::uint32_t total = 0, chunkLength = 0;
         if (bytes.size() < 20 || std::memcmp(bytes.data() + 16, "JSON", 4) != 0) {
-            return out; // tinygltf refuses the broken container
+            return out; // tinygltf refuses the broken container in its own words
         }
+        std::memcpy(&total, bytes.data() + 8, 4);
         std::memcpy(&chunkLength, bytes.data() + 12, 4);
-        if (chunkLength > bytes.size() - 20) {
-            return out;
+        if (total != bytes.size() || chunkLength > bytes.size() - 20) {
+            return out; // a rewrite would mend the lengths tinygltf checks
         }
         jsonStart = 20;
         jsonLength = chunkLength;
