@@ -32,6 +32,7 @@ void checkDecodedBudget(const tinygltf::Model& model, const CompressionPlan& pla
     for (const MeshoptView& m : plan.meshopt) {
         total += std::uintmax_t(m.count) * m.byteStride; // both below 2^40 (the plan)
     }
+    std::set<int> counted; // primitives may share one stream and its accessors
     for (const DracoPrimitive& d : plan.draco) {
         std::vector<int> accessors{d.indices};
         const auto& mesh = model.meshes[d.mesh].primitives[d.primitive];
@@ -40,8 +41,8 @@ void checkDecodedBudget(const tinygltf::Model& model, const CompressionPlan& pla
             accessors.push_back(found == mesh.attributes.end() ? -1 : found->second);
         }
         for (int a : accessors) {
-            if (a < 0 || std::size_t(a) >= model.accessors.size()) {
-                continue; // decodeDraco names it
+            if (a < 0 || std::size_t(a) >= model.accessors.size() || !counted.insert(a).second) {
+                continue; // decodeDraco names a bad index
             }
             const tinygltf::Accessor& acc = model.accessors[a];
             if (acc.count > MAX_ACCESSOR_ELEMENTS) {
@@ -65,7 +66,8 @@ void checkPlanComplete(const tinygltf::Model& model, const CompressionPlan& plan
                        const std::string& file) {
     std::size_t views = 0, primitives = 0;
     for (const tinygltf::BufferView& view : model.bufferViews) {
-        views += view.extensions.count(MESHOPT_NAMES[0]) || view.extensions.count(MESHOPT_NAMES[1]);
+        const auto& e = view.extensions;
+        views += e.count(MESHOPT_NAMES[0]) + e.count(MESHOPT_NAMES[1]) > 0;
     }
     for (const tinygltf::Mesh& mesh : model.meshes) {
         for (const tinygltf::Primitive& p : mesh.primitives) {
