@@ -1,9 +1,9 @@
 // A scene compressed by Debian's gltfpack (-cc: EXT_meshopt_compression over
 // KHR_mesh_quantization, 14-bit positions) renders like the original: with the same seed its
 // image is closer to the original's than an independent render (another seed) of the original
-// is, so quantization moves nothing beyond noise. A scene with one wall missing fails the same
-// check, so the check can fail. Skipped where gltfpack is not installed (scripts/setup.sh
-// --with-tests installs it).
+// is, so quantization moves nothing beyond noise; it compiles the original's shader variant. A
+// scene less two triangles fails the same check, so the check can fail. Skipped where gltfpack
+// is not installed (scripts/setup.sh --with-tests installs it).
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -12,6 +12,8 @@
 
 #include "gpu_test_util.h"
 #include "image/error_metrics.h"
+#include "render/scene_buffers.h"
+#include "render/shader_variant.h"
 #include "scene/gltf_loader.h"
 
 namespace wf::test {
@@ -44,6 +46,11 @@ TEST(CompressedScenes, GltfpackCornellBoxRendersLikeTheOriginal) {
     const Scene original = loadGltf(source);
     const Scene compressed = loadGltf(packed);
     ASSERT_EQ(compressed.triangles.size(), original.triangles.size());
+    // Decoded in the loader: the same shader variant and vertex buffers as the original.
+    EXPECT_EQ(chooseVariant(prepareScene(compressed), settings(1)).describe(),
+              chooseVariant(prepareScene(original), settings(1)).describe());
+    EXPECT_EQ(compressed.surface.normals.size(), original.surface.normals.size());
+    EXPECT_EQ(compressed.surface.uv0.size(), original.surface.uv0.size());
     const std::vector<float> reference = renderScene(original, settings(1)).rgb;
     const std::vector<float> independent = renderScene(original, settings(2)).rgb;
     const RenderResult result = renderScene(compressed, settings(1));
