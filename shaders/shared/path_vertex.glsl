@@ -114,10 +114,15 @@ void shadePathVertex(inout PathVertex v) {
     if (!shadeLightHit(v))
         return;
 
-    float t = uintBitsToFloat(v.hit.x);
     vec3 wo = -v.direction;
-    SurfaceHit surface = loadSurface(v.hit.w, uintBitsToFloat(v.hit.y), uintBitsToFloat(v.hit.z),
-                                     wo);
+    SurfaceHit surface = loadSurface(v.hit.x, v.hit.w, uintBitsToFloat(v.hit.y),
+                                     uintBitsToFloat(v.hit.z), wo);
+#if WF_HAS_INSTANCES
+    // x held the instance (intersectClosest); the direction is unit length.
+    float t = length(surface.p - v.origin);
+#else
+    float t = uintBitsToFloat(v.hit.x);
+#endif
 #if WF_AOV
     v.aovAlbedoDistance = vec4(surface.baseColor, t);
     v.aovNormal = surface.ns;

@@ -26,6 +26,7 @@ namespace wf::gpu_types {
 #define WF_BINDING_BVH_NODES 1
 #define WF_BINDING_MATERIALS 2
 #define WF_BINDING_EMITTERS 3
+#define WF_BINDING_INSTANCES 63 // two-level scenes: Instance texels (scene_types.h)
 // Per render
 #define WF_BINDING_PARAMS 4
 #define WF_BINDING_COUNTERS 5

@@ -54,6 +54,7 @@ const CommandSpec& benchSpec() {
                 quietOption(),
                 cameraOption(),
                 envOption(),
+                instancingOption(),
             },
         }),
         "Exit codes: 0 done, 2 bad usage or bad input, 1 internal or device failure.\n"};

@@ -80,6 +80,7 @@ const CommandSpec& renderSpec() {
                 quietOption(),
                 cameraOption(),
                 envOption(),
+                instancingOption(),
                 {"--verbose", "-v", "", "print the scene summary, shader variant and GPU memory"},
             },
         }),

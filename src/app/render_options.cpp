@@ -76,6 +76,12 @@ std::vector<OptionSpec> lensOptions() {
                                           "the scene's centre's)"}};
 }
 
+OptionSpec instancingOption() {
+    return {"--instancing", "", "MODE", "meshes that several nodes place: auto (kept once and "
+                                        "instanced where the copies would add 1M triangles or "
+                                        "more), on (always) or off (flattened); default auto"};
+}
+
 OptionSpec envOption() {
     return {"--env", "", "FILE.exr", "equirectangular environment map, linear RGB, +Y up "
                                      "(default: none; uniform white if nothing emits)"};
@@ -126,9 +132,7 @@ void applyLensFlags(const ParsedArgs& parsed, Scene& scene) {
         return;
     const bool empty = scene.triangles.empty() && scene.lights.empty();
     const float along =
-        empty ? 0.0f
-              : glm::dot(sceneBounds(scene.triangles, scene.lights).center - camera.position,
-                         camera.forward);
+        empty ? 0.0f : glm::dot(sceneBounds(scene).center - camera.position, camera.forward);
     camera.focusDistance = along > 0.0f ? along : 1.0f;
 }
 
@@ -137,7 +141,10 @@ void applyLensFlags(const ParsedArgs& parsed, Scene& scene) {
 Scene loadSceneWithFlags(const ParsedArgs& parsed, const std::string& path,
                          SceneSummary* summary) {
     std::vector<std::string> warnings; // printed once the scene and flags are accepted
-    Scene scene = loadGltf(path, &warnings);
+    GltfOptions options;
+    if (auto mode = parsed.value("--instancing"))
+        options.instancing = parseInstancing(*mode);
+    Scene scene = loadGltf(path, &warnings, options);
     if (auto name = parsed.value("--camera")) {
         scene.camera = selectCamera(scene, *name, path);
         scene.hasCamera = true;

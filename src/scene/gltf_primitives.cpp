@@ -119,7 +119,11 @@ std::vector<uint32_t> PrimitiveBuilder::corners(int mode, size_t vertexCount, in
 }
 
 void PrimitiveBuilder::add(const tinygltf::Primitive& primitive, const std::string& where,
-                           const glm::dmat4& world) {
+                           const glm::dmat4& world, uint32_t mesh) {
+    if (mesh != kWorldGeometry && !grouping_) {
+        meshOf_.assign(triangles_.size(), kWorldGeometry);
+        grouping_ = true;
+    }
     const int mode = primitive.mode;
     if (mode >= TINYGLTF_MODE_POINTS && mode <= TINYGLTF_MODE_LINE_STRIP) {
         ++skippedPrimitives_;
@@ -195,6 +199,8 @@ void PrimitiveBuilder::add(const tinygltf::Primitive& primitive, const std::stri
             continue;
         }
         triangles_.push_back(Triangle{p[0], material, p[1], WF_NO_EMITTER, p[2], 0u});
+        if (grouping_)
+            meshOf_.push_back(mesh);
         const glm::vec3 ng = glm::normalize(glm::cross(p[1] - p[0], p[2] - p[0]));
         glm::vec3 n[3] = {ng, ng, ng};
         for (int k = 0; k < 3 && normals; ++k) {
@@ -252,7 +258,80 @@ void PrimitiveBuilder::add(const tinygltf::Primitive& primitive, const std::stri
     }
 }
 
+void PrimitiveBuilder::place(uint32_t mesh, const glm::dmat4& world, const std::string& where) {
+    const double det = glm::determinant(glm::dmat3(world));
+    // A zero scale flattens the mesh to nothing: as flattened, every triangle would be dropped
+    // as degenerate; an inverse would be infinite.
+    if (!(std::abs(det) >= double(std::numeric_limits<float>::min()) &&
+          std::abs(det) <= double(std::numeric_limits<float>::max()))) {
+        ++flatteningPlacements_;
+        return;
+    }
+    if (placements_.size() >= kMaxInstances)
+        fail(file_, where + ": more than " + std::to_string(kMaxInstances) + " instances");
+    placements_.push_back({glm::mat4(world), mesh});
+}
+
+// A stable counting sort of the triangles (and every per-triangle array) by mesh, world
+// geometry first; placements of meshes left empty (all their triangles degenerate) go.
+void PrimitiveBuilder::groupByMesh(Scene& scene) {
+    const size_t n = triangles_.size();
+    meshOf_.resize(n, kWorldGeometry);
+    std::vector<size_t> start(size_t(meshCount_) + 2, 0);
+    for (uint32_t m : meshOf_)
+        ++start[m == kWorldGeometry ? 1 : size_t(m) + 2];
+    for (size_t g = 1; g < start.size(); ++g)
+        start[g] += start[g - 1];
+    std::vector<uint32_t> order(n);
+    {
+        std::vector<size_t> next(start.begin(), start.end() - 1);
+        for (size_t i = 0; i < n; ++i)
+            order[next[meshOf_[i] == kWorldGeometry ? 0 : size_t(meshOf_[i]) + 1]++] = uint32_t(i);
+    }
+    meshOf_ = {};
+    auto permute = [&order](auto& array) {
+        if (array.empty())
+            return;
+        std::remove_reference_t<decltype(array)> sorted(array.size());
+        for (size_t i = 0; i < order.size(); ++i)
+            sorted[i] = array[order[i]];
+        array.swap(sorted);
+    };
+    permute(triangles_);
+    permute(surface_.normals);
+    permute(surface_.tangents);
+    permute(surface_.uv0);
+    permute(surface_.uv1);
+    std::vector<uint32_t> kept(meshCount_, kWorldGeometry);
+    std::vector<Bounds> boxes;
+    for (uint32_t m = 0; m < meshCount_; ++m) {
+        const MeshRange range{uint32_t(start[m + 1]), uint32_t(start[m + 2] - start[m + 1])};
+        if (range.triangleCount == 0)
+            continue;
+        kept[m] = uint32_t(scene.meshes.size());
+        scene.meshes.push_back(range);
+        Bounds& box = boxes.emplace_back();
+        for (uint32_t i = range.firstTriangle; i < range.firstTriangle + range.triangleCount; ++i)
+            for (const glm::vec3& p : {triangles_[i].p0, triangles_[i].p1, triangles_[i].p2})
+                box.grow(p);
+    }
+    for (const MeshPlacement& placement : placements_) {
+        const uint32_t mesh = kept[placement.mesh];
+        if (mesh == kWorldGeometry)
+            continue;
+        const Bounds box = transformedBounds(boxes[mesh], placement.worldFromObject);
+        if (!finite(box.lo) || !finite(box.hi))
+            fail(file_, "an instanced mesh is not finite after its node's transforms");
+        scene.placements.push_back({placement.worldFromObject, mesh});
+    }
+    placements_ = {};
+}
+
 void PrimitiveBuilder::finish(Scene& scene) {
+    if (flatteningPlacements_ > 0) {
+        warn(file_, "skipped " + std::to_string(flatteningPlacements_) +
+                        " placements of instanced meshes whose transform has a zero scale");
+    }
     if (skippedPrimitives_ > 0) {
         warn(file_, "skipped " + std::to_string(skippedPrimitives_) +
                         " point or line primitives (only triangles are rendered)");
@@ -279,6 +358,8 @@ void PrimitiveBuilder::finish(Scene& scene) {
     keep(surface_.normals, smoothNormals_ || needTangents_);
     keep(surface_.uv0, needUv0_);
     keep(surface_.uv1, needUv1_);
+    if (meshCount_ > 0)
+        groupByMesh(scene);
     scene.triangles = std::move(triangles_);
     scene.surface.normals = std::move(surface_.normals);
     scene.surface.tangents = std::move(surface_.tangents);
