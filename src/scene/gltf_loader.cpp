@@ -18,6 +18,7 @@
 
 #include "errors.h"
 #include "scene/gltf_accessors.h"
+#include "scene/gltf_compression.h"
 #include "scene/gltf_file_access.h"
 #include "scene/gltf_images.h"
 #include "scene/gltf_instancing.h"
@@ -369,22 +370,24 @@ std::string lowerExtension(const std::string& path) {
 Scene loadModel(std::vector<unsigned char> bytes, const std::string& path,
                 const GltfOptions& options) {
     const std::string ext = lowerExtension(path);
-    const size_t size = bytes.size();
-    const bool binary = size >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+    const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
     if (ext == ".glb" && !binary) {
         throw InputError(path + ": not a binary glTF file (no 'glTF' magic)");
     }
-    size_t jsonStart = 0, jsonLength = size;
-    if (binary && size >= 20) {
+    size_t jsonStart = 0, jsonLength = bytes.size();
+    if (binary && bytes.size() >= 20) {
         uint32_t chunkLength = 0; // the JSON chunk's length; tinygltf checks it against size
         std::memcpy(&chunkLength, bytes.data() + 12, 4);
         jsonStart = 20;
-        jsonLength = std::min<size_t>(chunkLength, size - 20);
+        jsonLength = std::min<size_t>(chunkLength, bytes.size() - 20);
     }
     if (gltf::nestedTooDeep(bytes.data() + jsonStart, jsonLength)) {
         throw InputError(path + ": JSON nested more than " + std::to_string(gltf::MAX_JSON_DEPTH) +
                          " levels deep");
     }
+    // May rewrite the JSON into what tinygltf accepts (gltf_compression.h).
+    const gltf::CompressionPlan compression = gltf::planDecompression(bytes, binary, path);
+    const size_t size = bytes.size();
     // tinygltf 2.7.0's GLB chunk check forgets the 8-byte chunk header, so it may read up to
     // 8 bytes past the end; zero padding makes that harmless.
     bytes.resize(size + 16, 0);
@@ -421,6 +424,7 @@ Scene loadModel(std::vector<unsigned char> bytes, const std::string& path,
     if (!messages.empty()) {
         gltf::warn(path, messages);
     }
+    gltf::decompress(model, compression, path);
     return Converter(model, path, policy, options).run();
 }
 
