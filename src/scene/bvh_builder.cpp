@@ -512,6 +512,11 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 } // namespace
 
 BvhBuildStats buildBvh(std::vector<Triangle>& triangles, std::vector<BvhNode>& nodes,
+                       const BvhBuildOptions& opts) {
+    return buildBvh(triangles.data(), triangles.size(), nodes, opts);
+}
+
+BvhBuildStats buildBvh(Triangle* triangles, std::size_t count, std::vector<BvhNode>& nodes,
                        const BvhBuildOptions& optsIn) {
     auto start = std::chrono::steady_clock::now();
     BvhBuildOptions opts = optsIn;
@@ -520,11 +525,11 @@ BvhBuildStats buildBvh(std::vector<Triangle>& triangles, std::vector<BvhNode>& n
     opts.binCount = std::clamp(opts.binCount, 2u, Bins::MAX);
     assert(opts.maxDepth <= BVH_MAX_DEPTH && "traversal's stack would overflow");
     opts.maxDepth = std::min(opts.maxDepth, BVH_MAX_DEPTH);
-    assert(triangles.size() < WF_NO_TRIANGLE);
+    assert(count < WF_NO_TRIANGLE);
 
     BvhBuildStats stats;
     nodes.clear();
-    auto n = std::uint32_t(triangles.size());
+    auto n = std::uint32_t(count);
     if (n == 0) {
         // Inverted box and no triangles: pairBvhNodes gives it no children.
         nodes.push_back(BvhNode{vec3(FLT_MAX), 0, vec3(-FLT_MAX), 0});
@@ -556,7 +561,7 @@ BvhBuildStats buildBvh(std::vector<Triangle>& triangles, std::vector<BvhNode>& n
     // array, whose pages are in memory already.
     ScratchArray<Triangle> original(n);
     parallelChunks(n, threads, [&](std::uint32_t, std::uint32_t begin, std::uint32_t end) {
-        std::copy(triangles.begin() + begin, triangles.begin() + end, original.data() + begin);
+        std::copy(triangles + begin, triangles + end, original.data() + begin);
     });
     parallelChunks(n, threads, [&](std::uint32_t, std::uint32_t begin, std::uint32_t end) {
         for (std::uint32_t i = begin; i < end; ++i)

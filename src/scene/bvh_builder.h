@@ -41,6 +41,9 @@ struct BvhBuildStats {
 // like any other; vertex coordinates must be finite.
 BvhBuildStats buildBvh(std::vector<Triangle>& triangles, std::vector<BvhNode>& nodes,
                        const BvhBuildOptions& opts = {});
+// The same over `count` triangles in place (a range of a larger array).
+BvhBuildStats buildBvh(Triangle* triangles, std::size_t count, std::vector<BvhNode>& nodes,
+                       const BvhBuildOptions& opts = {});
 
 // The layout traversal walks (BvhPair in scene_types.h): one entry per interior node of
 // `nodes` (from buildBvh), or a single entry for a leaf root or an empty scene.

@@ -19,11 +19,18 @@ struct BuiltTree {
 BuiltTree buildRange(std::vector<Triangle>& triangles, uint32_t first, uint32_t count, bool tuned,
                      const std::vector<Material>& materials, const Camera& camera,
                      BvhBuildStats& total) {
-    std::vector<Triangle> part(triangles.begin() + first, triangles.begin() + first + count);
     std::vector<BvhNode> nodes;
-    const BvhBuildStats stats =
-        tuned ? buildTunedBvh(part, nodes, materials, camera) : buildBvh(part, nodes);
-    std::copy(part.begin(), part.end(), triangles.begin() + first);
+    BvhBuildStats stats;
+    if (tuned && count <= kMaxTunedTriangles) {
+        // Tuning builds candidate trees from copies; small enough to copy this range too.
+        std::vector<Triangle> part(triangles.begin() + first, triangles.begin() + first + count);
+        stats = buildTunedBvh(part, nodes, materials, camera);
+        std::copy(part.begin(), part.end(), triangles.begin() + first);
+    } else {
+        // In place: a copy of millions of triangles would raise the peak of host memory.
+        stats = buildBvh(triangles.data() + first, count, nodes);
+        stats.traversalCost = kTunedTraversalCosts[0];
+    }
     BuiltTree tree;
     tree.pairs = pairBvhNodes(nodes);
     tree.box.lo = nodes[0].lo;
