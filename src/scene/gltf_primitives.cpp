@@ -64,6 +64,30 @@ bool isDegenerate(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
 
 bool finite(const glm::vec3& v) { return std::isfinite(v.x + v.y + v.z); }
 
+// Position i takes element order[i], in place, one cycle of the permutation at a time: a
+// permuted copy of millions of triangles would be the peak of host memory. `order` is taken
+// by value, as it marks the positions placed. Empty arrays stay empty.
+template <typename T> void permuteInPlace(std::vector<T>& array, std::vector<uint32_t> order) {
+    if (array.empty())
+        return;
+    for (size_t first = 0; first < order.size(); ++first) {
+        if (order[first] == first)
+            continue;
+        const T carried = array[first];
+        size_t i = first;
+        for (;;) {
+            const size_t from = order[i];
+            order[i] = uint32_t(i);
+            if (from == first) {
+                array[i] = carried;
+                break;
+            }
+            array[i] = array[from];
+            i = from;
+        }
+    }
+}
+
 // Any unit vector orthogonal to n (Duff et al. 2017).
 glm::vec3 orthogonal(const glm::vec3& n) {
     const float s = std::copysign(1.0f, n.z);
@@ -313,19 +337,11 @@ void PrimitiveBuilder::groupByMesh(Scene& scene) {
             order[next[meshOf_[i] == kWorldGeometry ? 0 : size_t(meshOf_[i]) + 1]++] = uint32_t(i);
     }
     meshOf_ = {};
-    auto permute = [&order](auto& array) {
-        if (array.empty())
-            return;
-        std::remove_reference_t<decltype(array)> sorted(array.size());
-        for (size_t i = 0; i < order.size(); ++i)
-            sorted[i] = array[order[i]];
-        array.swap(sorted);
-    };
-    permute(triangles_);
-    permute(surface_.normals);
-    permute(surface_.tangents);
-    permute(surface_.uv0);
-    permute(surface_.uv1);
+    permuteInPlace(triangles_, order);
+    permuteInPlace(surface_.normals, order);
+    permuteInPlace(surface_.tangents, order);
+    permuteInPlace(surface_.uv0, order);
+    permuteInPlace(surface_.uv1, order);
     std::vector<uint32_t> kept(meshCount_, kWorldGeometry);
     std::vector<Bounds> boxes;
     for (uint32_t m = 0; m < meshCount_; ++m) {
