@@ -27,7 +27,6 @@
 #define WF_BSDF_LAYERS_H
 
 #include "bsdf.h"
-#include "sheen.h"
 
 #ifdef __cplusplus
 #ifndef WF_HAS_CLEARCOAT
@@ -36,6 +35,12 @@
 #ifndef WF_HAS_SHEEN
 #define WF_HAS_SHEEN 1
 #endif
+#endif
+#if WF_HAS_SHEEN
+#include "sheen.h"
+#endif
+
+#ifdef __cplusplus
 namespace wf::gpu_types {
 using namespace glm;
 #endif
@@ -83,10 +88,12 @@ WF_INLINE float coatAlbedoBound(LayerLobes w, float mu) {
            (1.0f - WF_COAT_F0) * w.coatKappa * pow(clamp(1.0f - mu, 0.0f, 1.0f), w.coatPower);
 }
 
+#if WF_HAS_SHEEN
 // min(1, S(mu)): the albedo of the normalised sheen lobe is at most this.
 WF_INLINE float sheenAlbedoCapped(LayerLobes w, float mu) {
     return min(sheenAlbedoBound(w.sheenRoughness, mu), 1.0f);
 }
+#endif
 
 // Wc: what the coat leaves to the layers beneath, for the pair of cosines.
 WF_INLINE float coatScale(LayerLobes w, float muO, float muI) {
@@ -98,10 +105,12 @@ WF_INLINE float coatScale(LayerLobes w, float muO, float muI) {
 
 // Ws: what the sheen leaves to the base.
 WF_INLINE float sheenScale(LayerLobes w, float muO, float muI) {
-    if (w.sheen <= 0.0f) {
-        return 1.0f;
+#if WF_HAS_SHEEN
+    if (w.sheen > 0.0f) {
+        return 1.0f - w.sheen * max(sheenAlbedoCapped(w, muO), sheenAlbedoCapped(w, muI));
     }
-    return 1.0f - w.sheen * max(sheenAlbedoCapped(w, muO), sheenAlbedoCapped(w, muI));
+#endif
+    return 1.0f;
 }
 
 WF_INLINE LayerLobes layerLobes(BsdfParams m, BsdfLayers layers, float muO) {
@@ -115,9 +124,14 @@ WF_INLINE LayerLobes layerLobes(BsdfParams m, BsdfLayers layers, float muO) {
     w.coatPower = 2.84f + 5.15f * d * d;
     w.sheen = maxComponent(layers.sheenColor);
     w.sheenRoughness = layers.sheenRoughness;
-    w.sheenAlpha = sheenAlpha(layers.sheenRoughness);
     float eCoat = w.coat > 0.0f ? w.coat * coatAlbedoBound(w, muO) : 0.0f;
-    float eSheen = w.sheen > 0.0f ? (1.0f - eCoat) * w.sheen * sheenAlbedoCapped(w, muO) : 0.0f;
+    float eSheen = 0.0f;
+#if WF_HAS_SHEEN
+    w.sheenAlpha = sheenAlpha(layers.sheenRoughness);
+    eSheen = w.sheen > 0.0f ? (1.0f - eCoat) * w.sheen * sheenAlbedoCapped(w, muO) : 0.0f;
+#else
+    w.sheenAlpha = 1.0f;
+#endif
     // The base's share, by an albedo estimate that never starves a base that scatters at all.
     bool baseScatters = m.metallic > 0.0f || m.specular > 0.0f || maxComponent(m.baseColor) > 0.0f;
     float eBase = baseScatters ? (1.0f - eCoat - eSheen) * max(averageComponent(m.baseColor), 0.2f)
@@ -141,11 +155,13 @@ WF_INLINE float coatReflectionPdf(LayerLobes w, vec3 wo, vec3 wi) {
     return ggxD(h, w.coatAlpha) * 0.5f / (wo.z + ggxStretchedLength(wo, w.coatAlpha));
 }
 
+#if WF_HAS_SHEEN
 WF_INLINE vec3 sheenReflection(BsdfLayers layers, LayerLobes w, vec3 wo, vec3 wi) {
     float norm = max(1.0f, max(sheenAlbedoBound(w.sheenRoughness, wo.z),
                                sheenAlbedoBound(w.sheenRoughness, wi.z)));
     return layers.sheenColor * (sheenLobe(w.sheenAlpha, wo, wi) / norm);
 }
+#endif
 
 // f and pdf of the layers' own lobes, mirrored frame (woM.z > 0, wiM.z > 0); `scale` is Wc.
 WF_INLINE vec3 layersEvalMirrored(BsdfLayers layers, LayerLobes w, vec3 woM, vec3 wiM,
