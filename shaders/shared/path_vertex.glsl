@@ -146,7 +146,7 @@ void shadePathVertex(inout PathVertex v) {
     // has crossed that mesh's inside over t (directions are unit). Exact for closed meshes that
     // hold no other surface; see README's Materials section for the rule's limits.
     if (!surface.frontFace && surface.transmission > 0.0)
-        v.beta *= exp(-surface.attenuation * t);
+        v.beta *= exp(-surface.absorption * t);
 #endif
 #if WF_AOV
     v.aovAlbedoDistance = vec4(surface.baseColor, t);

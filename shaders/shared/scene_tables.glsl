@@ -196,8 +196,19 @@ BvhPair bvhPairAt(uint index) {
                    uintBitsToFloat(c.xyz), c.w, uintBitsToFloat(d.xyz), d.w);
 }
 
+#if WF_HAS_SHEEN
+#include "sheen_albedo_table.h"
+// The sheen albedo table (sheen.h) rides at the front of the material table, four nodes a texel.
+#define WF_MATERIAL_TABLE_START WF_SHEEN_TABLE_TEXELS
+float sheenAlbedoNode(int k) {
+    return uintBitsToFloat(wfTexel(materialTexels, uint(k) >> 2)[k & 3]);
+}
+#else
+#define WF_MATERIAL_TABLE_START 0u
+#endif
+
 Material materialAt(uint index) {
-    uint base = index * WF_MATERIAL_TEXELS;
+    uint base = WF_MATERIAL_TABLE_START + index * WF_MATERIAL_TEXELS;
     uvec4 t0 = wfTexel(materialTexels, base);
     uvec4 t1 = wfTexel(materialTexels, base + 1u);
     uvec4 t2 = wfTexel(materialTexels, base + 2u);

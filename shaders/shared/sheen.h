@@ -63,6 +63,10 @@ WF_INLINE float sheenLobe(float alpha, vec3 wo, vec3 wi) {
 #ifndef WF_SHEEN_NO_TABLE
 #include "sheen_albedo_table.h"
 
+#ifdef __cplusplus
+WF_INLINE float sheenAlbedoNode(int k) { return WF_SHEEN_ALBEDO[k]; }
+#endif // GLSL: scene_tables.glsl reads the nodes from the material table
+
 // An upper bound of the directional albedo of sheenLobe (colour 1) at cosine mu: the table's
 // bilinear interpolation over (sqrt(mu), roughness), whose every node holds the largest albedo
 // of the cells around it (scripts/sheen_albedo_table.cpp), so the interpolant never dips under
@@ -77,8 +81,8 @@ WF_INLINE float sheenAlbedoBound(float roughness, float mu) {
     float fy = y - float(j);
     int row0 = j * WF_SHEEN_TABLE_MU + i;
     int row1 = row0 + WF_SHEEN_TABLE_MU;
-    float low = mix(WF_SHEEN_ALBEDO[row0], WF_SHEEN_ALBEDO[row0 + 1], fx);
-    float high = mix(WF_SHEEN_ALBEDO[row1], WF_SHEEN_ALBEDO[row1 + 1], fx);
+    float low = mix(sheenAlbedoNode(row0), sheenAlbedoNode(row0 + 1), fx);
+    float high = mix(sheenAlbedoNode(row1), sheenAlbedoNode(row1 + 1), fx);
     return mix(low, high, fy);
 }
 #endif

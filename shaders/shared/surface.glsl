@@ -36,7 +36,7 @@ struct SurfaceHit {
     float sheenRoughness;
 #endif
 #if WF_HAS_VOLUME
-    vec3 attenuation; // sigma_a behind the surface; zero for thin-walled materials
+    vec3 absorption; // sigma_a behind the surface (KHR_materials_volume); zero if thin-walled
 #endif
 };
 
@@ -142,7 +142,7 @@ SurfaceHit loadSurface(uint triangleIndex, float b1, float b2, vec3 wo) {
     s.sheenRoughness = material.sheenRoughness;
 #endif
 #if WF_HAS_VOLUME
-    s.attenuation = material.thickness > 0.0 ? material.attenuation : vec3(0.0);
+    s.absorption = material.thickness > 0.0 ? material.attenuation : vec3(0.0);
 #endif
     s.baseColor = base.rgb;
     s.alpha = base.a;
