@@ -116,7 +116,8 @@ SceneBuffers::SceneBuffers(const Context& context, const PreparedScene& scene,
     : defines_(variant.defines()),
       trianglePages_(uploadPages(context, "triangles", scene.triangles, variant.trianglePages)),
       bvhPages_(uploadPages(context, "bvh nodes", scene.bvhPairs, variant.bvhPages)),
-      materials_(uploadTable(context, "materials", materialTexels(scene.materials, variant.sheen))) {
+      materials_(
+          uploadTable(context, "materials", materialTexels(scene.materials, variant.sheen))) {
     if (variant.nextEventEstimation)
         emitters_ = uploadTable(context, "emitters",
                                 selectionTable(scene.lights, scene.lightTree,

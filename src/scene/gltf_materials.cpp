@@ -165,7 +165,8 @@ void MaterialConverter::ignoreTextures(const tinygltf::Value& extension,
                                        const std::string& name) const {
     for (const char* key : keys) {
         if (extension.IsObject() && extension.Has(key)) {
-            warn(file_, name + ": " + key + " is not supported and is ignored (its factor is used)");
+            warn(file_, name + ": " + key + " is not supported and is ignored (its factor is "
+                                            "used)");
         }
     }
 }
@@ -178,7 +179,8 @@ void MaterialConverter::convertLayers(const tinygltf::Material& m, const std::st
     out.clearcoatRoughness = float(number(coat, "clearcoatRoughnessFactor", 0.0));
     checkRange(name, "clearcoatFactor", out.clearcoat, 0.0, 1.0);
     checkRange(name, "clearcoatRoughnessFactor", out.clearcoatRoughness, 0.0, 1.0);
-    ignoreTextures(coat, {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"},
+    ignoreTextures(coat,
+                   {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"},
                    name);
 
     const tinygltf::Value& sheen = extension(m.extensions, "KHR_materials_sheen");

@@ -306,7 +306,8 @@ TEST(BsdfLayers, SheenAlbedoBoundHoldsAboveQuadrature) {
 TEST(BsdfLayers, NeverNanOrInf) {
     std::mt19937 rng(41u);
     for (int i = 0; i < 20000; ++i) {
-        BsdfParams m = base(vec3(uniform01(rng)), uniform01(rng), i % 5 == 0 ? 0.0f : uniform01(rng),
+        BsdfParams m = base(vec3(uniform01(rng)), uniform01(rng),
+                            i % 5 == 0 ? 0.0f : uniform01(rng),
                             uniform01(rng), i % 2 ? 1.0f : 0.0f);
         BsdfLayers l = layers(uniform01(rng), i % 7 == 0 ? 0.0f : uniform01(rng),
                               vec3(uniform01(rng)), i % 3 == 0 ? 0.0f : uniform01(rng));
