@@ -2,10 +2,16 @@
 """Writes a scene of about N triangles for the scaling benchmark: the Cornell box room and light
 (scenes/make_cornell_box.py) filled with a grid of UV spheres in several materials (Lambert,
 rough metal, glossy plastic, glass), so that both the BVH and the shading see a real load.
-Spheres of one material share one mesh, instanced by nodes, so even 10^6 triangles make a
+Spheres of one material share one mesh, placed by many nodes, so even 10^6 triangles make a
 file of a few kilobytes; generate scenes at run time rather than committing them.
 
-    python3 bench/make_scaling_scene.py OUT.gltf --triangles 100000 [--materials 4]
+--unique gives every sphere a mesh of its own (a file as large as its triangles), so that the
+triangles stay unique whatever `--instancing` says. --instanced-triangles N adds a floor of
+small "pebbles", one mesh of about 10^5 triangles placed N / 10^5 times: the renderer keeps
+it once and instances it (a two-level BVH).
+
+    python3 bench/make_scaling_scene.py OUT.gltf --triangles 100000 [--materials 4] [--unique]
+        [--instanced-triangles 1000000000]
 """
 import argparse
 import math
@@ -63,7 +69,26 @@ def sphere_primitive(g, points, tris, material):
     return {"attributes": {"POSITION": pos}, "indices": idx, "material": material, "mode": 4}
 
 
-def build(triangles, material_count):
+PEBBLE_RINGS = 160  # 4 r (r - 1) = 101,760 triangles a pebble
+
+
+def add_pebbles(g, instanced_triangles, material):
+    """A square grid of small spheres on the floor, one mesh placed by every node."""
+    points, tris = uv_sphere(PEBBLE_RINGS)
+    per_pebble = len(tris)
+    count = max(1, round(instanced_triangles / per_pebble))
+    mesh = g.mesh("pebble", [sphere_primitive(g, points, tris, material)])
+    side = math.ceil(math.sqrt(count))
+    spacing = (cornell.S - 0.2) / side
+    radius = 0.4 * spacing
+    for p in range(count):
+        i, k = p % side, p // side
+        g.node(name="pebble %d" % p, mesh=mesh, scale=[radius] * 3,
+               translation=[0.1 + (i + 0.5) * spacing, radius, 0.1 + (k + 0.5) * spacing])
+    return count * per_pebble
+
+
+def build(triangles, material_count, unique=False, instanced_triangles=0):
     g = cornell.GltfWriter()
     g.doc["asset"]["generator"] = "bench/make_scaling_scene.py"
     g.doc["extensionsUsed"].append("KHR_materials_transmission")
@@ -96,7 +121,8 @@ def build(triangles, material_count):
             mat["extensions"] = ext
         g.doc["materials"].append(mat)
         index = len(g.doc["materials"]) - 1
-        meshes.append(g.mesh("sphere " + name, [sphere_primitive(g, points, tris, index)]))
+        meshes.append(index if unique else
+                      g.mesh("sphere " + name, [sphere_primitive(g, points, tris, index)]))
 
     # A cubic grid filling the box below the light, radius under half the spacing.
     n = math.ceil(count ** (1 / 3))
@@ -111,14 +137,20 @@ def build(triangles, material_count):
                     break
                 centre = [lo + (i + 0.5) * spacing, lo + (j + 0.5) * spacing,
                           lo + (k + 0.5) * spacing]
-                g.node(name="sphere %d" % placed, mesh=meshes[placed % material_count],
-                       translation=centre, scale=[radius] * 3)
+                mesh = meshes[placed % material_count]
+                if unique:  # its own copy of the sphere, under the material's index
+                    mesh = g.mesh("sphere %d" % placed,
+                                  [sphere_primitive(g, points, tris, mesh)])
+                g.node(name="sphere %d" % placed, mesh=mesh, translation=centre,
+                       scale=[radius] * 3)
                 placed += 1
     g.doc["cameras"].append({"type": "perspective", "name": "camera", "perspective": {
         "yfov": 2 * math.atan(12.5 / 35.0), "aspectRatio": 1.0, "znear": 0.1, "zfar": 100.0}})
     g.node(name="camera", camera=0, translation=[2.775, 2.73, -8.0],
            rotation=cornell.y_rotation(180.0))
-    return g, fixed + count * per_sphere
+    pebbles = add_pebbles(g, instanced_triangles, len(g.doc["materials"]) - material_count) \
+        if instanced_triangles > 0 else 0
+    return g, fixed + count * per_sphere, pebbles
 
 
 def main():
@@ -126,10 +158,16 @@ def main():
     parser.add_argument("output")
     parser.add_argument("--triangles", type=int, default=100000, help="about this many")
     parser.add_argument("--materials", type=int, default=4, help="sphere materials, 1 to 4")
+    parser.add_argument("--unique", action="store_true",
+                        help="a mesh per sphere: every triangle unique")
+    parser.add_argument("--instanced-triangles", type=int, default=0,
+                        help="add a floor of one pebble mesh placed to about this many")
     args = parser.parse_args()
-    g, total = build(args.triangles, max(1, min(args.materials, len(MATERIALS))))
+    g, total, pebbles = build(args.triangles, max(1, min(args.materials, len(MATERIALS))),
+                              args.unique, args.instanced_triangles)
     g.write(args.output)
-    print("%s: %d triangles" % (args.output, total))
+    print("%s: %d triangles%s" % (args.output, total, " + %d instanced pebble triangles"
+                                  % pebbles if pebbles else ""))
 
 
 if __name__ == "__main__":

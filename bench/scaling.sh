@@ -1,15 +1,18 @@
 #!/usr/bin/env bash
 # The scaling tables of the README: paths/s against resolution (the Cornell box, 256^2 to
-# 1920x1080) and against scene size (bench/make_scaling_scene.py, 10^2 to 10^6 triangles, four
-# materials, wavefront and megakernel in one run), one `wavefront bench` per row. Raw JSON goes
-# to bench/results/<label>_*.json; the tables go to stdout as Markdown.
+# 1920x1080), against scene size (bench/make_scaling_scene.py, 10^2 to 10^6 triangles, four
+# materials, wavefront and megakernel in one run), and production sizes (10^7 unique
+# triangles; 10^6 and 5 x 10^6 unique beside 10^9 instanced), one `wavefront bench` per row.
+# Raw JSON goes to bench/results/<label>_*.json; the tables go to stdout as Markdown.
 #
-#   bash bench/scaling.sh [path/to/wavefront] [label]     (label default: lavapipe)
+#   bash bench/scaling.sh [path/to/wavefront] [label] [--no-large]   (label default: lavapipe)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(dirname "$here")
 wavefront=${1:-$root/build/wavefront}
 label=${2:-lavapipe}
+large=1
+[ "${3:-}" = "--no-large" ] && large=0
 results=$here/results
 scenes=$(mktemp -d)
 trap 'rm -rf "$scenes"' EXIT
@@ -28,6 +31,19 @@ for tris in 100 1000 10000 100000 1000000; do
     "$wavefront" bench "$scenes/scene_$tris.gltf" --width 256 --frames 4 "${common[@]}" \
         --compare-megakernel --json "$results/${label}_scene_${tris}.json" > /dev/null
 done
+
+if [ "$large" = 1 ]; then
+    # unique triangles, instanced triangles: each scene written, benched and deleted in turn
+    for spec in 10000000:0 1000000:1000000000 5000000:1000000000; do
+        unique=${spec%:*}; instanced=${spec#*:}
+        file=$scenes/large_${unique}_${instanced}.gltf
+        python3 "$here/make_scaling_scene.py" "$file" --triangles "$unique" --unique \
+            --instanced-triangles "$instanced" > /dev/null
+        "$wavefront" bench "$file" --width 256 --frames 2 "${common[@]}" \
+            --json "$results/${label}_large_${unique}_${instanced}.json" > /dev/null
+        rm -f "$file"
+    done
+fi
 
 python3 - "$results" "$label" <<'PY'
 import glob, json, os, sys
@@ -55,6 +71,20 @@ for d in load(label + "_scene_*.json"):
         d["bvh"]["buildSeconds"] * 1e3,
         w["pathsPerSecond"] / 1e6, m["pathsPerSecond"] / 1e6, d["wavefrontOverMegakernel"],
         w["raysPerSecond"]["total"] / 1e6))
+large = load(label + "_large_*.json")
+if large:
+    print()
+    print("| unique triangles | as placed | instances | build s | build M triangles/s | "
+          "paths/s | GPU MiB | peak host MiB | host bytes per unique triangle |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    for d in large:
+        w = d["runs"]["wavefront"]
+        host = d.get("peakHostMemoryBytes", 0)
+        print("| %d | %d | %d | %.2f | %.2f | %.3f M | %.0f | %.0f | %.0f |" % (
+            d["triangles"], d.get("instancedTriangles", d["triangles"]), d.get("instances", 0),
+            d["bvh"]["buildSeconds"], d["triangles"] / d["bvh"]["buildSeconds"] / 1e6,
+            w["pathsPerSecond"] / 1e6, w["memoryTotalBytes"] / 2**20, host / 2**20,
+            host / d["triangles"]))
 print()
 print("device: %s" % rows[0]["device"] if rows else "")
 PY

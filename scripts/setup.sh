@@ -9,6 +9,7 @@ packages=(
     build-essential cmake ninja-build pkg-config
     libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers
     glslang-dev glslang-tools libglm-dev libtinygltf-dev libopenexr-dev libstb-dev
+    libdraco-dev libmeshoptimizer-dev nlohmann-json3-dev # compressed glTF meshes
     libglfw3-dev libimgui-dev # wavefront view (WF_BUILD_VIEWER)
     python3-matplotlib # wavefront converge's charts (scripts/plot_convergence.py)
 )
@@ -16,6 +17,7 @@ tests=OFF
 if [ "${1:-}" = "--with-tests" ]; then
     packages+=(googletest libgtest-dev xvfb xauth xdotool) # the viewer test: display, input
     packages+=(clang libclang-rt-14-dev) # the loader's libFuzzer and ASan+UBSan build (fuzz/)
+    packages+=(gltfpack) # a meshopt-compressed scene to render (tests/gpu/test_compressed_scenes)
     tests=ON
 fi
 

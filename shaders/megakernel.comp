@@ -48,6 +48,9 @@ void main() {
         v.previousNormal = 0.0;
         v.beta = vec3(1.0);
         v.etaScale = 1.0;
+#if WF_RAY_CONES
+        v.cone = cameraCone();
+#endif
         vec3 total = vec3(0.0);
         // Same order of additions as shade then shadow, so sums round alike.
         for (uint depth = 0u; depth < params.maxDepth; ++depth) {

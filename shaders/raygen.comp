@@ -1,7 +1,8 @@
 #version 460
 // raygen: one camera path per (pixel, sample) of the wave.
 // In: params (camera, image size), push constants (the wave's pixels and samples).
-// Out: rayOrigin/rayDirection/throughput/radiance of every path; rayQueue[0] = path index.
+// Out: rayOrigin/rayDirection/throughput/radiance (and with WF_RAY_CONES rayCone) of every path;
+// rayQueue[0] = path index.
 // Path p is sample sampleBase + p / wavePixels of pixel pixelBase + p % wavePixels.
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = WF_WORKGROUP_SIZE) in;
@@ -10,6 +11,7 @@ layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "sampling.h"
 #include "wave_paths.glsl"
 #include "camera_ray.glsl"
+#include "ray_cones.glsl"
 
 layout(push_constant) uniform Push { PassConstants pass; };
 
@@ -24,4 +26,7 @@ void main() {
     throughput[path] = wfPack(vec4(1.0));
     radiance[path] = wfPack(vec4(0.0));
     rayQueues[path] = path;
+#if WF_RAY_CONES
+    rayCone[path] = cameraCone();
+#endif
 }

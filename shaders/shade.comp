@@ -5,7 +5,7 @@
 // Out: radiance += emission the ray found; appends the path to the shadow queue with a
 // next-event connection (shadowOrigin/Direction/Radiance at its queue slot) and to
 // rayQueue[(depth + 1) & 1] with its BSDF-sampled continuation (rayOrigin/Direction,
-// throughput, by path).
+// throughput and with WF_RAY_CONES rayCone, by path).
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "bindings.glsl"
@@ -48,6 +48,9 @@ void main() {
         vec4 pathThroughput = throughputAt(path);
         v.beta = pathThroughput.rgb;
         v.etaScale = pathThroughput.w;
+#if WF_RAY_CONES
+        v.cone = rayConeAt(path);
+#endif
 #if WF_AOV
         v.aovAlbedoDistance = vec4(0.0);
         v.aovNormal = vec3(0.0);
@@ -67,6 +70,9 @@ void main() {
             rayOrigin[path] = wfPack(vec4(v.origin, v.previousPdf));
             rayDirection[path] = wfPack(vec4(v.direction, v.previousNormal));
             throughput[path] = wfPack(vec4(v.beta, v.etaScale));
+#if WF_RAY_CONES
+            rayCone[path] = v.cone;
+#endif
         }
     }
 

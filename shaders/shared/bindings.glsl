@@ -61,6 +61,11 @@ layout(std430, binding = WF_BINDING_ACTIVE_PIXELS) readonly buffer ActivePixelBu
     uint activePixels[]; // image pixel indices, in the order waves cover them
 };
 #endif
+#if WF_RAY_CONES
+layout(std430, binding = WF_BINDING_RAY_CONES) buffer RayConeBuffer {
+    vec2 rayCone[]; // x: the cone's width at the ray's origin, y: its spread angle (radians)
+};
+#endif
 layout(std430, binding = WF_BINDING_RADIANCE) buffer RadianceBuffer {
     WfEntry radiance[];
 };

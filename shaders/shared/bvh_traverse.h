@@ -11,6 +11,7 @@
 // GLSL includers define, before including:
 //   WF_BVH_PAIR(i)      an expression yielding BvhPair i (e.g. a texel-buffer fetch)
 //   WF_BVH_TRIANGLE(i)  an expression yielding Triangle i
+//   WF_BVH_INSTANCE(i)  with WF_HAS_INSTANCES, an expression yielding Instance i
 //   WF_BVH_STACK_SIZE   optional, default 64; the builder keeps depth <= WF_BVH_STACK_SIZE - 1
 //   WF_BVH_REGISTER_STACK  optional, default 0; 8 or 16 where the tree never holds more
 //                       entries than that on its stack (bvhStackNeed): any-hit traversal then
@@ -122,6 +123,7 @@ WF_INLINE void bvhRegisterNext(WF_INOUT(BvhRegisterStack) s, WF_INOUT(uint) size
 struct BvhTraversal {
     const BvhPair* pairs = nullptr;
     const Triangle* triangles = nullptr;
+    const Instance* instances = nullptr; // two-level scenes only
     uint deepestStack = 0u; // the most entries the stack held, for the tests of bvhStackNeed
     // When set, each step appends how many triangles it tested (bvh_tuning.cpp models SIMD
     // batches from these).
@@ -129,6 +131,7 @@ struct BvhTraversal {
 #ifndef WF_BVH_PAIR
 #define WF_BVH_PAIR(i) pairs[i]
 #define WF_BVH_TRIANGLE(i) triangles[i]
+#define WF_BVH_INSTANCE(i) instances[i]
 #define WF_BVH_DEFAULT_ACCESSORS
 #endif
 #endif
@@ -180,9 +183,10 @@ WF_INLINE uint bvhStepTriangle(BvhStep step, uint k) {
                               : (step.farChild >> WF_BVH_COUNT_BITS) + (k - step.nearCount);
 }
 
-// Closest hit with t in (0, tMax). Ordered: the nearer child first; a farther interior child is
-// pushed with its entry distance and dropped on pop once a closer hit is known.
-WF_INLINE bool traceClosest(vec3 o, vec3 d, float tMax, WF_OUT(HitRecord) hit) {
+// Closest hit with t in (0, tMax) in the tree whose root children pair entry `root` holds.
+// Ordered: the nearer child first; a farther interior child is pushed with its entry distance
+// and dropped on pop once a closer hit is known.
+WF_INLINE bool traceClosestFrom(uint root, vec3 o, vec3 d, float tMax, WF_OUT(HitRecord) hit) {
     hit.t = tMax;
     hit.b1 = 0.0f;
     hit.b2 = 0.0f;
@@ -195,7 +199,7 @@ WF_INLINE bool traceClosest(vec3 o, vec3 d, float tMax, WF_OUT(HitRecord) hit) {
     float stackEntry[WF_BVH_STACK_SIZE];
 #endif
     uint stackSize = 0u;
-    uint current = 0u; // pair entry 0: the root's children
+    uint current = root;
     bool haveCurrent = true;
     while (haveCurrent) {
         BvhStep step = bvhStep(WF_BVH_PAIR(current), o, invDir, hit.t);
@@ -259,7 +263,7 @@ WF_INLINE bool traceClosest(vec3 o, vec3 d, float tMax, WF_OUT(HitRecord) hit) {
 }
 
 // Any hit with t in (0, tMax), for shadow rays: order does not matter, the first hit ends it.
-WF_INLINE bool traceAny(vec3 o, vec3 d, float tMax) {
+WF_INLINE bool traceAnyFrom(uint root, vec3 o, vec3 d, float tMax) {
     vec3 invDir = 1.0f / d;
 #if WF_BVH_REGISTER_STACK
     BvhRegisterStack stack = bvhRegisterStack();
@@ -267,7 +271,7 @@ WF_INLINE bool traceAny(vec3 o, vec3 d, float tMax) {
     uint stackPair[WF_BVH_STACK_SIZE];
 #endif
     uint stackSize = 0u;
-    uint current = 0u;
+    uint current = root;
     bool haveCurrent = true;
     while (haveCurrent) {
         BvhStep step = bvhStep(WF_BVH_PAIR(current), o, invDir, tMax);
@@ -317,12 +321,114 @@ WF_INLINE bool traceAny(vec3 o, vec3 d, float tMax) {
     return false;
 }
 
+// One-level scenes: the tree rooted at pair entry 0.
+WF_INLINE bool traceClosest(vec3 o, vec3 d, float tMax, WF_OUT(HitRecord) hit) {
+    return traceClosestFrom(0u, o, d, tMax, hit);
+}
+
+WF_INLINE bool traceAny(vec3 o, vec3 d, float tMax) { return traceAnyFrom(0u, o, d, tMax); }
+
+#if defined(__cplusplus) || WF_HAS_INSTANCES
+// Two-level scenes: pair entry 0 roots the top-level tree, whose leaves hold one instance each
+// (WF_BVH_INSTANCE(i), in leaf order), and each instance's mesh tree starts at its blasRoot.
+// The ray meets a mesh in the mesh's own space. Its direction is mapped but not renormalised,
+// so t means the same point in both spaces and one tMax serves every level. The top-level
+// stack is a plain array: its trees are shallow and its steps few.
+WF_INLINE void instanceRay(Instance instance, vec3 o, vec3 d, WF_OUT(vec3) objectOrigin,
+                           WF_OUT(vec3) objectDirection) {
+    objectOrigin = affinePoint(instance.objectFromWorld0, instance.objectFromWorld1,
+                               instance.objectFromWorld2, o);
+    objectDirection = affineVector(instance.objectFromWorld0, instance.objectFromWorld1,
+                                   instance.objectFromWorld2, d);
+}
+
+// Closest hit over every instance; `instance` is the one hit (undefined on a miss).
+WF_INLINE bool traceClosestInstanced(vec3 o, vec3 d, float tMax, WF_OUT(HitRecord) hit,
+                                     WF_OUT(uint) instance) {
+    hit.t = tMax;
+    hit.b1 = 0.0f;
+    hit.b2 = 0.0f;
+    hit.triangle = WF_NO_TRIANGLE;
+    instance = 0u;
+    vec3 invDir = 1.0f / d;
+    uint stackPair[WF_BVH_STACK_SIZE];
+    float stackEntry[WF_BVH_STACK_SIZE];
+    uint stackSize = 0u;
+    uint current = 0u;
+    bool haveCurrent = true;
+    while (haveCurrent) {
+        BvhStep step = bvhStep(WF_BVH_PAIR(current), o, invDir, hit.t);
+        for (uint k = 0u; k < step.nearCount + step.farCount; ++k) {
+            uint i = bvhStepTriangle(step, k);
+            Instance placed = WF_BVH_INSTANCE(i);
+            vec3 objectOrigin;
+            vec3 objectDirection;
+            instanceRay(placed, o, d, objectOrigin, objectDirection);
+            HitRecord found;
+            if (traceClosestFrom(placed.blasRoot, objectOrigin, objectDirection, hit.t, found)) {
+                hit = found;
+                instance = i;
+            }
+        }
+        bool nearNext = step.nearInner && step.nearEntry <= hit.t;
+        bool farNext = step.farInner && step.farEntry <= hit.t;
+        haveCurrent = nearNext || farNext;
+        current = (nearNext ? step.nearChild : step.farChild) >> WF_BVH_COUNT_BITS;
+        if (nearNext && farNext && stackSize < uint(WF_BVH_STACK_SIZE)) {
+            stackPair[stackSize] = step.farChild >> WF_BVH_COUNT_BITS;
+            stackEntry[stackSize] = step.farEntry;
+            ++stackSize;
+        }
+        while (!haveCurrent && stackSize > 0u) {
+            --stackSize;
+            if (stackEntry[stackSize] <= hit.t) {
+                current = stackPair[stackSize];
+                haveCurrent = true;
+            }
+        }
+    }
+    return hit.triangle != WF_NO_TRIANGLE;
+}
+
+WF_INLINE bool traceAnyInstanced(vec3 o, vec3 d, float tMax) {
+    vec3 invDir = 1.0f / d;
+    uint stackPair[WF_BVH_STACK_SIZE];
+    uint stackSize = 0u;
+    uint current = 0u;
+    bool haveCurrent = true;
+    while (haveCurrent) {
+        BvhStep step = bvhStep(WF_BVH_PAIR(current), o, invDir, tMax);
+        for (uint k = 0u; k < step.nearCount + step.farCount; ++k) {
+            Instance placed = WF_BVH_INSTANCE(bvhStepTriangle(step, k));
+            vec3 objectOrigin;
+            vec3 objectDirection;
+            instanceRay(placed, o, d, objectOrigin, objectDirection);
+            if (traceAnyFrom(placed.blasRoot, objectOrigin, objectDirection, tMax))
+                return true;
+        }
+        haveCurrent = step.nearInner || step.farInner;
+        current = (step.nearInner ? step.nearChild : step.farChild) >> WF_BVH_COUNT_BITS;
+        if (step.nearInner && step.farInner && stackSize < uint(WF_BVH_STACK_SIZE)) {
+            stackPair[stackSize] = step.farChild >> WF_BVH_COUNT_BITS;
+            ++stackSize;
+        }
+        if (!haveCurrent && stackSize > 0u) {
+            --stackSize;
+            current = stackPair[stackSize];
+            haveCurrent = true;
+        }
+    }
+    return false;
+}
+#endif
+
 #ifdef __cplusplus
 }; // struct BvhTraversal
 } // namespace wf::gpu_types
 #ifdef WF_BVH_DEFAULT_ACCESSORS
 #undef WF_BVH_PAIR
 #undef WF_BVH_TRIANGLE
+#undef WF_BVH_INSTANCE
 #undef WF_BVH_DEFAULT_ACCESSORS
 #endif
 #endif

@@ -108,6 +108,26 @@ WF_INLINE vec3 triangleSpawnError(vec3 p0, vec3 p1, vec3 p2, float b1, float b2)
     return triangleHitPointError(p0, p1, p2, b1, b2) + vec3(triangleIntersectSlack(p0, p1, p2));
 }
 
+// Affine maps as the three rows of a 3x4 matrix (Instance, scene_types.h): x' = r . (x, 1).
+WF_INLINE vec3 affinePoint(vec4 r0, vec4 r1, vec4 r2, vec3 p) {
+    return vec3(dot(vec3(r0), p) + r0.w, dot(vec3(r1), p) + r1.w, dot(vec3(r2), p) + r2.w);
+}
+
+WF_INLINE vec3 affineVector(vec4 r0, vec4 r1, vec4 r2, vec3 v) {
+    return vec3(dot(vec3(r0), v), dot(vec3(r1), v), dot(vec3(r2), v));
+}
+
+// |M| e per component: where an error box e around a point can land under the linear part.
+WF_INLINE vec3 affineErrorImage(vec4 r0, vec4 r1, vec4 r2, vec3 e) {
+    return vec3(dot(abs(vec3(r0)), e), dot(abs(vec3(r1)), e), dot(abs(vec3(r2)), e));
+}
+
+// Rounding error bound of affinePoint at a point of absolute coordinates pAbs (pbrt-v4's
+// Transform: gamma(3) (|M| |p| + |t|), three products and three sums per row).
+WF_INLINE vec3 affinePointError(vec4 r0, vec4 r1, vec4 r2, vec3 pAbs) {
+    return WF_GAMMA(3.0f) * (affineErrorImage(r0, r1, r2, pAbs) + abs(vec3(r0.w, r1.w, r2.w)));
+}
+
 // The next representable float towards +inf / -inf. Both zeros step to the smallest
 // denormal of the requested sign (a plain bits +- 1 would turn -0 into a NaN pattern).
 WF_INLINE float nextFloatUp(float v) {

@@ -36,6 +36,10 @@ uint rayQueueAt(uint depth, uint index) {
     return imageLoad(rayQueueTexels, int((depth & 1u) * params.pathCapacity + index)).x;
 }
 uvec4 hitAt(uint path) { return imageLoad(hitTexels, int(path)); }
+#if WF_RAY_CONES
+layout(binding = WF_BINDING_RAY_CONE_TEXELS, rg32ui) uniform readonly uimageBuffer rayConeTexels;
+vec2 rayConeAt(uint path) { return uintBitsToFloat(imageLoad(rayConeTexels, int(path)).xy); }
+#endif
 #if WF_HAS_EMITTERS
 // xyz: the connection's origin as float bits, w: its path.
 uvec4 shadowOriginAt(uint slot) { return imageLoad(shadowOriginTexels, int(slot)); }

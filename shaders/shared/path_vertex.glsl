@@ -4,8 +4,8 @@
 // trace the same paths. Includers provide bindings, geometry, rng, sampling, light_sampling,
 // bsdf, lights and surface.
 // Estimator: WF_LIGHT_SAMPLING 0 = BSDF sampling only, 1 = NEE only, 2 = MIS (power heuristic).
+#include "ray_cones.glsl"
 // Scenes with a clear coat or sheen shade with bsdf_layers.h's layered BSDF instead of bsdf.h's.
-
 #if WF_HAS_CLEARCOAT || WF_HAS_SHEEN
 #define WF_BSDF_LAYERS 1
 #include "bsdf_layers.h"
@@ -26,6 +26,9 @@ struct PathVertex {
     float previousNormal; // encodeReceiverNormal at the vertex it left (light tree MIS; 0: none)
     vec3 beta;         // throughput
     float etaScale;    // product of eta^2 over refractions, so that RR ignores radiance scaling
+#if WF_RAY_CONES
+    vec2 cone;         // the ray's cone: width at its origin, spread (ray_cones.glsl)
+#endif
     // Out.
     vec3 radiance;     // emission found by this ray, weighted
     bool continues;
@@ -137,14 +140,25 @@ void shadePathVertex(inout PathVertex v) {
     if (!shadeLightHit(v))
         return;
 
-    float t = uintBitsToFloat(v.hit.x);
     vec3 wo = -v.direction;
-    SurfaceHit surface = loadSurface(v.hit.w, uintBitsToFloat(v.hit.y), uintBitsToFloat(v.hit.z),
-                                     wo);
+#if WF_HAS_INSTANCES
+    // x held the instance (intersectClosest); the direction is unit length.
+    float t = instancedHitDistance(v.hit.x, v.hit.w, uintBitsToFloat(v.hit.y),
+                                   uintBitsToFloat(v.hit.z), v.origin);
+#else
+    float t = uintBitsToFloat(v.hit.x);
+#endif
+#if WF_RAY_CONES
+    float coneWidth = coneWidthAt(v.cone, t);
+#else
+    float coneWidth = 0.0;
+#endif
+    SurfaceHit surface = loadSurface(v.hit.x, v.hit.w, uintBitsToFloat(v.hit.y),
+                                     uintBitsToFloat(v.hit.z), wo, coneWidth);
 #if WF_HAS_VOLUME
     // KHR_materials_volume, Beer-Lambert: a ray that meets a transmissive surface from behind
-    // has crossed that mesh's inside over t (directions are unit). Exact for closed meshes that
-    // hold no other surface; see README's Materials section for the rule's limits.
+    // has crossed that mesh's inside over t (world units). Exact for closed meshes that hold
+    // no other surface; see README's Materials section for the rule's limits.
     if (!surface.frontFace && surface.transmission > 0.0)
         v.beta *= exp(-surface.absorption * t);
 #endif
@@ -255,5 +269,8 @@ void shadePathVertex(inout PathVertex v) {
         v.previousNormal = receiver;
         v.beta = beta;
         v.etaScale = etaScale;
+#if WF_RAY_CONES
+        v.cone = coneAfterBounce(v.cone, coneWidth, v.previousPdf);
+#endif
     }
 }

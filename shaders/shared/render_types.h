@@ -21,11 +21,18 @@
 namespace wf::gpu_types {
 #endif
 
+// Texture filtering by ray cones (ray_cones.glsl): on only in variants with textures, where the
+// path state gains each ray's cone.
+#ifndef WF_RAY_CONES
+#define WF_RAY_CONES 0
+#endif
+
 // Scene data
 #define WF_BINDING_TRIANGLES 0
 #define WF_BINDING_BVH_NODES 1
 #define WF_BINDING_MATERIALS 2
 #define WF_BINDING_EMITTERS 3
+#define WF_BINDING_INSTANCES 63 // two-level scenes: Instance texels (scene_types.h)
 // Per render
 #define WF_BINDING_PARAMS 4
 #define WF_BINDING_COUNTERS 5
@@ -47,6 +54,8 @@ namespace wf::gpu_types {
 #define WF_BINDING_AOV_FILM 35  // --aov: per pixel, sums of those (2 vec4)
 #define WF_BINDING_MOMENT_FILM 36   // --aov variance, --target-error: per pixel, radiance^2 sums
 #define WF_BINDING_ACTIVE_PIXELS 37 // --target-error: the pixels a wave's pixel range lists
+#define WF_BINDING_RAY_CONES 38       // WF_RAY_CONES: per path, the ray's cone (ray_cones.glsl)
+#define WF_BINDING_RAY_CONE_TEXELS 39 // the same, read as RG32UI texels
 #define WF_BINDING_TRIANGLE_PAGE1 49 // pages 1-7 of the triangles (49 .. 55)
 #define WF_BINDING_BVH_PAGE1 56      // pages 1-7 of the BVH entries (56 .. 62)
 #define WF_BINDING_LIGHTS 17

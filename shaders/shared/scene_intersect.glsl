@@ -2,19 +2,29 @@
 // the intersect and shadow passes and by the megakernel baseline.
 #define WF_BVH_PAIR(i) bvhPairAt(i)
 #define WF_BVH_TRIANGLE(i) triangleAt(i)
+#define WF_BVH_INSTANCE(i) instanceAt(i)
 #include "bvh_traverse.h"
 #include "light_sampling.h"
 
-// (t, b1, b2, triangle) as bits, (t, -, -, WF_SPHERE_HIT | light), or w = WF_MISS.
+// (t, b1, b2, triangle) as bits, (t, -, -, WF_SPHERE_HIT | light), or w = WF_MISS. In
+// two-level scenes a triangle hit's x holds its instance instead of t (hitDistance).
 uvec4 intersectClosest(vec3 origin, vec3 direction) {
     HitRecord hit;
     uvec4 result = uvec4(0u, 0u, 0u, WF_MISS);
     float closest = 3.0e38;
+#if WF_HAS_INSTANCES
+    uint instance;
+    if (traceClosestInstanced(origin, direction, closest, hit, instance)) {
+        result = uvec4(instance, floatBitsToUint(hit.b1), floatBitsToUint(hit.b2), hit.triangle);
+        closest = hit.t;
+    }
+#else
     if (traceClosest(origin, direction, closest, hit)) {
         result = uvec4(floatBitsToUint(hit.t), floatBitsToUint(hit.b1), floatBitsToUint(hit.b2),
                        hit.triangle);
         closest = hit.t;
     }
+#endif
 #if WF_HAS_SPHERE_LIGHTS
     // Sphere lights are few: test them all rather than put them in the BVH.
     for (uint i = 0u; i < params.sphereLightCount; ++i) {
@@ -36,7 +46,11 @@ uvec4 intersectClosest(vec3 origin, vec3 direction) {
 // samples went dark (issue 13). Triangles keep the plain test: their ends are offset by the
 // intersector's own error bound.
 bool segmentOccluded(vec3 origin, vec3 segment, uint targetSphere) {
+#if WF_HAS_INSTANCES
+    bool occluded = traceAnyInstanced(origin, segment, 1.0);
+#else
     bool occluded = traceAny(origin, segment, 1.0);
+#endif
 #if WF_HAS_SPHERE_LIGHTS
     float length_ = length(segment);
     for (uint i = 0u; i < params.sphereLightCount && !occluded; ++i) {

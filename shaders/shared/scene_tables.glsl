@@ -66,6 +66,10 @@ layout(binding = WF_BINDING_BVH_PAGE1 + 6, rgba32ui) uniform readonly restrict u
 #endif
 layout(binding = WF_BINDING_MATERIALS, rgba32ui) uniform readonly restrict uimageBuffer
     materialTexels;
+#if WF_HAS_INSTANCES
+layout(binding = WF_BINDING_INSTANCES, rgba32ui) uniform readonly restrict uimageBuffer
+    instanceTexels;
+#endif
 #if WF_HAS_EMITTERS
 layout(binding = WF_BINDING_EMITTERS, rgba32ui) uniform readonly restrict uimageBuffer
     emitterTexels;
@@ -235,6 +239,19 @@ Material materialAt(uint index) {
                     uintBitsToFloat(t6.y), uintBitsToFloat(t6.z), t6.w, uintBitsToFloat(t7.xyz),
                     uintBitsToFloat(t7.w), uintBitsToFloat(t8.xyz), uintBitsToFloat(t8.w));
 }
+
+#if WF_HAS_INSTANCES
+Instance instanceAt(uint index) {
+    uint base = index * WF_INSTANCE_TEXELS;
+    uvec4 t6 = wfTexel(instanceTexels, base + 6u);
+    return Instance(uintBitsToFloat(wfTexel(instanceTexels, base)),
+                    uintBitsToFloat(wfTexel(instanceTexels, base + 1u)),
+                    uintBitsToFloat(wfTexel(instanceTexels, base + 2u)),
+                    uintBitsToFloat(wfTexel(instanceTexels, base + 3u)),
+                    uintBitsToFloat(wfTexel(instanceTexels, base + 4u)),
+                    uintBitsToFloat(wfTexel(instanceTexels, base + 5u)), t6.x, t6.y, t6.z, t6.w);
+}
+#endif
 
 #if WF_HAS_EMITTERS
 Emitter emitterAt(uint index) {

@@ -48,6 +48,25 @@ struct BvhPair {
     uint pad1;
 };
 
+// One placement of a mesh in a two-level scene (WF_HAS_INSTANCES): the top-level BVH's leaves
+// index these, in leaf order. Rows of the 3x4 affine maps: x' = dot(row0.xyz, x) + row0.w.
+// The scene's singly placed geometry is one more instance, with the identity.
+struct Instance {
+    vec4 objectFromWorld0;
+    vec4 objectFromWorld1;
+    vec4 objectFromWorld2;
+    vec4 worldFromObject0;
+    vec4 worldFromObject1;
+    vec4 worldFromObject2;
+    uint blasRoot; // the pair entry that holds its mesh BVH's root children
+    uint flags;    // WF_INSTANCE_*
+    uint pad0;
+    uint pad1;
+};
+
+// The transform mirrors space (negative determinant): front faces and tangent frames flip.
+#define WF_INSTANCE_MIRRORED 1u
+
 #define WF_BVH_COUNT_BITS 5u
 #define WF_BVH_MAX_LEAF_COUNT 31u // (1 << WF_BVH_COUNT_BITS) - 1
 // Stack entries that BvhRegisterStack (bvh_traverse.h) holds: 8, or 16 for any-hit rays.
@@ -139,6 +158,7 @@ struct Emitter {
 #define WF_BVH_PAGE_SHIFT 31
 #endif
 #define WF_MATERIAL_TEXELS 9u
+#define WF_INSTANCE_TEXELS 7u
 
 #ifdef __cplusplus
 } // namespace wf::gpu_types
@@ -167,6 +187,9 @@ static_assert(offsetof(wf::gpu_types::Material, sheenRoughness) == 124);
 static_assert(offsetof(wf::gpu_types::Material, attenuation) == 128);
 static_assert(offsetof(wf::gpu_types::Material, thickness) == 140);
 static_assert(sizeof(wf::gpu_types::Emitter) == 16);
+static_assert(sizeof(wf::gpu_types::Instance) == 16 * WF_INSTANCE_TEXELS);
+static_assert(offsetof(wf::gpu_types::Instance, worldFromObject0) == 48);
+static_assert(offsetof(wf::gpu_types::Instance, blasRoot) == 96);
 #endif
 
 #endif

@@ -42,30 +42,78 @@ struct SurfaceHit {
 
 vec3 decodeUnit(uint packed) { return octDecode(unpackSnorm2x16(packed)); }
 
+// Two-level scenes keep instanced meshes in their own space (vertex attributes included): the
+// hit's instance maps them to world space here, normals by the inverse transpose. One-level
+// scenes are in world space already and pass an unused instance.
+vec3 normalToWorld(Instance instance, vec3 n) {
+#if WF_HAS_INSTANCES
+    vec3 world = vec3(instance.objectFromWorld0) * n.x + vec3(instance.objectFromWorld1) * n.y +
+                 vec3(instance.objectFromWorld2) * n.z;
+    float len = length(world);
+    return len > 0.0 ? world / len : n;
+#else
+    return n;
+#endif
+}
+
+vec3 vectorToWorld(Instance instance, vec3 v) {
+#if WF_HAS_INSTANCES
+    return affineVector(instance.worldFromObject0, instance.worldFromObject1,
+                        instance.worldFromObject2, v);
+#else
+    return v;
+#endif
+}
+
+bool instanceMirrors(Instance instance) {
+#if WF_HAS_INSTANCES
+    return (instance.flags & WF_INSTANCE_MIRRORED) != 0u;
+#else
+    return false;
+#endif
+}
+
+// A shading lookup of reference `ref` at the hit: filtered by the ray cone's footprint where
+// the variant has ray cones (textures.glsl), else level 0.
+#if WF_HAS_TEXTURES
+vec4 surfaceTexture(uint ref, uint triangleIndex, float b1, float b2, float footprint) {
+#if WF_RAY_CONES
+    return sampleTriangleTextureCone(ref, triangleIndex, b1, b2, footprint);
+#else
+    return sampleTriangleTexture(ref, triangleIndex, b1, b2);
+#endif
+}
+#endif
+
 // The shading normal on the front (counter-clockwise) side: interpolated vertex normals, then
 // the normal map in the tangent frame. Falls back to the geometric normal wherever the data
 // would give a zero or non-finite vector.
-vec3 frontShadingNormal(uint triangleIndex, Material material, float b1, float b2, vec3 ng) {
+vec3 frontShadingNormal(Instance instance, uint triangleIndex, Material material, float b1,
+                        float b2, vec3 ng, float footprint) {
     vec3 n = ng;
 #if WF_HAS_NORMALS
     TriangleNormals corners = triangleNormalsAt(triangleIndex);
     float b0 = 1.0 - b1 - b2;
-    vec3 sum = b0 * decodeUnit(corners.n0) + b1 * decodeUnit(corners.n1) +
-               b2 * decodeUnit(corners.n2);
+    vec3 sum = b0 * normalToWorld(instance, decodeUnit(corners.n0)) +
+               b1 * normalToWorld(instance, decodeUnit(corners.n1)) +
+               b2 * normalToWorld(instance, decodeUnit(corners.n2));
     float len = length(sum);
     n = len > 1e-6 ? sum / len : ng;
 #endif
 #if WF_HAS_NORMAL_MAPS
     if (material.normalTexture != WF_NO_TEXTURE) {
         TriangleTangents frame = triangleTangentsAt(triangleIndex);
-        vec3 t = (1.0 - b1 - b2) * decodeUnit(frame.t0) + b1 * decodeUnit(frame.t1) +
-                 b2 * decodeUnit(frame.t2);
+        vec3 t = vectorToWorld(instance, (1.0 - b1 - b2) * decodeUnit(frame.t0) +
+                                             b1 * decodeUnit(frame.t1) + b2 * decodeUnit(frame.t2));
         t -= n * dot(n, t); // Gram-Schmidt against the interpolated normal
         float tLen = length(t);
         if (tLen > 1e-6) {
             t /= tLen;
-            vec3 b = cross(n, t) * ((frame.signs & 1u) != 0u ? -1.0 : 1.0);
-            vec3 m = sampleTriangleTexture(material.normalTexture, triangleIndex, b1, b2).xyz;
+            // A mirroring instance turns the frame's handedness (as the loader does when it
+            // flattens a mirrored mesh).
+            bool flipped = ((frame.signs & 1u) != 0u) != instanceMirrors(instance);
+            vec3 b = cross(n, t) * (flipped ? -1.0 : 1.0);
+            vec3 m = surfaceTexture(material.normalTexture, triangleIndex, b1, b2, footprint).xyz;
             m = m * 2.0 - 1.0;
             m.xy *= material.normalScale;
             vec3 mapped = t * m.x + b * m.y + n * m.z;
@@ -79,6 +127,8 @@ vec3 frontShadingNormal(uint triangleIndex, Material material, float b1, float b
 
 // Emitted radiance of a triangle's front at barycentrics (b1, b2): emissiveFactor x strength x
 // emissiveTexture. Light sampling should use this too, so that NEE and BSDF hits agree.
+// Level 0 also with ray cones: light sampling has no cone at the point it picks, and both must
+// see one emission for MIS to weigh one integrand.
 vec3 surfaceEmission(uint triangleIndex, Material material, float b1, float b2) {
     vec3 emission = material.emission;
 #if WF_HAS_TEXTURES
@@ -88,18 +138,81 @@ vec3 surfaceEmission(uint triangleIndex, Material material, float b1, float b2) 
     return emission;
 }
 
-SurfaceHit loadSurface(uint triangleIndex, float b1, float b2, vec3 wo) {
+#if WF_HAS_INSTANCES
+// The spawn error of a hit on an instanced triangle, in world space. The ray met the triangle
+// in the mesh's space, so the intersector's slack is the mesh-space one mapped out; the world
+// corners carry the rounding of their own transform; and the ray spawned here is mapped back
+// into some mesh's space, which rounds once more (pbrt-v4's transformed-interaction bounds).
+vec3 instancedSpawnError(Instance instance, Triangle tri, vec3 p0, vec3 p1, vec3 p2, float b1,
+                         float b2, vec3 p) {
+    float b0 = 1.0 - b1 - b2;
+    vec3 objectCorners = b0 * abs(tri.p0) + b1 * abs(tri.p1) + b2 * abs(tri.p2);
+    vec3 cornerError = affinePointError(instance.worldFromObject0, instance.worldFromObject1,
+                                        instance.worldFromObject2, objectCorners);
+    vec3 slack = affineErrorImage(instance.worldFromObject0, instance.worldFromObject1,
+                                  instance.worldFromObject2,
+                                  vec3(triangleIntersectSlack(tri.p0, tri.p1, tri.p2)));
+    vec3 backError = affineErrorImage(
+        instance.worldFromObject0, instance.worldFromObject1, instance.worldFromObject2,
+        affinePointError(instance.objectFromWorld0, instance.objectFromWorld1,
+                         instance.objectFromWorld2, abs(p)));
+    return triangleHitPointError(p0, p1, p2, b1, b2) + cornerError + slack + backError;
+}
+
+// The distance along a unit-length ray from `origin` to an instanced hit, which the hit record
+// does not keep (its x holds the instance): the world point as loadSurface computes it.
+float instancedHitDistance(uint instanceIndex, uint triangleIndex, float b1, float b2,
+                           vec3 origin) {
+    Triangle tri = triangleAt(triangleIndex);
+    Instance instance = instanceAt(instanceIndex);
+    vec3 p = triangleHitPoint(
+        affinePoint(instance.worldFromObject0, instance.worldFromObject1,
+                    instance.worldFromObject2, tri.p0),
+        affinePoint(instance.worldFromObject0, instance.worldFromObject1,
+                    instance.worldFromObject2, tri.p1),
+        affinePoint(instance.worldFromObject0, instance.worldFromObject1,
+                    instance.worldFromObject2, tri.p2),
+        b1, b2);
+    return length(p - origin);
+}
+#endif
+
+// coneWidth: the ray cone's width at the hit (ray_cones.glsl; unused without WF_RAY_CONES).
+SurfaceHit loadSurface(uint instanceIndex, uint triangleIndex, float b1, float b2, vec3 wo,
+                       float coneWidth) {
     Triangle tri = triangleAt(triangleIndex);
     Material material = materialAt(tri.material);
     SurfaceHit s;
-    s.p = triangleHitPoint(tri.p0, tri.p1, tri.p2, b1, b2);
-    s.pError = triangleSpawnError(tri.p0, tri.p1, tri.p2, b1, b2);
-    vec3 cross12 = cross(tri.p1 - tri.p0, tri.p2 - tri.p0);
+#if WF_HAS_INSTANCES
+    Instance instance = instanceAt(instanceIndex);
+    vec3 p0 = affinePoint(instance.worldFromObject0, instance.worldFromObject1,
+                          instance.worldFromObject2, tri.p0);
+    vec3 p1 = affinePoint(instance.worldFromObject0, instance.worldFromObject1,
+                          instance.worldFromObject2, tri.p1);
+    vec3 p2 = affinePoint(instance.worldFromObject0, instance.worldFromObject1,
+                          instance.worldFromObject2, tri.p2);
+    s.p = triangleHitPoint(p0, p1, p2, b1, b2);
+    s.pError = instancedSpawnError(instance, tri, p0, p1, p2, b1, b2, s.p);
+#else
+    Instance instance; // unused: one-level scenes are in world space
+    vec3 p0 = tri.p0;
+    vec3 p1 = tri.p1;
+    vec3 p2 = tri.p2;
+    s.p = triangleHitPoint(p0, p1, p2, b1, b2);
+    s.pError = triangleSpawnError(p0, p1, p2, b1, b2);
+#endif
+    vec3 cross12 = cross(p1 - p0, p2 - p0);
     s.area = 0.5 * length(cross12);
-    vec3 ng = normalize(cross12);
+    // Mirrored, the world corners wind the other way round the face the file made the front.
+    vec3 ng = normalize(cross12) * (instanceMirrors(instance) ? -1.0 : 1.0);
     s.frontFace = dot(ng, wo) > 0.0;
     s.ng = s.frontFace ? ng : -ng; // two-sided shading
-    vec3 ns = frontShadingNormal(triangleIndex, material, b1, b2, ng);
+#if WF_RAY_CONES
+    float footprint = coneFootprint(coneWidth, dot(ng, wo), length(cross12));
+#else
+    float footprint = 0.0;
+#endif
+    vec3 ns = frontShadingNormal(instance, triangleIndex, material, b1, b2, ng, footprint);
     s.ns = s.frontFace ? ns : -ns;
     // A shading normal past the horizon of the geometric one would leak light: use ng there.
     if (!(dot(s.ns, s.ng) > 0.0))
@@ -115,22 +228,23 @@ SurfaceHit loadSurface(uint triangleIndex, float b1, float b2, vec3 wo) {
     s.specularColor = material.specularColor;
 #if WF_HAS_TEXTURES
     if (material.baseColorTexture != WF_NO_TEXTURE)
-        base *= sampleTriangleTexture(material.baseColorTexture, triangleIndex, b1, b2);
+        base *= surfaceTexture(material.baseColorTexture, triangleIndex, b1, b2, footprint);
     if (material.metallicRoughnessTexture != WF_NO_TEXTURE) {
-        vec4 mr = sampleTriangleTexture(material.metallicRoughnessTexture, triangleIndex, b1, b2);
+        vec4 mr = surfaceTexture(material.metallicRoughnessTexture, triangleIndex, b1, b2,
+                                 footprint);
         s.metallic *= mr.b;
         s.roughness *= mr.g;
     }
     if (material.transmissionTexture != WF_NO_TEXTURE)
-        s.transmission *= sampleTriangleTexture(material.transmissionTexture, triangleIndex, b1,
-                                                b2).r;
+        s.transmission *= surfaceTexture(material.transmissionTexture, triangleIndex, b1, b2,
+                                         footprint).r;
 #if WF_HAS_SPECULAR_TEXTURES
     // KHR_materials_specular: the strength in A, the colour in RGB (sRGB).
     if (material.specularTexture != WF_NO_TEXTURE)
-        s.specular *= sampleTriangleTexture(material.specularTexture, triangleIndex, b1, b2).a;
+        s.specular *= surfaceTexture(material.specularTexture, triangleIndex, b1, b2, footprint).a;
     if (material.specularColorTexture != WF_NO_TEXTURE)
-        s.specularColor *=
-            sampleTriangleTexture(material.specularColorTexture, triangleIndex, b1, b2).rgb;
+        s.specularColor *= surfaceTexture(material.specularColorTexture, triangleIndex, b1, b2,
+                                          footprint).rgb;
 #endif
 #endif
 #if WF_HAS_CLEARCOAT

@@ -28,6 +28,7 @@
 #ifndef WF_HAS_ALPHA_MASK
 #define WF_HAS_ALPHA_MASK 0
 #endif
+// WF_RAY_CONES (render_types.h): textures filtered from their mip chains by ray cones.
 
 #ifdef __cplusplus
 namespace wf::gpu_types {
@@ -53,7 +54,9 @@ using namespace glm;
 
 // One material's use of one image: which texel page and where in it, how to wrap and filter,
 // and the KHR_texture_transform as a 2x3 matrix: uv' = (dot(uRow, (u, v, 1)),
-// dot(vRow, (u, v, 1))). Texels are RGBA8, one uint (one R32UI texel) each, rows top first.
+// dot(vRow, (u, v, 1))). Texels are RGBA8, one uint (one R32UI texel) each, rows top first;
+// the image's mip chain follows it in the same page (level k is max(1, width >> k) x max(1,
+// height >> k), src/scene/mip_chain.h).
 struct TextureRef {
     vec3 uRow;
     uint page;
@@ -62,7 +65,7 @@ struct TextureRef {
     uint width;
     uint height;
     uint flags;  // WF_WRAP_* | WF_TEXTURE_*
-    uint pad;
+    uint levels; // mip levels stored, level 0 included
 };
 #define WF_TEXTURE_REF_TEXELS 3u // RGBA32UI
 
@@ -114,6 +117,7 @@ static_assert(offsetof(wf::gpu_types::TextureRef, page) == 12);
 static_assert(offsetof(wf::gpu_types::TextureRef, vRow) == 16);
 static_assert(offsetof(wf::gpu_types::TextureRef, offset) == 28);
 static_assert(offsetof(wf::gpu_types::TextureRef, flags) == 40);
+static_assert(offsetof(wf::gpu_types::TextureRef, levels) == 44);
 static_assert(sizeof(wf::gpu_types::TriangleNormals) == 16 * WF_TRIANGLE_NORMALS_TEXELS);
 static_assert(sizeof(wf::gpu_types::TriangleTangents) == 16 * WF_TRIANGLE_TANGENTS_TEXELS);
 static_assert(sizeof(wf::gpu_types::TriangleUvs) == 8 * WF_TRIANGLE_UVS_TEXELS);

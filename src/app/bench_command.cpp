@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "app/bench_report.h"
+#include "app/host_memory.h"
 #include "app/cli.h"
 #include "app/commands.h"
 #include "app/render_options.h"
@@ -54,6 +55,7 @@ const CommandSpec& benchSpec() {
                 quietOption(),
                 cameraOption(),
                 envOption(),
+                instancingOption(),
             },
         }),
         "Exit codes: 0 done, 2 bad usage or bad input, 1 internal or device failure.\n"};
@@ -131,6 +133,8 @@ int runBenchCommand(const std::vector<std::string>& args) {
                      spp, settings.maxDepth, settings.seed, warmup, frames,
                      settings.submitBudgetSeconds, prepared.triangles.size(),
                      prepared.materials.size(), prepared.bvhStats};
+    setup.instances = prepared.instances.size();
+    setup.instancedTriangles = prepared.instancedTriangles;
     const ShaderVariant& variant = kernels[0].renderer->variant();
     setup.lightSelection = variant.nextEventEstimation
                                ? lightSelectionName(variant.lightSelection) : "none";
@@ -152,6 +156,7 @@ int runBenchCommand(const std::vector<std::string>& args) {
                          f < warmup ? " (warm-up)" : "");
     }
 
+    setup.peakHostMemoryBytes = peakHostMemoryBytes();
     std::printf("Wavefront bench: %s, %ux%u, %u spp per frame, max depth %u, seed %u; %u frames "
                 "after %u warm-up\n",
                 scenePath.c_str(), settings.width, settings.height, spp, settings.maxDepth,
@@ -165,6 +170,10 @@ int runBenchCommand(const std::vector<std::string>& args) {
                 setup.bvh.leafCount, setup.bvh.maxDepth, setup.bvh.stackNeed,
                 setup.bvh.traversalCost, setup.bvh.sahCost,
                 setup.bvh.buildSeconds * 1e3);
+    if (setup.instances > 0)
+        std::printf("instances: %llu (%llu triangles as placed)\n",
+                    static_cast<unsigned long long>(setup.instances),
+                    static_cast<unsigned long long>(setup.instancedTriangles));
     std::printf("light selection: %s\n\n", setup.lightSelectionText.c_str());
     // --megakernel shows the megakernel's table, --compare-megakernel both.
     if (!withMegakernel || compare)

@@ -221,7 +221,10 @@ std::string benchJson(const BenchSetup& setup, const std::vector<BenchRun>& runs
         << ",\n  \"seed\": " << setup.seed << ",\n  \"warmupFrames\": " << setup.warmupFrames
         << ",\n  \"frames\": " << setup.frames << ",\n  \"submitBudgetSeconds\": "
         << jsonNumber(setup.submitBudgetSeconds) << ",\n  \"triangles\": " << setup.triangles
-        << ",\n  \"materials\": " << setup.materials << ",\n  \"bvh\": {\"nodes\": "
+        << ",\n  \"instances\": " << setup.instances << ",\n  \"instancedTriangles\": "
+        << setup.instancedTriangles << ",\n  \"peakHostMemoryBytes\": "
+        << setup.peakHostMemoryBytes << ",\n  \"materials\": " << setup.materials
+        << ",\n  \"bvh\": {\"nodes\": "
         << setup.bvh.nodeCount << ", \"leaves\": " << setup.bvh.leafCount
         << ", \"depth\": " << setup.bvh.maxDepth << ", \"stackNeed\": " << setup.bvh.stackNeed
         << ", \"traversalCost\": " << jsonNumber(setup.bvh.traversalCost) << ", \"sahCost\": "

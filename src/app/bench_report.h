@@ -43,6 +43,9 @@ struct BenchSetup {
     uint64_t triangles = 0;
     uint64_t materials = 0;
     BvhBuildStats bvh;
+    uint64_t instances = 0;          // top-level instances (0: one flat BVH)
+    uint64_t instancedTriangles = 0; // triangles as rendered, every placement counted
+    uint64_t peakHostMemoryBytes = 0; // VmHWM after the runs
     std::string lightSelection;      // resolved: uniform, power or tree
     std::string lightSelectionText;  // describeLightSelection
     uint32_t lightTreeLights = 0;    // with the tree: its lights, depth and build time

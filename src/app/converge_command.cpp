@@ -66,6 +66,7 @@ const CommandSpec& convergeSpec() {
                 {"--crop", "", "X,Y,W,H", "region of the equal-time crops (default: the central "
                                           "half of the image)"},
                 {"--no-plot", "", "", "write CSV and JSON only, no charts"},
+                instancingOption(),
                 deviceOption(),
                 quietOption(),
             },

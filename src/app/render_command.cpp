@@ -80,6 +80,7 @@ const CommandSpec& renderSpec() {
                 quietOption(),
                 cameraOption(),
                 envOption(),
+                instancingOption(),
                 {"--verbose", "-v", "", "print the scene summary, shader variant and GPU memory"},
             },
         }),
@@ -216,7 +217,8 @@ std::string renderSettingsKey(const RenderSettings& s, const ParsedArgs& parsed)
            lightSelectionName(s.lightSelection) + " triangle " +
            (s.triangleSolidAngle ? "solid-angle" : "area") + " sphere " +
            (s.sphereSolidAngle ? "solid-angle" : "area") + " " + samplerName(s.sampler) +
-           (s.randomizeSamples ? "" : " no-randomize") + " camera " +
+           (s.randomizeSamples ? "" : " no-randomize") +
+           (s.textureLod ? "" : " texture-filter none") + " camera " +
            parsed.value("--camera").value_or("default") +
            (parsed.has("--aperture") ? " aperture " + *parsed.value("--aperture") : "") +
            (parsed.has("--focus-distance") ? " focus " + *parsed.value("--focus-distance") : "") +
@@ -238,6 +240,12 @@ void printVerbose(const PreparedScene& scene, const WavefrontRenderer& renderer,
                  scene.triangles.size(), scene.materials.size(), scene.lights.emitters.size(),
                  bvh.nodeCount, bvh.maxDepth, bvh.traversalCost, bvh.sahCost, bvh.buildSeconds,
                  scene.triangles.size() / std::max(bvh.buildSeconds, 1e-9) / 1e6, bvh.threads);
+    if (!scene.instances.empty())
+        std::fprintf(stderr,
+                     "wavefront: two-level BVH: %zu instances of %u meshes and the world "
+                     "geometry, %llu triangles as placed\n",
+                     scene.instances.size(), scene.meshCount,
+                     static_cast<unsigned long long>(scene.instancedTriangles));
     std::fprintf(stderr, "wavefront: light selection: %s\n",
                  describeLightSelection(scene, renderer.variant()).c_str());
     std::fprintf(stderr, "wavefront: shader variant: %s; up to %u paths per wave\n",
@@ -256,6 +264,8 @@ std::vector<std::pair<std::string, std::string>> sceneJsonFields(const PreparedS
     const BvhBuildStats& bvh = scene.bvhStats;
     const double perSecond = scene.triangles.size() / std::max(bvh.buildSeconds, 1e-9);
     return {{"triangles", std::to_string(scene.triangles.size())},
+            {"instances", std::to_string(scene.instances.size())},
+            {"instancedTriangles", std::to_string(scene.instancedTriangles)},
             {"bvh", "{\"nodes\": " + std::to_string(bvh.nodeCount) +
                         ", \"depth\": " + std::to_string(bvh.maxDepth) +
                         ", \"sahCost\": " + jsonNumber(bvh.sahCost) +

@@ -47,6 +47,8 @@ std::vector<OptionSpec> samplingOptions() {
         {"--seed", "", "S", "random seed; same seed, same image bit for bit (default 0)"},
         {"--sampler", "", "NAME", "sample pattern: independent, stratified, multijitter, "
                                   "halton, hammersley, sobol (default) or bluenoise"},
+        {"--texture-filter", "", "MODE", "cone (mip levels chosen by ray cones; default) or "
+                                         "none (full-resolution bilinear lookups)"},
     };
 }
 
@@ -76,6 +78,12 @@ std::vector<OptionSpec> lensOptions() {
                                           "the scene's centre's)"}};
 }
 
+OptionSpec instancingOption() {
+    return {"--instancing", "", "MODE", "meshes that several nodes place: auto (kept once and "
+                                        "instanced where the copies would add 1M triangles or "
+                                        "more), on (always) or off (flattened); default auto"};
+}
+
 OptionSpec envOption() {
     return {"--env", "", "FILE.exr", "equirectangular environment map, linear RGB, +Y up "
                                      "(default: none; uniform white if nothing emits)"};
@@ -100,6 +108,8 @@ void applyRenderFlags(const ParsedArgs& parsed, uint32_t defaultMaxDepth,
     settings.sampler = parseSampler(
         parsed.choiceValue("--sampler", samplerName(kDefaultSampler), samplerNames()));
     settings.randomizeSamples = !parsed.has("--no-randomize");
+    settings.textureLod =
+        parsed.choiceValue("--texture-filter", "cone", {"cone", "none"}) == "cone";
     if (!settings.randomizeSamples && settings.sampler == SamplerKind::Independent)
         throw UsageError("--no-randomize: the independent sampler has no randomization to "
                          "remove (pick another --sampler)");
@@ -126,9 +136,7 @@ void applyLensFlags(const ParsedArgs& parsed, Scene& scene) {
         return;
     const bool empty = scene.triangles.empty() && scene.lights.empty();
     const float along =
-        empty ? 0.0f
-              : glm::dot(sceneBounds(scene.triangles, scene.lights).center - camera.position,
-                         camera.forward);
+        empty ? 0.0f : glm::dot(sceneBounds(scene).center - camera.position, camera.forward);
     camera.focusDistance = along > 0.0f ? along : 1.0f;
 }
 
@@ -137,7 +145,10 @@ void applyLensFlags(const ParsedArgs& parsed, Scene& scene) {
 Scene loadSceneWithFlags(const ParsedArgs& parsed, const std::string& path,
                          SceneSummary* summary) {
     std::vector<std::string> warnings; // printed once the scene and flags are accepted
-    Scene scene = loadGltf(path, &warnings);
+    GltfOptions options;
+    if (auto mode = parsed.value("--instancing"))
+        options.instancing = parseInstancing(*mode);
+    Scene scene = loadGltf(path, &warnings, options);
     if (auto name = parsed.value("--camera")) {
         scene.camera = selectCamera(scene, *name, path);
         scene.hasCamera = true;

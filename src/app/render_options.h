@@ -28,7 +28,8 @@ OptionSpec noRandomizeOption(); // --no-randomize
 OptionSpec deviceOption();      // --device
 OptionSpec quietOption();       // --quiet, -q: no progress lines
 OptionSpec cameraOption();      // --camera: one of the file's cameras
-OptionSpec envOption();         // --env
+OptionSpec envOption();
+OptionSpec instancingOption(); // --instancing auto|on|off         // --env
 std::vector<OptionSpec> lensOptions(); // --aperture, --focus-distance
 
 // depthOptions, samplingOptions and --no-randomize into `settings` (UsageError on a bad value).

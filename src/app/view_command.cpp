@@ -35,6 +35,7 @@ const CommandSpec& viewSpec() {
             samplingOptions(),
             {
                 envOption(),
+                instancingOption(),
                 {"--exposure", "", "EV", "display exposure in stops: radiance x 2^EV (default 0)"},
                 {"--tonemap", "", "MODE", "linear (clamp, as render's PNG) or aces (filmic) "
                                           "(default linear)"},
@@ -98,6 +99,8 @@ int runViewCommand(const std::vector<std::string>& args) {
     settings.targetMs = parsed.floatValue("--target-ms", 33.0f, 1.0f, 60000.0f);
     options.camera = parsed.value("--camera");
     options.environmentPath = parsed.value("--env").value_or("");
+    if (auto mode = parsed.value("--instancing"))
+        options.instancing = parseInstancing(*mode);
     options.overlay = !parsed.has("--no-overlay");
     options.device = contextOptionsFrom(parsed).deviceIndex;
     options.frames = parsed.uintValue("--frames", 0, 1, 1u << 30);

@@ -24,6 +24,8 @@ PathBuffers::PathBuffers(const Context& context, uint32_t pathCapacity, uint32_t
         aovPaths = Buffer(context, "aov paths", uint64_t(pathCapacity) * 32);
         aovFilm = Buffer(context, "aov film", uint64_t(pixelCount) * 32);
     }
+    if (variant.rayCones)
+        rayCones = Buffer(context, "ray cones", uint64_t(pathCapacity) * 8);
     rayOrigin = Buffer(context, "ray origins", uint64_t(pathCapacity) * 16);
     rayDirection = Buffer(context, "ray directions", uint64_t(pathCapacity) * 16);
     throughput = Buffer(context, "throughput", uint64_t(pathCapacity) * 16);
@@ -64,6 +66,8 @@ void PathBuffers::appendBindings(DescriptorBindings& bindings) const {
         {WF_BINDING_SHADOW_DIRECTION_TEXELS, &shadowDirection, BufferAccess::UintTexels},
         {WF_BINDING_SHADOW_RADIANCE_TEXELS, &shadowRadiance, BufferAccess::UintTexels},
         {WF_BINDING_RAY_QUEUE_TEXELS, &rayQueues, BufferAccess::Uint1Texels},
+        {WF_BINDING_RAY_CONES, &rayCones},
+        {WF_BINDING_RAY_CONE_TEXELS, &rayCones, BufferAccess::Uint2Texels},
     };
     for (const DescriptorBinding& binding : all)
         if (*binding.buffer)
@@ -74,7 +78,8 @@ void PathBuffers::appendMemoryReport(
     std::vector<std::pair<std::string, uint64_t>>& report) const {
     for (const Buffer* buffer :
          {&params, &counters, &film, &rayOrigin, &rayDirection, &throughput, &radiance, &hits,
-          &shadowOrigin, &shadowDirection, &shadowRadiance, &rayQueues, &aovPaths, &aovFilm, &momentFilm, &activePixels})
+          &shadowOrigin, &shadowDirection, &shadowRadiance, &rayQueues, &aovPaths, &aovFilm,
+          &momentFilm, &activePixels, &rayCones})
         if (*buffer)
             report.emplace_back(buffer->name(), buffer->size());
 }

@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "scene/bvh_tuning.h"
+#include "scene/instance_bvh.h"
 #include "shaders/shared/render_types.h"
 #include "shaders/shared/sheen.h"
 
@@ -18,16 +19,33 @@ PreparedScene prepareScene(Scene scene) {
     prepared.environment = std::move(scene.environment);
     prepared.surface = std::move(scene.surface);
     tagTriangles(prepared.triangles); // the per-triangle arrays follow the BVH's order
-    {
-        // The builder's tree is needed only until it is paired (what traversal reads).
-        std::vector<BvhNode> nodes;
-        prepared.bvhStats =
-            buildTunedBvh(prepared.triangles, nodes, prepared.materials, prepared.camera);
-        prepared.bvhPairs = pairBvhNodes(nodes);
+    if (!scene.placements.empty()) {
+        prepared.instancedTriangles = scene.instancedTriangleCount();
+        prepared.meshCount = uint32_t(scene.meshes.size());
+        TwoLevelBvh bvh = buildTwoLevelBvh(prepared.triangles, scene.meshes, scene.placements,
+                                           prepared.materials, prepared.camera);
+        prepared.bvhPairs = std::move(bvh.pairs);
+        prepared.instances = std::move(bvh.instances);
+        prepared.bvhStats = bvh.stats;
+        Bounds box;
+        for (const Bounds& instance : bvh.instanceBoxes) {
+            box.grow(instance.lo);
+            box.grow(instance.hi);
+        }
+        prepared.bounds = sceneBounds(box, prepared.punctualLights);
+    } else {
+        prepared.instancedTriangles = prepared.triangles.size();
+        {
+            // The builder's tree is needed only until it is paired (what traversal reads).
+            std::vector<BvhNode> nodes;
+            prepared.bvhStats =
+                buildTunedBvh(prepared.triangles, nodes, prepared.materials, prepared.camera);
+            prepared.bvhPairs = pairBvhNodes(nodes);
+        }
+        prepared.bvhStats.stackNeed = bvhStackNeed(prepared.bvhPairs);
+        prepared.bounds = sceneBounds(prepared.triangles, prepared.punctualLights);
     }
-    prepared.bvhStats.stackNeed = bvhStackNeed(prepared.bvhPairs);
     followTriangleOrder(prepared.triangles, prepared.surface);
-    prepared.bounds = sceneBounds(prepared.triangles, prepared.punctualLights);
     prepared.lights = buildLightTable(prepared.triangles, prepared.materials,
                                       prepared.punctualLights, prepared.environment,
                                       prepared.bounds, prepared.surface);
@@ -118,6 +136,8 @@ SceneBuffers::SceneBuffers(const Context& context, const PreparedScene& scene,
       bvhPages_(uploadPages(context, "bvh nodes", scene.bvhPairs, variant.bvhPages)),
       materials_(
           uploadTable(context, "materials", materialTexels(scene.materials, variant.sheen))) {
+    if (variant.instances)
+        instances_ = uploadTable(context, "instances", scene.instances);
     if (variant.nextEventEstimation)
         emitters_ = uploadTable(context, "emitters",
                                 selectionTable(scene.lights, scene.lightTree,
@@ -147,6 +167,8 @@ void SceneBuffers::appendBindings(
     bindPages(bindings, trianglePages_, WF_BINDING_TRIANGLES, WF_BINDING_TRIANGLE_PAGE1);
     bindPages(bindings, bvhPages_, WF_BINDING_BVH_NODES, WF_BINDING_BVH_PAGE1);
     bindings.push_back({WF_BINDING_MATERIALS, &materials_, BufferAccess::UintTexels});
+    if (instances_)
+        bindings.push_back({WF_BINDING_INSTANCES, &instances_, BufferAccess::UintTexels});
     if (emitters_)
         bindings.push_back({WF_BINDING_EMITTERS, &emitters_, BufferAccess::UintTexels});
     if (lightTree_) {
@@ -169,7 +191,7 @@ void SceneBuffers::appendMemoryReport(
     for (const std::vector<Buffer>* pages : {&trianglePages_, &bvhPages_})
         for (const Buffer& page : *pages)
             report.emplace_back(page.name(), page.size());
-    for (const Buffer* buffer : {&materials_, &emitters_, &lightTree_,
+    for (const Buffer* buffer : {&materials_, &instances_, &emitters_, &lightTree_,
                                  &lightTreeTrails_, &lights_, &environment_, &environmentAlias_})
         if (*buffer)
             report.emplace_back(buffer->name(), buffer->size());

@@ -21,6 +21,10 @@ class Context;
 struct PreparedScene {
     std::vector<Triangle> triangles;
     std::vector<BvhPair> bvhPairs; // what traversal reads
+    // Two-level scenes (instance_bvh.h): the top level's leaves; empty for one-level scenes.
+    std::vector<Instance> instances;
+    uint32_t meshCount = 0;          // instanced meshes
+    uint64_t instancedTriangles = 0; // triangles as rendered, every placement counted
     std::vector<Material> materials;
     LightTable lights;
     LightTree lightTree; // over the lights that have a place, when there are two or more
@@ -55,6 +59,7 @@ private:
     std::vector<Buffer> trianglePages_; // the variant's trianglePages
     std::vector<Buffer> bvhPages_;      // and bvhPages
     Buffer materials_;
+    Buffer instances_; // two-level scenes only
     Buffer emitters_; // empty handle when the scene has no emitters
     Buffer lightTree_;       // nodes and each emitter's trail, with --light-selection tree
     Buffer lightTreeTrails_;

@@ -54,6 +54,7 @@ ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& se
     variant.secondMoment = settings.aov || settings.pixelList;
     variant.adaptive = settings.pixelList;
     variant.thinLens = scene.camera.aperture > 0.0f;
+    variant.instances = !scene.instances.empty();
     variant.sampler = settings.sampler;
     variant.randomizeSamples = settings.randomizeSamples;
     return variant;
@@ -105,6 +106,7 @@ ShaderDefines ShaderVariant::defines() const {
             {"WF_HAS_NORMALS", flag(surface.normals)},
             {"WF_HAS_NORMAL_MAPS", flag(surface.normalMaps)},
             {"WF_HAS_ALPHA_MASK", flag(surface.alphaMask)},
+            {"WF_RAY_CONES", flag(rayCones)},
             {"WF_SAMPLER", std::to_string(static_cast<uint32_t>(sampler))},
             {"WF_SAMPLER_RANDOMIZE", flag(randomizeSamples)},
             {"WF_PACKED_STORES", flag(packedStores)},
@@ -113,6 +115,7 @@ ShaderDefines ShaderVariant::defines() const {
             {"WF_SECOND_MOMENT", flag(secondMoment)},
             {"WF_ADAPTIVE", flag(adaptive)},
             {"WF_THIN_LENS", flag(thinLens)},
+            {"WF_HAS_INSTANCES", flag(instances)},
             {"WF_TRIANGLE_PAGES", std::to_string(trianglePages.count)},
             {"WF_TRIANGLE_PAGE_SHIFT", std::to_string(trianglePages.shift)},
             {"WF_BVH_PAGES", std::to_string(bvhPages.count)},

@@ -58,6 +58,8 @@ struct ShaderVariant {
     bool secondMoment = false;        // WF_SECOND_MOMENT: radiance^2 per pixel (variance)
     bool adaptive = false;            // WF_ADAPTIVE: waves cover a list of pixels
     bool thinLens = false;            // WF_THIN_LENS: the camera has an aperture
+    bool instances = false;           // WF_HAS_INSTANCES: a two-level BVH over instances
+    bool rayCones = false;            // WF_RAY_CONES: texture LOD by ray cones (textured scenes)
     TablePages trianglePages;         // WF_TRIANGLE_PAGES, _SHIFT: set by the renderer
     TablePages bvhPages;              // WF_BVH_PAGES, _SHIFT: set by the renderer
 

@@ -5,6 +5,7 @@
 
 #include "errors.h"
 #include "gpu/context.h"
+#include "scene/mip_chain.h"
 
 namespace wf {
 namespace {
@@ -43,6 +44,16 @@ TextureImage halve(const TextureImage& in) {
     return out;
 }
 
+// Images some reference reads as colour get their mip chain averaged as linear values. An
+// image used both as colour and as data (rare) gets the colour chain.
+std::vector<bool> srgbImages(const SurfaceData& surface) {
+    std::vector<bool> srgb(surface.images.size(), false);
+    for (size_t r = 0; r < surface.textureRefs.size() && r < surface.refImage.size(); ++r)
+        if (surface.refImage[r] < srgb.size() && (surface.textureRefs[r].flags & WF_TEXTURE_SRGB))
+            srgb[surface.refImage[r]] = true;
+    return srgb;
+}
+
 } // namespace
 
 TexelPlan planTexels(const SurfaceData& surface, uint64_t pageBytes) {
@@ -54,12 +65,14 @@ TexelPlan planTexels(const SurfaceData& surface, uint64_t pageBytes) {
         TexelPlacement place;
         place.width = image.width;
         place.height = image.height;
-        while (uint64_t(place.width) * place.height > pageTexels) {
+        // Each image is followed by its mip chain in the same page (textures.glsl finds the
+        // levels from the size alone).
+        while (mipChainTexels(place.width, place.height) > pageTexels) {
             place.width = std::max(1u, place.width / 2);
             place.height = std::max(1u, place.height / 2);
             ++place.halvings;
         }
-        const uint64_t texels = uint64_t(place.width) * place.height;
+        const uint64_t texels = mipChainTexels(place.width, place.height);
         if (plan.pageTexels.empty() || plan.pageTexels.back() + texels > pageTexels) {
             plan.pageTexels.push_back(0);
         }
@@ -147,7 +160,9 @@ SurfaceBuffers::SurfaceBuffers(const Context& context, const SurfaceData& surfac
         refs[r].offset = place.offset;
         refs[r].width = place.width;
         refs[r].height = place.height;
+        refs[r].levels = mipLevelCount(place.width, place.height);
     }
+    const std::vector<bool> srgb = srgbImages(surface);
     textureRefs_ = uploadArray(context, "texture refs", refs);
     for (size_t page = 0; page < plan.pageTexels.size(); ++page) {
         std::vector<uint32_t> texels(plan.pageTexels[page]);
@@ -166,6 +181,11 @@ SurfaceBuffers::SurfaceBuffers(const Context& context, const SurfaceData& surfac
                              surface.images[i].name.c_str(), place.halvings,
                              static_cast<unsigned long long>(pageBytes >> 20));
             std::copy(image->rgba.begin(), image->rgba.end(), texels.begin() + place.offset);
+            size_t next = place.offset + image->rgba.size();
+            for (const TextureImage& level : buildMipChain(*image, srgb[i])) {
+                std::copy(level.rgba.begin(), level.rgba.end(), texels.begin() + next);
+                next += level.rgba.size();
+            }
         }
         const std::string name = "texels " + std::to_string(page);
         texelPages_.push_back(uploadArray(context, name.c_str(), texels));

@@ -84,6 +84,7 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
                                                            : pathCapacity_;
     variant_ = chooseVariant(scene, settings);
     variant_.surface = surfaceFeatures(scene.surface, scene.materials, texelPageBytes(context));
+    variant_.rayCones = variant_.surface.textures && settings.textureLod;
     variant_.packedStores = settings.packedStores && context.shaderInt64();
     const VkPhysicalDeviceLimits& limits = context.properties().limits;
     const uint64_t pageBytes =

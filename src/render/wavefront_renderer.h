@@ -78,6 +78,9 @@ struct RenderSettings {
     // --aov: also accumulate the camera ray's first hit (albedo, shading normal, distance) and
     // the radiance squared per pixel (readAovs). The wavefront only; the image is unchanged.
     bool aov = false;
+    // Textured scenes: filter textures by ray cones from their mip chains (WF_RAY_CONES,
+    // ray_cones.glsl); off, every lookup reads level 0 bilinearly, as before the chains.
+    bool textureLod = true;
     // --target-error: waves cover lists of pixels (renderPixelList) and the film keeps each
     // pixel's radiance squared (readMoments); render() and the progressive calls are refused.
     bool pixelList = false;

@@ -8,15 +8,10 @@
 namespace wf {
 
 Camera frameBounds(const Scene& scene) {
-    glm::vec3 lo(std::numeric_limits<float>::max());
-    glm::vec3 hi(-std::numeric_limits<float>::max());
-    for (const Triangle& tri : scene.triangles)
-        for (const glm::vec3& p : {tri.p0, tri.p1, tri.p2}) {
-            lo = glm::min(lo, p);
-            hi = glm::max(hi, p);
-        }
+    const Bounds box = triangleBounds(scene);
+    const glm::vec3 lo = box.lo, hi = box.hi;
     Camera camera;
-    if (scene.triangles.empty())
+    if (box.empty())
         return camera;
     glm::vec3 center = 0.5f * (lo + hi);
     float radius = std::max(0.5f * glm::length(hi - lo), 1e-6f);

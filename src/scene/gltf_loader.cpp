@@ -18,8 +18,10 @@
 
 #include "errors.h"
 #include "scene/gltf_accessors.h"
+#include "scene/gltf_compression.h"
 #include "scene/gltf_file_access.h"
 #include "scene/gltf_images.h"
+#include "scene/gltf_instancing.h"
 #include "scene/gltf_lights_cameras.h"
 #include "scene/gltf_materials.h"
 #include "scene/gltf_primitives.h"
@@ -82,8 +84,9 @@ glm::dmat4 rotationMatrix(double x, double y, double z, double w) {
 
 class Converter {
 public:
-    Converter(const tinygltf::Model& model, const std::string& file, gltf::FsPolicy& policy)
-        : model_(model), file_(file), policy_(policy) {}
+    Converter(const tinygltf::Model& model, const std::string& file, gltf::FsPolicy& policy,
+              const GltfOptions& options)
+        : model_(model), file_(file), policy_(policy), options_(options) {}
     Scene run();
 
 private:
@@ -96,14 +99,17 @@ private:
     std::vector<int> rootNodes() const;
     glm::dmat4 localTransform(int nodeIndex) const;
     void walkNodes(gltf::PrimitiveBuilder& builder);
-    void checkPlacedTriangles() const;
+    std::vector<std::size_t> countPlacements() const;
+    void checkPlacedTriangles(const std::vector<std::size_t>& placements) const;
     void addDefaultEnvironment();
 
     const tinygltf::Model& model_;
     const std::string& file_;
     gltf::FsPolicy& policy_;
+    const GltfOptions& options_;
     Scene scene_;
     std::vector<int> parent_;
+    std::vector<bool> instanced_; // per mesh (gltf_instancing.h)
 };
 
 // Unknown extensions: one warning each, refused when required (the file says it cannot be
@@ -220,29 +226,10 @@ glm::dmat4 Converter::localTransform(int nodeIndex) const {
     return m;
 }
 
-// Counts the triangles the scene flattens to from the accessors' counts alone, before any is
-// read, so that a small file placing a big mesh at many nodes is refused at once rather than
-// after filling memory. Bad indices are left to walkNodes, which names them.
-void Converter::checkPlacedTriangles() const {
-    // An accessor's count where its buffer view could hold it; 0 otherwise (walkNodes then
-    // names the accessor, which says more than a triangle count would).
-    auto countOf = [&](int index) -> std::size_t {
-        if (index < 0 || std::size_t(index) >= model_.accessors.size())
-            return 0;
-        const tinygltf::Accessor& accessor = model_.accessors[index];
-        if (accessor.bufferView < 0 ||
-            std::size_t(accessor.bufferView) >= model_.bufferViews.size())
-            return 0;
-        const int component = tinygltf::GetComponentSizeInBytes(accessor.componentType);
-        const int components = tinygltf::GetNumComponentsInType(accessor.type);
-        if (component <= 0 || components <= 0)
-            return 0;
-        const std::size_t element = std::size_t(component) * std::size_t(components);
-        return accessor.count <= model_.bufferViews[accessor.bufferView].byteLength / element
-                   ? accessor.count
-                   : 0;
-    };
-    std::size_t total = 0;
+// How many of the nodes the roots reach place each mesh (out-of-range meshes are left to
+// walkNodes, which names them).
+std::vector<std::size_t> Converter::countPlacements() const {
+    std::vector<std::size_t> placements(model_.meshes.size(), 0);
     std::vector<int> stack = rootNodes();
     std::vector<bool> seen(model_.nodes.size(), false);
     while (!stack.empty()) {
@@ -252,21 +239,32 @@ void Converter::checkPlacedTriangles() const {
             continue;
         seen[index] = true;
         const tinygltf::Node& node = model_.nodes[index];
-        if (node.mesh >= 0 && std::size_t(node.mesh) < model_.meshes.size()) {
-            for (const tinygltf::Primitive& primitive : model_.meshes[node.mesh].primitives) {
-                auto position = primitive.attributes.find("POSITION");
-                const std::size_t n = primitive.indices >= 0 ? countOf(primitive.indices)
-                                      : position != primitive.attributes.end()
-                                          ? countOf(position->second)
-                                          : 0;
-                total += gltf::trianglesOfPrimitive(primitive.mode, n);
-            }
-        }
-        if (total > gltf::maxSceneTriangles())
-            fail("its nodes place more than " + std::to_string(gltf::maxSceneTriangles()) +
-                 " triangles, " + gltf::sceneTriangleLimitReason());
+        if (node.mesh >= 0 && std::size_t(node.mesh) < model_.meshes.size())
+            ++placements[node.mesh];
         stack.insert(stack.end(), node.children.begin(), node.children.end());
     }
+    return placements;
+}
+
+// Counts the triangles the scene keeps (flattened copies, and instanced meshes once) from the
+// accessors' counts alone, before any is read, so that a small file placing a big mesh at many
+// nodes is refused at once rather than after filling memory.
+void Converter::checkPlacedTriangles(const std::vector<std::size_t>& placements) const {
+    double total = 0.0, instances = 0.0;
+    for (std::size_t m = 0; m < model_.meshes.size(); ++m) {
+        double triangles = 0.0;
+        for (const tinygltf::Primitive& primitive : model_.meshes[m].primitives)
+            triangles += double(gltf::estimatedTriangles(model_, primitive));
+        total += triangles * (instanced_[m] ? std::min<double>(placements[m], 1.0)
+                                            : double(placements[m]));
+        instances += instanced_[m] ? double(placements[m]) : 0.0;
+    }
+    if (total > double(gltf::maxSceneTriangles()))
+        fail("its nodes place more than " + std::to_string(gltf::maxSceneTriangles()) +
+             " triangles, " + gltf::sceneTriangleLimitReason());
+    if (instances > double(gltf::kMaxInstances))
+        fail("its nodes place more than " + std::to_string(gltf::kMaxInstances) +
+             " instances, the most the renderer keeps");
 }
 
 // Depth-first, children in file order, without recursion so deep trees cannot overflow the
@@ -275,6 +273,7 @@ void Converter::walkNodes(gltf::PrimitiveBuilder& builder) {
     std::vector<std::pair<int, glm::dmat4>> stack;
     const std::vector<int> roots = rootNodes();
     std::vector<bool> visited(model_.nodes.size(), false);
+    std::vector<uint32_t> meshSlot(model_.meshes.size(), gltf::kWorldGeometry);
     for (auto root = roots.rbegin(); root != roots.rend(); ++root) {
         stack.emplace_back(*root, glm::dmat4(1.0));
     }
@@ -295,10 +294,18 @@ void Converter::walkNodes(gltf::PrimitiveBuilder& builder) {
         if (node.mesh != -1) {
             checkIndex(node.mesh, model_.meshes.size(), "mesh", name);
             const auto& primitives = model_.meshes[node.mesh].primitives;
-            for (size_t p = 0; p < primitives.size(); ++p) {
+            // An instanced mesh is read once, in its own space, at its first placement.
+            const bool instanced = instanced_[node.mesh];
+            const bool firstPlacement = instanced && meshSlot[node.mesh] == gltf::kWorldGeometry;
+            if (firstPlacement)
+                meshSlot[node.mesh] = builder.newMesh();
+            for (size_t p = 0; p < primitives.size() && (!instanced || firstPlacement); ++p) {
                 builder.add(primitives[p], "mesh " + std::to_string(node.mesh) + " primitive " +
-                            std::to_string(p), world);
+                            std::to_string(p), instanced ? glm::dmat4(1.0) : world,
+                            meshSlot[node.mesh]);
             }
+            if (instanced)
+                builder.place(meshSlot[node.mesh], world, name);
         }
         for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) {
             stack.emplace_back(*child, world);
@@ -327,7 +334,9 @@ Scene Converter::run() {
     checkNodeTree();
     const uint32_t defaultIndex = uint32_t(tables.materials.size());
     gltf::PrimitiveBuilder builder(model_, file_, tables, defaultIndex);
-    checkPlacedTriangles();
+    const std::vector<std::size_t> placements = countPlacements();
+    instanced_ = gltf::meshesToInstance(model_, placements, tables, options_.instancing);
+    checkPlacedTriangles(placements);
     walkNodes(builder);
     builder.finish(scene_);
     gltf::loadImages(model_, file_, policy_.images, tables, scene_.surface);
@@ -359,24 +368,27 @@ std::string lowerExtension(const std::string& path) {
     return ext;
 }
 
-Scene loadModel(std::vector<unsigned char> bytes, const std::string& path) {
+Scene loadModel(std::vector<unsigned char> bytes, const std::string& path,
+                const GltfOptions& options) {
     const std::string ext = lowerExtension(path);
-    const size_t size = bytes.size();
-    const bool binary = size >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+    const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
     if (ext == ".glb" && !binary) {
         throw InputError(path + ": not a binary glTF file (no 'glTF' magic)");
     }
-    size_t jsonStart = 0, jsonLength = size;
-    if (binary && size >= 20) {
+    size_t jsonStart = 0, jsonLength = bytes.size();
+    if (binary && bytes.size() >= 20) {
         uint32_t chunkLength = 0; // the JSON chunk's length; tinygltf checks it against size
         std::memcpy(&chunkLength, bytes.data() + 12, 4);
         jsonStart = 20;
-        jsonLength = std::min<size_t>(chunkLength, size - 20);
+        jsonLength = std::min<size_t>(chunkLength, bytes.size() - 20);
     }
     if (gltf::nestedTooDeep(bytes.data() + jsonStart, jsonLength)) {
         throw InputError(path + ": JSON nested more than " + std::to_string(gltf::MAX_JSON_DEPTH) +
                          " levels deep");
     }
+    // May rewrite the JSON into what tinygltf accepts (gltf_compression.h).
+    const gltf::CompressionPlan compression = gltf::planDecompression(bytes, binary, path);
+    const size_t size = bytes.size();
     // tinygltf 2.7.0's GLB chunk check forgets the 8-byte chunk header, so it may read up to
     // 8 bytes past the end; zero padding makes that harmless.
     bytes.resize(size + 16, 0);
@@ -413,12 +425,14 @@ Scene loadModel(std::vector<unsigned char> bytes, const std::string& path) {
     if (!messages.empty()) {
         gltf::warn(path, messages);
     }
-    return Converter(model, path, policy).run();
+    gltf::decompress(model, compression, path);
+    return Converter(model, path, policy, options).run();
 }
 
 } // namespace
 
-Scene loadGltf(const std::string& path, std::vector<std::string>* warnings) {
+Scene loadGltf(const std::string& path, std::vector<std::string>* warnings,
+               const GltfOptions& options) {
     const std::string ext = lowerExtension(path);
     if (ext != ".gltf" && ext != ".glb") {
         throw InputError(path + ": expected a .gltf or .glb file");
@@ -429,7 +443,7 @@ Scene loadGltf(const std::string& path, std::vector<std::string>* warnings) {
         throw InputError(path + ": cannot read scene: " + why);
     }
     gltf::WarningSink sink;
-    Scene scene = loadModel(std::move(bytes), path);
+    Scene scene = loadModel(std::move(bytes), path, options);
     for (std::string& line : sink.take()) {
         if (warnings) {
             warnings->push_back(std::move(line));
@@ -440,9 +454,10 @@ Scene loadGltf(const std::string& path, std::vector<std::string>* warnings) {
     return scene;
 }
 
-Scene loadGltfFromMemory(const unsigned char* data, size_t size, const std::string& path) {
+Scene loadGltfFromMemory(const unsigned char* data, size_t size, const std::string& path,
+                         const GltfOptions& options) {
     gltf::WarningSink sink; // the caller (a fuzzer) wants no output
-    return loadModel(std::vector<unsigned char>(data, data + size), path);
+    return loadModel(std::vector<unsigned char>(data, data + size), path, options);
 }
 
 } // namespace wf

@@ -6,15 +6,22 @@
 #include <string>
 #include <vector>
 
+#include "scene/gltf_instancing.h"
 #include "scene/scene.h"
 
 namespace wf {
 
+struct GltfOptions {
+    Instancing instancing = Instancing::Auto; // which multiply placed meshes stay instanced
+};
+
 // Loads triangle lists, strips and fans (points and lines are skipped with one warning on
 // stderr), indexed or not, dense or sparse accessors, float or (KHR_mesh_quantization)
 // integer attributes. Front faces are counter-clockwise in world space: a node whose world
-// matrix mirrors space has its triangles' winding swapped back. Degenerate triangles (zero
-// area in float after the transform) are dropped. A scene with no emissive triangle and no
+// matrix mirrors space has its triangles' winding swapped back (an instanced mesh keeps its
+// own winding and its placement mirrors the faces back at shading). Degenerate triangles (zero
+// area in float after the transform, or in the mesh's space when instanced) are dropped, and
+// so are placements that flatten their mesh (a zero scale), with a warning. A scene with no emissive triangle and no
 // light gets a 1x1 white environment.
 // Only regular files inside the scene file's folder are read (no "..", no absolute URIs, at
 // most 1 GiB each); PNG and JPEG images are decoded with their sizes checked first.
@@ -22,10 +29,12 @@ namespace wf {
 // input: every index, offset, stride and count is checked before use.
 // Warnings (skipped primitives, missing images, ignored extensions) go to `warnings` when
 // given, else to stderr once the whole file has loaded; a refused file prints nothing.
-Scene loadGltf(const std::string& path, std::vector<std::string>* warnings = nullptr);
+Scene loadGltf(const std::string& path, std::vector<std::string>* warnings = nullptr,
+               const GltfOptions& options = {});
 
 // The same for a file already in memory (the fuzzer): `path` names it in messages, its
 // extension says .gltf or .glb, and its folder is where URIs resolve. Warnings are dropped.
-Scene loadGltfFromMemory(const unsigned char* data, std::size_t size, const std::string& path);
+Scene loadGltfFromMemory(const unsigned char* data, std::size_t size, const std::string& path,
+                         const GltfOptions& options = {});
 
 } // namespace wf

@@ -17,7 +17,8 @@ const std::set<std::string> SUPPORTED_EXTENSIONS = {
     "KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_materials_transmission",
     "KHR_materials_specular", "KHR_materials_clearcoat", "KHR_materials_sheen",
     "KHR_materials_volume", "KHR_texture_transform", "KHR_lights_punctual",
-    "KHR_mesh_quantization"};
+    "KHR_mesh_quantization", "KHR_draco_mesh_compression", "EXT_meshopt_compression",
+    "KHR_meshopt_compression"};
 
 double number(const tinygltf::Value& object, const char* key, double fallback) {
     if (!object.IsObject() || !object.Has(key)) {

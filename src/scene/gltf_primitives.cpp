@@ -13,6 +13,8 @@
 #include <glm/gtc/packing.hpp>
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include "scene/tangent_generation.h"
+
 namespace wf::gltf {
 
 namespace {
@@ -69,6 +71,37 @@ glm::vec3 orthogonal(const glm::vec3& n) {
     return glm::vec3(1.0f + s * n.x * n.x * a, s * n.x * n.y * a, -s * n.x);
 }
 
+// MikkTSpace frames for a primitive without TANGENT, per corner of `order`, in the primitive's
+// own space (before any node transform, so every placement of a mesh gets the same frames).
+// glTF's v runs down the image; MikkTSpace's t runs up, so it reads (u, -v).
+std::vector<glm::vec4> mikkTangents(const FloatArray& points, const FloatArray* normals,
+                                    const FloatArray* uvs, const std::vector<uint32_t>& order) {
+    TangentCorners corners;
+    corners.positions.resize(order.size());
+    corners.normals.resize(order.size());
+    corners.uvs.resize(order.size(), glm::vec2(0.0f));
+    for (size_t c = 0; c < order.size(); ++c) {
+        const float* q = points[order[c]];
+        corners.positions[c] = glm::vec3(q[0], q[1], q[2]);
+        if (uvs)
+            corners.uvs[c] = glm::vec2((*uvs)[order[c]][0], -(*uvs)[order[c]][1]);
+    }
+    for (size_t t = 0; t + 2 < order.size(); t += 3) {
+        const glm::vec3* p = &corners.positions[t];
+        const glm::vec3 face = glm::normalize(glm::cross(p[1] - p[0], p[2] - p[0]));
+        for (size_t k = 0; k < 3; ++k) {
+            glm::vec3 n = face;
+            if (normals) {
+                const float* q = (*normals)[order[t + k]];
+                const glm::vec3 given = glm::normalize(glm::vec3(q[0], q[1], q[2]));
+                n = finite(given) ? given : face;
+            }
+            corners.normals[t + k] = n;
+        }
+    }
+    return generateTangents(corners);
+}
+
 } // namespace
 
 uint32_t octEncode(glm::vec3 n) {
@@ -119,7 +152,11 @@ std::vector<uint32_t> PrimitiveBuilder::corners(int mode, size_t vertexCount, in
 }
 
 void PrimitiveBuilder::add(const tinygltf::Primitive& primitive, const std::string& where,
-                           const glm::dmat4& world) {
+                           const glm::dmat4& world, uint32_t mesh) {
+    if (mesh != kWorldGeometry && !grouping_) {
+        meshOf_.assign(triangles_.size(), kWorldGeometry);
+        grouping_ = true;
+    }
     const int mode = primitive.mode;
     if (mode >= TINYGLTF_MODE_POINTS && mode <= TINYGLTF_MODE_LINE_STRIP) {
         ++skippedPrimitives_;
@@ -177,10 +214,15 @@ void PrimitiveBuilder::add(const tinygltf::Primitive& primitive, const std::stri
     const glm::dmat3 linear(world);
     const bool mirrored = glm::determinant(linear) < 0.0;
     const glm::dmat3 normalMatrix = glm::inverseTranspose(linear);
+    const std::vector<glm::vec4> generated =
+        normalMap && !tangents ? mikkTangents(points, normals, uvs[needs.normalMapTexCoord], order)
+                               : std::vector<glm::vec4>{};
     for (size_t t = 0; t < order.size(); t += 3) {
         uint32_t idx[3] = {order[t], order[t + 1], order[t + 2]};
+        size_t slot[3] = {t, t + 1, t + 2}; // corners of `generated`
         if (mirrored) {
             std::swap(idx[1], idx[2]);
+            std::swap(slot[1], slot[2]);
         }
         glm::vec3 p[3];
         for (int k = 0; k < 3; ++k) {
@@ -195,6 +237,8 @@ void PrimitiveBuilder::add(const tinygltf::Primitive& primitive, const std::stri
             continue;
         }
         triangles_.push_back(Triangle{p[0], material, p[1], WF_NO_EMITTER, p[2], 0u});
+        if (grouping_)
+            meshOf_.push_back(mesh);
         const glm::vec3 ng = glm::normalize(glm::cross(p[1] - p[0], p[2] - p[0]));
         glm::vec3 n[3] = {ng, ng, ng};
         for (int k = 0; k < 3 && normals; ++k) {
@@ -223,36 +267,96 @@ void PrimitiveBuilder::add(const tinygltf::Primitive& primitive, const std::stri
             continue;
         }
         TriangleTangents frame{};
-        if (normalMap && tangents) {
+        if (normalMap) {
             uint32_t packed[3];
             for (int k = 0; k < 3; ++k) {
-                const float* q = (*tangents)[idx[k]];
+                const float* q = tangents ? (*tangents)[idx[k]] : &generated[slot[k]].x;
                 glm::vec3 axis(glm::normalize(linear * glm::dvec3(q[0], q[1], q[2])));
                 packed[k] = octEncode(finite(axis) ? axis : orthogonal(n[k]));
                 frame.signs |= ((q[3] < 0.0f) != mirrored) ? 1u << k : 0u;
             }
             frame = {packed[0], packed[1], packed[2], frame.signs};
-        } else if (normalMap) {
-            // Per triangle from the normal map's UVs: T = dP/du; glTF's v runs down the image,
-            // so the bitangent of an unmirrored mapping is -dP/dv = cross(n, T).
-            const TriangleUvs& m = uv[needs.normalMapTexCoord];
-            const glm::vec3 e1 = p[1] - p[0], e2 = p[2] - p[0];
-            const glm::vec2 d1 = m.uv1 - m.uv0, d2 = m.uv2 - m.uv0;
-            const float det = d1.x * d2.y - d2.x * d1.y;
-            glm::vec3 axis = (e1 * d2.y - e2 * d1.y) / det;
-            const glm::vec3 dpdv = (e2 * d1.x - e1 * d2.x) / det;
-            const bool usable = finite(axis) && finite(dpdv) && glm::length(axis) > 0.0f;
-            axis = usable ? glm::normalize(axis) : orthogonal(ng);
-            const bool flip = usable && glm::dot(glm::cross(ng, axis), -dpdv) < 0.0f;
-            const uint32_t packed = octEncode(axis);
-            frame = {packed, packed, packed, flip ? 7u : 0u};
         }
         surface_.tangents.resize(triangles_.size() - 1);
         surface_.tangents.push_back(frame);
     }
 }
 
+void PrimitiveBuilder::place(uint32_t mesh, const glm::dmat4& world, const std::string& where) {
+    const double det = glm::determinant(glm::dmat3(world));
+    // A zero scale flattens the mesh to nothing, and a huge one overflows float: flattened,
+    // every triangle would be dropped as degenerate; and an inverse would not be finite.
+    if (!(std::abs(det) >= double(std::numeric_limits<float>::min()) &&
+          std::abs(det) <= double(std::numeric_limits<float>::max()))) {
+        ++flatteningPlacements_;
+        return;
+    }
+    if (placements_.size() >= kMaxInstances)
+        fail(file_, where + ": more than " + std::to_string(kMaxInstances) + " instances");
+    placements_.push_back({glm::mat4(world), mesh});
+}
+
+// A stable counting sort of the triangles (and every per-triangle array) by mesh, world
+// geometry first; placements of meshes left empty (all their triangles degenerate) go.
+void PrimitiveBuilder::groupByMesh(Scene& scene) {
+    const size_t n = triangles_.size();
+    meshOf_.resize(n, kWorldGeometry);
+    std::vector<size_t> start(size_t(meshCount_) + 2, 0);
+    for (uint32_t m : meshOf_)
+        ++start[m == kWorldGeometry ? 1 : size_t(m) + 2];
+    for (size_t g = 1; g < start.size(); ++g)
+        start[g] += start[g - 1];
+    std::vector<uint32_t> order(n);
+    {
+        std::vector<size_t> next(start.begin(), start.end() - 1);
+        for (size_t i = 0; i < n; ++i)
+            order[next[meshOf_[i] == kWorldGeometry ? 0 : size_t(meshOf_[i]) + 1]++] = uint32_t(i);
+    }
+    meshOf_ = {};
+    auto permute = [&order](auto& array) {
+        if (array.empty())
+            return;
+        std::remove_reference_t<decltype(array)> sorted(array.size());
+        for (size_t i = 0; i < order.size(); ++i)
+            sorted[i] = array[order[i]];
+        array.swap(sorted);
+    };
+    permute(triangles_);
+    permute(surface_.normals);
+    permute(surface_.tangents);
+    permute(surface_.uv0);
+    permute(surface_.uv1);
+    std::vector<uint32_t> kept(meshCount_, kWorldGeometry);
+    std::vector<Bounds> boxes;
+    for (uint32_t m = 0; m < meshCount_; ++m) {
+        const MeshRange range{uint32_t(start[m + 1]), uint32_t(start[m + 2] - start[m + 1])};
+        if (range.triangleCount == 0)
+            continue;
+        kept[m] = uint32_t(scene.meshes.size());
+        scene.meshes.push_back(range);
+        Bounds& box = boxes.emplace_back();
+        for (uint32_t i = range.firstTriangle; i < range.firstTriangle + range.triangleCount; ++i)
+            for (const glm::vec3& p : {triangles_[i].p0, triangles_[i].p1, triangles_[i].p2})
+                box.grow(p);
+    }
+    for (const MeshPlacement& placement : placements_) {
+        const uint32_t mesh = kept[placement.mesh];
+        if (mesh == kWorldGeometry)
+            continue;
+        const Bounds box = transformedBounds(boxes[mesh], placement.worldFromObject);
+        if (!finite(box.lo) || !finite(box.hi))
+            fail(file_, "an instanced mesh is not finite after its node's transforms");
+        scene.placements.push_back({placement.worldFromObject, mesh});
+    }
+    placements_ = {};
+}
+
 void PrimitiveBuilder::finish(Scene& scene) {
+    if (flatteningPlacements_ > 0) {
+        warn(file_, "skipped " + std::to_string(flatteningPlacements_) +
+                        " placements of instanced meshes whose transform has a zero or "
+                        "overflowing scale (flattened, every triangle would be degenerate)");
+    }
     if (skippedPrimitives_ > 0) {
         warn(file_, "skipped " + std::to_string(skippedPrimitives_) +
                         " point or line primitives (only triangles are rendered)");
@@ -279,6 +383,8 @@ void PrimitiveBuilder::finish(Scene& scene) {
     keep(surface_.normals, smoothNormals_ || needTangents_);
     keep(surface_.uv0, needUv0_);
     keep(surface_.uv1, needUv1_);
+    if (meshCount_ > 0)
+        groupByMesh(scene);
     scene.triangles = std::move(triangles_);
     scene.surface.normals = std::move(surface_.normals);
     scene.surface.tangents = std::move(surface_.tangents);

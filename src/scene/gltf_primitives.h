@@ -1,7 +1,7 @@
 // One glTF primitive to world-space triangles plus, per triangle, what shading may need:
-// shading normals (NORMAL, else flat), UVs (TEXCOORD_0/1) and tangents (TANGENT, else made per
-// triangle from the normal map's UVs). Triangle lists, strips and fans; indexed or not. The
-// loader decides at the end which of the collected attributes the scene keeps.
+// shading normals (NORMAL, else flat), UVs (TEXCOORD_0/1) and tangents (TANGENT, else MikkTSpace
+// frames from the normal map's UVs, tangent_generation.h). Triangle lists, strips and fans;
+// indexed or not. The loader decides at the end which of the collected attributes it keeps.
 #pragma once
 #include <cstddef>
 #include <string>
@@ -38,6 +38,11 @@ std::string sceneTriangleLimitReason();
 // n - 2); 0 for points, lines and unknown modes.
 std::size_t trianglesOfPrimitive(int mode, std::size_t corners);
 
+// The most placements of instanced meshes a scene may have (112 bytes each on the GPU).
+constexpr std::size_t kMaxInstances = std::size_t(1) << 24;
+// The `mesh` of add() for geometry flattened into world space.
+constexpr uint32_t kWorldGeometry = 0xffffffffu;
+
 // Octahedral encoding of a unit vector in two 16-bit snorms (decoded by octDecode).
 uint32_t octEncode(glm::vec3 n);
 
@@ -48,9 +53,14 @@ public:
     PrimitiveBuilder(const tinygltf::Model& model, const std::string& file,
                      const MaterialTables& materials, uint32_t defaultMaterial);
 
+    // Flattened geometry comes with its world transform and kWorldGeometry; an instanced mesh's
+    // with the identity and the slot newMesh() gave it, and place() adds its placements.
     void add(const tinygltf::Primitive& primitive, const std::string& where,
-             const glm::dmat4& world);
-    // Moves the triangles into `scene` and keeps only the attributes the scene needs.
+             const glm::dmat4& world, uint32_t mesh = kWorldGeometry);
+    uint32_t newMesh() { return meshCount_++; }
+    void place(uint32_t mesh, const glm::dmat4& world, const std::string& where);
+    // Moves the triangles into `scene` (world geometry first, then mesh by mesh) with the
+    // placements of the meshes left with triangles, and keeps only the attributes it needs.
     void finish(Scene& scene);
     bool usedDefaultMaterial() const { return usedDefault_; }
 
@@ -63,8 +73,15 @@ private:
     const MaterialTables& materials_;
     uint32_t defaultMaterial_;
     AccessorReader reader_;
+    void groupByMesh(Scene& scene);
+
     std::vector<Triangle> triangles_;
     SurfaceData surface_; // every attribute array filled for every triangle
+    std::vector<uint32_t> meshOf_; // per triangle, once some mesh is instanced: its slot
+    bool grouping_ = false;
+    uint32_t meshCount_ = 0;
+    std::vector<MeshPlacement> placements_;
+    size_t flatteningPlacements_ = 0; // dropped: a zero scale
     bool usedDefault_ = false;
     bool smoothNormals_ = false; // some NORMAL differs from the flat normal
     bool needUv0_ = false, needUv1_ = false, needTangents_ = false;

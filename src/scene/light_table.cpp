@@ -65,26 +65,31 @@ double lightPower(const PunctualLight& light, const SceneBounds& bounds) {
 
 } // namespace
 
-SceneBounds sceneBounds(const std::vector<Triangle>& triangles,
-                        const std::vector<PunctualLight>& lights) {
-    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-    auto grow = [&](glm::vec3 p, float r) {
-        lo = glm::min(lo, p - glm::vec3(r));
-        hi = glm::max(hi, p + glm::vec3(r));
-    };
-    for (const Triangle& tri : triangles)
-        for (const glm::vec3& p : {tri.p0, tri.p1, tri.p2})
-            grow(p, 0.0f);
+SceneBounds sceneBounds(Bounds box, const std::vector<PunctualLight>& lights) {
     for (const PunctualLight& light : lights)
-        if (light.type != WF_LIGHT_DIRECTIONAL)
-            grow(light.position, light.type == WF_LIGHT_SPHERE ? light.radius : 0.0f);
+        if (light.type != WF_LIGHT_DIRECTIONAL) {
+            const float r = light.type == WF_LIGHT_SPHERE ? light.radius : 0.0f;
+            box.grow(light.position - glm::vec3(r));
+            box.grow(light.position + glm::vec3(r));
+        }
     SceneBounds bounds;
-    if (lo.x > hi.x)
+    if (box.empty())
         return bounds;
-    bounds.center = 0.5f * (lo + hi);
-    bounds.radius = std::max(0.5f * glm::length(hi - lo), 1e-6f);
+    bounds.center = 0.5f * (box.lo + box.hi);
+    bounds.radius = std::max(0.5f * glm::length(box.hi - box.lo), 1e-6f);
     return bounds;
 }
+
+SceneBounds sceneBounds(const std::vector<Triangle>& triangles,
+                        const std::vector<PunctualLight>& lights) {
+    Bounds box;
+    for (const Triangle& tri : triangles)
+        for (const glm::vec3& p : {tri.p0, tri.p1, tri.p2})
+            box.grow(p);
+    return sceneBounds(box, lights);
+}
+
+SceneBounds sceneBounds(const Scene& scene) { return sceneBounds(triangleBounds(scene), scene.lights); }
 
 LightTable buildLightTable(std::vector<Triangle>& triangles, const std::vector<Material>& materials,
                            std::vector<PunctualLight>& lights, const Environment& environment,

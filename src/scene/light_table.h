@@ -28,6 +28,10 @@ struct SceneBounds {
 
 SceneBounds sceneBounds(const std::vector<Triangle>& triangles,
                         const std::vector<PunctualLight>& lights);
+// `box` (world-space triangles) grown by the finite lights.
+SceneBounds sceneBounds(Bounds box, const std::vector<PunctualLight>& lights);
+// Every world-space triangle, instance and finite light of a loaded scene.
+SceneBounds sceneBounds(const Scene& scene);
 
 // Fills in each triangle's `emitter` field (WF_NO_EMITTER for non-emitters), sorts `lights` so
 // that sphere lights come first, and sets each light's `emitter`.

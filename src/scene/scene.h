@@ -1,6 +1,7 @@
-// The scene as the renderer consumes it: flat world-space triangles and materials, one camera.
-// The loader produces it; the BVH builder reorders its triangles; the light table fills in
-// each triangle's emitter index.
+// The scene as the renderer consumes it: triangles and materials, one camera. Meshes placed once
+// are flattened into world space; meshes the loader instances (gltf_instancing.h) are kept once,
+// in their own space, and placed by transforms. The loader produces it; the BVH builder
+// reorders its triangles; the light table fills in each triangle's emitter index.
 #pragma once
 #include <cstdint>
 #include <string>
@@ -15,6 +16,7 @@ namespace wf {
 using gpu_types::BvhNode;
 using gpu_types::BvhPair;
 using gpu_types::Emitter;
+using gpu_types::Instance;
 using gpu_types::Material;
 using gpu_types::PunctualLight;
 using gpu_types::Triangle;
@@ -40,8 +42,35 @@ struct Environment {
     bool present() const { return width > 0 && height > 0; }
 };
 
+// A mesh kept once for its instances: a range of Scene::triangles, in the mesh's own space.
+struct MeshRange {
+    uint32_t firstTriangle = 0;
+    uint32_t triangleCount = 0;
+};
+
+// One node's placement of a MeshRange.
+struct MeshPlacement {
+    glm::mat4 worldFromObject{1.0f};
+    uint32_t mesh = 0; // index into Scene::meshes
+};
+
+// An axis-aligned box; empty (lo > hi) until something grows it.
+struct Bounds {
+    glm::vec3 lo{3.0e38f};
+    glm::vec3 hi{-3.0e38f};
+    bool empty() const { return lo.x > hi.x; }
+    void grow(glm::vec3 p) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+};
+
 struct Scene {
-    std::vector<Triangle> triangles; // world space, degenerate ones already dropped
+    // Degenerate ones already dropped. [0, worldTriangleCount()) in world space, then the
+    // meshes' ranges in their own space.
+    std::vector<Triangle> triangles;
+    std::vector<MeshRange> meshes;        // empty unless the loader instanced some mesh
+    std::vector<MeshPlacement> placements; // each instanced mesh's placements
     std::vector<Material> materials; // never empty: a default grey material is appended if needed
     Camera camera;                   // the one to render with
     bool hasCamera = false;
@@ -50,6 +79,17 @@ struct Scene {
     std::vector<PunctualLight> lights; // KHR_lights_punctual (and sphere lights)
     Environment environment;         // --env, or uniform white when the scene has no light
     SurfaceData surface;             // vertex attributes and textures, only what is used
+
+    size_t worldTriangleCount() const {
+        return meshes.empty() ? triangles.size() : meshes.front().firstTriangle;
+    }
+    // Triangles as rendered: the world ones plus each placement's mesh.
+    uint64_t instancedTriangleCount() const;
 };
+
+// The box of `box` (in object space) after `worldFromObject`.
+Bounds transformedBounds(const Bounds& box, const glm::mat4& worldFromObject);
+// The world-space bounds of the scene's triangles: world ones and every placement's mesh.
+Bounds triangleBounds(const Scene& scene);
 
 } // namespace wf

@@ -41,10 +41,11 @@ SceneSummary summarize(const Scene& scene) {
         if (t.material < scene.materials.size() && isEmissive(scene.materials[t.material])) {
             ++summary.emissiveTriangleCount;
         }
-        glm::vec3 lo = glm::min(glm::min(t.p0, t.p1), t.p2);
-        glm::vec3 hi = glm::max(glm::max(t.p0, t.p1), t.p2);
-        summary.boundsLo = i == 0 ? lo : glm::min(summary.boundsLo, lo);
-        summary.boundsHi = i == 0 ? hi : glm::max(summary.boundsHi, hi);
+    }
+    const Bounds box = triangleBounds(scene);
+    if (!box.empty()) {
+        summary.boundsLo = box.lo;
+        summary.boundsHi = box.hi;
     }
     summary.hasEmitters = summary.emissiveTriangleCount > 0;
     for (const PunctualLight& light : scene.lights) {

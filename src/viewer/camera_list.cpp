@@ -55,15 +55,10 @@ uint32_t findCamera(const CameraList& list, const std::string& nameOrIndex) {
 
 ViewBounds viewBounds(const Scene& scene) {
     ViewBounds bounds;
-    if (scene.triangles.empty())
+    const Bounds box = triangleBounds(scene);
+    if (box.empty())
         return bounds;
-    glm::vec3 lo(std::numeric_limits<float>::max());
-    glm::vec3 hi(-std::numeric_limits<float>::max());
-    for (const Triangle& tri : scene.triangles)
-        for (const glm::vec3& p : {tri.p0, tri.p1, tri.p2}) {
-            lo = glm::min(lo, p);
-            hi = glm::max(hi, p);
-        }
+    const glm::vec3 lo = box.lo, hi = box.hi;
     bounds.center = 0.5f * (lo + hi);
     bounds.radius = std::max(0.5f * glm::length(hi - lo), 1e-6f);
     return bounds;

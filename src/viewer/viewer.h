@@ -9,6 +9,7 @@
 #include <string>
 
 #include "render/wavefront_renderer.h"
+#include "scene/gltf_instancing.h"
 #include "viewer/display_pass.h"
 
 namespace wf {
@@ -48,6 +49,7 @@ struct ViewerOptions {
     // one); none: the camera `wavefront render` uses.
     std::optional<std::string> camera;
     std::string environmentPath; // --env, replacing the scene's environment
+    Instancing instancing = Instancing::Auto; // --instancing
     std::optional<int> device;
     bool overlay = true;
     bool quiet = false;

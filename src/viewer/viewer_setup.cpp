@@ -18,7 +18,7 @@ uint32_t ViewSettings::effectiveSppLimit() const {
 
 ViewerScene loadViewerScene(const ViewerOptions& options) {
     std::vector<std::string> warnings;
-    Scene scene = loadGltf(options.scenePath, &warnings);
+    Scene scene = loadGltf(options.scenePath, &warnings, GltfOptions{options.instancing});
     if (!options.environmentPath.empty())
         scene.environment = loadEnvironmentExr(options.environmentPath);
     for (const std::string& line : warnings)

@@ -11,7 +11,7 @@ expect "top help lists render" grep -q "render" "$work/stdout"
 check "render help" 0 "$wavefront" render --help
 for flag in --output --spp --width --height --max-depth --rr-depth --seed --json --quiet \
     --device --light-sampling --light-selection --triangle-sampling --sphere-sampling \
-    --min-throughput --clamp --aperture --focus-distance; do
+    --min-throughput --clamp --aperture --focus-distance --texture-filter; do
     expect "render help lists $flag" grep -q -- "$flag" "$work/stdout"
 done
 
@@ -36,6 +36,16 @@ expect "thin lens: its variant" grep -q "WF_THIN_LENS=1" "$work/stderr"
 check "negative aperture" 2 "$wavefront" render "$scenes/cornell_box.gltf" -o "$work/x.exr" \
     --aperture -1
 expect "negative aperture: one line" one_line_error
+
+textured="$(dirname "${BASH_SOURCE[0]}")/../gltf_corpus/valid/normal_map_cylinder_mirrored.gltf"
+check "texture filter" 0 "$wavefront" render "$textured" -o "$work/tf.exr" --spp 1 --width 16 \
+    --max-depth 2 --verbose --quiet
+expect "texture filter: ray cones in the textured variant" grep -q "WF_RAY_CONES=1" "$work/stderr"
+check "texture filter none" 0 "$wavefront" render "$textured" -o "$work/tf.exr" --spp 1 \
+    --width 16 --max-depth 2 --texture-filter none --verbose --quiet
+expect "texture filter none: no ray cones" grep -q "WF_RAY_CONES=0" "$work/stderr"
+check "bad texture filter" 2 "$wavefront" render "$textured" -o "$work/x.exr" --texture-filter box
+expect "bad texture filter: one line" one_line_error
 
 check "quiet render" 0 "$wavefront" render "$scenes/cornell_box.gltf" -o "$work/q.exr" --spp 1 \
     --width 16 --quiet

@@ -2,7 +2,8 @@
 # The command line on real and broken scenes: every invalid corpus file is refused with exit
 # code 2, one line on stderr and no output file; --camera and --env choose and refuse cleanly;
 # textured scenes render; a generated scene of over 300k triangles renders with its BVH
-# statistics in --verbose; one of 3 M triangles, over one buffer's limit, renders.
+# statistics in --verbose; one of 3 M triangles, over one buffer's limit, renders; a mesh placed
+# to 3 M triangles is kept once and instanced (--instancing), and flattened with off.
 # Usage: test_cli_scenes.sh PATH/TO/wavefront SOURCE_DIR
 set -u
 wavefront=$1
@@ -57,10 +58,25 @@ expect "big scene: vertex normals buffer" grep -q "vertex normals" "$work/stderr
 # table spreads over two buffers and the scene renders.
 python3 "$source_dir/bench/make_scaling_scene.py" "$work/over.gltf" --triangles 3000000 >/dev/null
 check "scene over one buffer renders" 0 "$wavefront" render "$work/over.gltf" \
-    -o "$work/over.exr" --spp 1 --width 16 --max-depth 2 --verbose --json "$work/over.json"
+    -o "$work/over.exr" --spp 1 --width 16 --max-depth 2 --verbose --json "$work/over.json" \
+    --instancing off
 if grep -q "device llvmpipe" "$work/stderr"; then # other devices may hold it in one buffer
     expect "over one buffer: a second triangle page" grep -q "triangles page 2" "$work/stderr"
 fi
 expect "over one buffer: all its triangles" json_has "$work/over.json" "d['triangles'] > 2900000"
+expect "over one buffer: flattened" json_has "$work/over.json" "d['instances'] == 0"
+
+# One 100k-triangle pebble placed ~30 times beside a small scene: instanced by default.
+python3 "$source_dir/bench/make_scaling_scene.py" "$work/pebbles.gltf" --triangles 2000 \
+    --instanced-triangles 3000000 >/dev/null
+check "instanced scene renders" 0 "$wavefront" render "$work/pebbles.gltf" \
+    -o "$work/pebbles.exr" --spp 1 --width 16 --max-depth 2 --verbose --json "$work/pebbles.json"
+expect "instanced: two-level BVH in --verbose" grep -q "two-level BVH: 3[0-9] instances" "$work/stderr"
+expect "instanced: unique triangles" json_has "$work/pebbles.json" "d['triangles'] < 110000"
+expect "instanced: placed triangles" json_has "$work/pebbles.json" "d['instancedTriangles'] > 2900000"
+expect "instanced: instances" json_has "$work/pebbles.json" "d['instances'] >= 30"
+check "--instancing refuses a bad mode" 2 "$wavefront" render "$work/pebbles.gltf" \
+    -o "$work/bad.exr" --instancing sometimes
+expect "--instancing: names the modes" grep -q "auto, on or off" "$work/stderr"
 
 finish

@@ -117,12 +117,19 @@ class Gltf:
         self.doc["materials"].append(members)
         return len(self.doc["materials"]) - 1
 
+    def raw(self, data):
+        """Bytes in buffer 0 without a bufferView of their own (compressed data); their offset."""
+        while len(self.bin) % 4:
+            self.bin.append(0)
+        self.bin += data
+        return len(self.bin) - len(data)
+
     def finish(self, uri=None):
         buf = {"byteLength": len(self.bin)}
         if uri is not False:
             buf["uri"] = uri or "data:application/octet-stream;base64," + base64.b64encode(
                 bytes(self.bin)).decode()
-        self.doc["buffers"] = [buf] if self.bin or uri else []
+        self.doc["buffers"] = ([buf] if self.bin or uri else []) + getattr(self, "more_buffers", [])
         return self.doc
 
     def glb(self):
@@ -169,6 +176,70 @@ def tri():
     g = Gltf()
     g.node(mesh=g.mesh({"POSITION": g.floats([0, 0, 0, 1, 0, 0, 0, 1, 0], "VEC3")}))
     return g
+
+
+# Compressed data, written once from QUAD and QUAD_INDICES (and, quantized, the same quad as
+# u16 positions and octahedral int8 normals) with draco::Encoder (libdraco 1.5.5, positions at
+# 14 bits) and meshopt_encodeVertexBuffer / meshopt_encodeIndexBuffer / meshopt_encodeFilterOct
+# (meshoptimizer 0.18).
+DRACO_QUAD = base64.b64decode("RFJBQ08CAgEBAAAABAIAAgAAAR//AREB/wAAAQAJAwAAAgEBAQADAwEwARADACiCmA"
+                              "AAAAAA/z8AAAAAAAAAAAAAAAAAAAAAgD8O")
+MESHOPT_POSITIONS = base64.b64decode(
+    "oAAAATMAAAD//wEzAAAAfn0AAAEMAAAA/wEMAAAAfgAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAA==")
+MESHOPT_TRIANGLES = base64.b64decode("4PAAAHaHVmd4qYZliWiYAWkAAA==")
+MESHOPT_U16_POSITIONS = base64.b64decode(
+    "oAESAAAAARIAAAABBAAAAAEEAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAA")
+MESHOPT_OCT_NORMALS = base64.b64decode(
+    "oAEwAAAAawEPAAAAbGsAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAA2AH8A")
+DRACO = "KHR_draco_mesh_compression"
+
+
+def draco_quad(indices=True, count=4, index_count=6, attribute_id=0, data=DRACO_QUAD):
+    g = Gltf()
+    g.doc["extensionsUsed"] = g.doc["extensionsRequired"] = [DRACO]
+    view = g.view(data)
+    prim = {"attributes": {"POSITION": g.accessor(None, F32, count, "VEC3")},
+            "extensions": {DRACO: {"bufferView": view, "attributes": {"POSITION": attribute_id}}}}
+    if indices:
+        prim["indices"] = g.accessor(None, U16, index_count, "SCALAR")
+    g.doc["meshes"].append({"primitives": [prim]})
+    g.node(mesh=0)
+    return g
+
+
+class Meshopt:
+    """A quad whose views decode into fallback buffer 1 (no uri) from data in buffer 0."""
+    def __init__(self, name="EXT_meshopt_compression", fallback_bytes=1024):
+        self.g, self.name, self.fallback = Gltf(), name, 0
+        self.g.more_buffers = [{"byteLength": fallback_bytes,
+                                "extensions": {name: {"fallback": True}}}]
+        self.g.doc["extensionsUsed"] = self.g.doc["extensionsRequired"] = [name]
+
+    def view(self, data, stride, count, mode, filter=None, view_stride=True):
+        ext = {"buffer": 0, "byteOffset": self.g.raw(data), "byteLength": len(data),
+               "byteStride": stride, "count": count, "mode": mode}
+        if filter:
+            ext["filter"] = filter
+        v = {"buffer": 1, "byteOffset": self.fallback, "byteLength": stride * count,
+             "extensions": {self.name: ext}}
+        if mode == "ATTRIBUTES" and view_stride:
+            v["byteStride"] = stride
+        self.fallback += (stride * count + 3) // 4 * 4
+        self.g.doc["bufferViews"].append(v)
+        return len(self.g.doc["bufferViews"]) - 1
+
+    def quad(self, positions=None, indices=None):
+        """The float quad; `positions`/`indices` override a view's extension members."""
+        pos = self.view(MESHOPT_POSITIONS, 12, 4, "ATTRIBUTES")
+        idx = self.view(MESHOPT_TRIANGLES, 2, 6, "TRIANGLES")
+        self.g.doc["bufferViews"][pos]["extensions"][self.name].update(positions or {})
+        self.g.doc["bufferViews"][idx]["extensions"][self.name].update(indices or {})
+        self.g.doc["accessors"] += [{"bufferView": pos, "componentType": F32, "count": 4,
+                                     "type": "VEC3"},
+                                    {"bufferView": idx, "componentType": U16, "count": 6,
+                                     "type": "SCALAR"}]
+        self.g.node(mesh=self.g.mesh({"POSITION": 0}, 1))
+        return self.g
 
 
 # --- Valid files: each loads; the expectation counts triangles and what the scene keeps. ---
@@ -274,6 +345,36 @@ g = Gltf()
 m = g.material(normalTexture={"index": g.texture(g.image(normal_png()))})
 quad(g, m, normals=True, extra={"TANGENT": g.floats([1, 0, 0, 1] * 4, "VEC4")})
 case("valid/normal_map_with_tangents.gltf", "loads 2 normals=1 tangents=1", g)
+# A smooth, UV-mapped cylinder with a normal map and no TANGENT (MikkTSpace frames are known in
+# closed form: the tangent is dP/du), placed as it is and mirrored.
+pos, nrm, uv, idx = [], [], [], []
+for j in range(3):
+    for i in range(17):
+        a = 2 * math.pi * i / 16
+        pos += [math.sin(a), j / 2, math.cos(a)]
+        nrm += [math.sin(a), 0, math.cos(a)]
+        uv += [i / 16, 1 - j / 2]
+for j in range(2):
+    for i in range(16):
+        a, b, c, d = j * 17 + i, j * 17 + i + 1, (j + 1) * 17 + i + 1, (j + 1) * 17 + i
+        idx += [a, b, c, a, c, d]
+cylinder = (pos, nrm, uv, idx)
+for name, tangents in (("normal_map_cylinder_mirrored.gltf", False),
+                       ("normal_map_cylinder_with_tangents.gltf", True)):
+    g = Gltf()
+    m = g.material(normalTexture={"index": g.texture(g.image(normal_png()))})
+    attrs = {"POSITION": g.floats(pos, "VEC3"), "NORMAL": g.floats(nrm, "VEC3"),
+             "TEXCOORD_0": g.floats(uv, "VEC2")}
+    if tangents:  # the MikkTSpace frames in closed form: dP/du, w = +1
+        tan = []
+        for k in range(0, len(nrm), 3):
+            tan += [nrm[k + 2], 0, -nrm[k], 1]
+        attrs["TANGENT"] = g.floats(tan, "VEC4")
+    mesh = g.mesh(attrs, g.indices(idx), m)
+    g.node(mesh=mesh)
+    g.node(mesh=mesh, scale=[-1, 1, 1], translation=[3, 0, 0])
+    g.doc["scenes"][0]["nodes"] = [0, 1]
+    case("valid/" + name, "loads 128 normals=1 tangents=1", g)
 g = Gltf()
 tex = g.texture(g.image(checker_png(alpha_hole=True)))
 mr = g.texture(g.image(checker_png()))
@@ -349,6 +450,23 @@ g.doc["nodes"][0]["children"] = [1]
 g.doc["nodes"].append({"mesh": 0, "translation": [0, 0, 1]})
 case("valid/instanced_mesh.gltf", "loads 2", g)
 
+case("valid/draco_quad.glb", "loads 2", draco_quad())
+case("valid/draco_quad.gltf", "loads 2", draco_quad())
+case("valid/meshopt_quad.glb", "loads 2", Meshopt().quad())
+case("valid/meshopt_quad_khr.gltf", "loads 2", Meshopt("KHR_meshopt_compression").quad())
+m = Meshopt()
+m.g.doc["extensionsUsed"] = m.g.doc["extensionsRequired"] = [m.name, "KHR_mesh_quantization"]
+pos = m.view(MESHOPT_U16_POSITIONS, 8, 4, "ATTRIBUTES")
+nrm = m.view(MESHOPT_OCT_NORMALS, 4, 4, "ATTRIBUTES", "OCTAHEDRAL")
+idx = m.view(MESHOPT_TRIANGLES, 2, 6, "TRIANGLES")
+m.g.doc["accessors"] = [{"bufferView": pos, "componentType": U16, "count": 4, "type": "VEC3",
+                         "normalized": True},
+                        {"bufferView": nrm, "componentType": I8, "count": 4, "type": "VEC3",
+                         "normalized": True},
+                        {"bufferView": idx, "componentType": U16, "count": 6, "type": "SCALAR"}]
+m.g.node(mesh=m.g.mesh({"POSITION": 0, "NORMAL": 1}, 2), scale=[2, 2, 2])
+case("valid/meshopt_quantized_octahedral.glb", "loads 2 normals=1", m.g)
+
 
 # --- Invalid files: each refused with one line naming the problem. ---
 def broken(name, substring, g):
@@ -363,8 +481,12 @@ case("invalid/text_pretending_glb.glb", "refused magic", b'{"asset":{"version":"
 case("invalid/deep_nesting.gltf", "refused nested",
      b'{"asset":{"version":"2.0"},"extras":' + b"[" * 5000 + b"]" * 5000 + b"}")
 g = tri()
-g.doc["extensionsRequired"] = g.doc["extensionsUsed"] = ["KHR_draco_mesh_compression"]
-broken("required_unknown_extension.gltf", "KHR_draco_mesh_compression", g)
+g.doc["extensionsRequired"] = g.doc["extensionsUsed"] = ["EXT_mesh_gpu_instancing"]
+broken("required_unknown_extension.gltf", "EXT_mesh_gpu_instancing", g)
+# tinygltf alone would refuse this one first, for its indices accessor without bufferView.
+g = draco_quad()
+g.doc["extensionsRequired"] = g.doc["extensionsUsed"] = ["KHR_texture_basisu"]
+broken("required_unknown_before_tinygltf.gltf", "requires glTF extension KHR_texture_basisu", g)
 g = tri()
 g.doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = 7
 broken("accessor_index_out_of_range.gltf", "accessor 7", g)
@@ -501,6 +623,69 @@ broken("texture_transform_infinite.gltf", "KHR_texture_transform", g)
 g = tri()
 g.doc["scenes"][0]["nodes"] = [0, 0]
 broken("node_listed_twice.gltf", "listed twice", g)
+
+# Compressed data that lies, is cut short or breaks the extensions' rules.
+broken("draco_truncated.glb", "does not decode", draco_quad(data=DRACO_QUAD[:40]))
+broken("draco_garbage.gltf", "does not decode", draco_quad(data=b"DRACO" + bytes(range(60))))
+broken("draco_more_vertices_than_accessor.gltf", "decodes to 4 vertices", draco_quad(count=3))
+broken("draco_fewer_vertices_than_accessor.gltf", "decodes to 4 vertices", draco_quad(count=5))
+broken("draco_index_count.gltf", "decodes to 6 indices", draco_quad(index_count=3))
+broken("draco_unknown_attribute_id.gltf", "no attribute id 7", draco_quad(attribute_id=7))
+broken("draco_no_indices.gltf", "needs an indices accessor", draco_quad(indices=False))
+g = draco_quad()
+g.doc["meshes"][0]["primitives"][0]["mode"] = 0
+broken("draco_points_mode.gltf", "triangle lists", g)
+g = draco_quad()
+g.doc["accessors"][0]["type"] = "VEC2"
+broken("draco_position_vec2.gltf", "components", g)
+g = draco_quad()
+g.doc["bufferViews"][0]["byteLength"] = 4096
+broken("draco_bufferview_past_buffer.gltf", "extends past the end of buffer", g)
+g = draco_quad()
+g.doc["accessors"][0]["count"] = 2 ** 30
+broken("draco_huge_count.gltf", "over the limit", g)
+broken("meshopt_stride_mismatch.glb", "differs from the EXT_meshopt_compression byteStride",
+       Meshopt().quad(positions={"byteStride": 16, "count": 3}))
+broken("meshopt_wrong_count.glb", "is not the EXT_meshopt_compression byteStride x count",
+       Meshopt().quad(positions={"count": 5}))
+broken("meshopt_attribute_stride_6.glb", "byteStride 6 is invalid for mode ATTRIBUTES",
+       Meshopt().quad(positions={"byteStride": 6}))
+# Refused before 7 KB are allocated for it: no valid stream of 600 elements is that short.
+m = Meshopt(fallback_bytes=8192)
+g = m.quad()
+g.doc["bufferViews"][0]["byteLength"] = 12 * 600
+g.doc["bufferViews"][0]["extensions"][m.name]["count"] = 600
+broken("meshopt_data_for_fewer_elements.glb", "67 bytes cannot hold 600 elements", g)
+broken("meshopt_octahedral_on_float_vec3.glb", "filter OCTAHEDRAL does not apply",
+       Meshopt().quad(positions={"filter": "OCTAHEDRAL"}))
+broken("meshopt_filter_on_triangles.glb", "applies to ATTRIBUTES only",
+       Meshopt().quad(indices={"filter": "EXPONENTIAL"}))
+broken("meshopt_triangles_stride_3.glb", "byteStride 3 is invalid for mode TRIANGLES",
+       Meshopt().quad(indices={"byteStride": 3}))
+broken("meshopt_lying_bytelength.glb", "extend past the end of buffer 0",
+       Meshopt().quad(positions={"byteLength": 100000}))
+broken("meshopt_truncated.glb", "are not valid ATTRIBUTES data",
+       Meshopt().quad(positions={"byteLength": 30}))
+broken("meshopt_truncated_indices.gltf", "are not valid TRIANGLES data",
+       Meshopt().quad(indices={"byteLength": 9}))
+broken("meshopt_huge_count.glb", "over the limit",
+       Meshopt().quad(positions={"count": 2 ** 36}))
+broken("meshopt_unknown_mode.glb", "mode 'QUADS'", Meshopt().quad(indices={"mode": "QUADS"}))
+broken("meshopt_color_filter.gltf", "filter 'COLOR' is not supported",
+       Meshopt("KHR_meshopt_compression").quad(positions={"filter": "COLOR"}))
+broken("meshopt_negative_offset.glb", "byteOffset must be an integer >= 0",
+       Meshopt().quad(positions={"byteOffset": -4}))
+broken("meshopt_fallback_too_small.glb", "extends past the end of its fallback buffer 1",
+       Meshopt(fallback_bytes=20).quad())
+broken("meshopt_reads_fallback.glb", "a fallback buffer without data",
+       Meshopt().quad(positions={"buffer": 1}))
+g = Meshopt().quad()
+g.doc["bufferViews"].append({"buffer": 1, "byteOffset": 0, "byteLength": 12})
+g.doc["accessors"].append({"bufferView": 2, "componentType": F32, "count": 1, "type": "VEC3"})
+broken("meshopt_plain_view_on_fallback.glb", "but is not compressed", g)
+g = Meshopt().quad()
+g.bin[g.doc["bufferViews"][0]["extensions"]["EXT_meshopt_compression"]["byteOffset"]] = 0xa1
+broken("meshopt_vertex_codec_v1.glb", "version 1 of meshopt's vertex codec", g)
 
 
 g = Gltf()

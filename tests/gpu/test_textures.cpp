@@ -76,22 +76,25 @@ TEST(Textures, SceneWithoutTexturesHasNoTextureCodeOrBuffers) {
     WavefrontRenderer renderer(gpuContext(), prepared, settings(8, 1, 2), compiler);
     const ShaderDefines& defines = renderer.shaderDefines();
     for (const char* name : {"WF_HAS_TEXTURES", "WF_HAS_NORMALS", "WF_HAS_NORMAL_MAPS",
-                             "WF_HAS_ALPHA_MASK", "WF_HAS_TEXCOORD1"}) {
+                             "WF_HAS_ALPHA_MASK", "WF_HAS_TEXCOORD1", "WF_RAY_CONES"}) {
         auto it = std::find_if(defines.begin(), defines.end(),
                                [&](const auto& d) { return d.first == name; });
         ASSERT_NE(it, defines.end()) << name;
         EXPECT_EQ(it->second, "0") << name;
     }
     for (const auto& [name, bytes] : renderer.memoryReport()) {
-        for (const char* word : {"texel", "texture", "texcoords", "normals", "tangents"}) {
+        for (const char* word :
+             {"texel", "texture", "texcoords", "normals", "tangents", "cones"}) {
             EXPECT_EQ(name.find(word), std::string::npos) << name;
         }
     }
     // The compiled code itself: no texture buffer or sampling function in any pass...
-    for (const char* pass : {"shade.comp", "intersect.comp", "shadow.comp"}) {
+    for (const char* pass : {"raygen.comp", "shade.comp", "intersect.comp", "shadow.comp",
+                             "megakernel.comp"}) {
         const std::vector<uint32_t> spirv = compiler.compile(pass, defines).spirv;
         for (const char* name : {"texelPage0", "textureRefTexels", "texcoord0Texels",
-                                 "normalTexels", "sampleTexture", "wfAlphaPasses"}) {
+                                 "normalTexels", "sampleTexture", "wfAlphaPasses", "rayCone",
+                                 "mipLevel"}) {
             EXPECT_FALSE(spirvMentions(spirv, name)) << pass << " has " << name;
         }
     }
@@ -103,10 +106,16 @@ TEST(Textures, SceneWithoutTexturesHasNoTextureCodeOrBuffers) {
             value = "1";
         if (name == "WF_TEXEL_PAGES")
             value = "2";
+        if (name == "WF_RAY_CONES")
+            value = "1";
     }
     const std::vector<uint32_t> shade = compiler.compile("shade.comp", textured).spirv;
     EXPECT_TRUE(spirvMentions(shade, "texelPage1"));
     EXPECT_TRUE(spirvMentions(shade, "normalTexels"));
+    EXPECT_TRUE(spirvMentions(shade, "rayConeTexels"));
+    EXPECT_TRUE(spirvMentions(shade, "mipLevel"));
+    EXPECT_TRUE(spirvMentions(compiler.compile("raygen.comp", textured).spirv, "rayCone"));
+    EXPECT_TRUE(spirvMentions(compiler.compile("megakernel.comp", textured).spirv, "mipLevel"));
     EXPECT_TRUE(spirvMentions(compiler.compile("shadow.comp", textured).spirv, "wfAlphaPasses"));
     EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
 }

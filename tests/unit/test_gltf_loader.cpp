@@ -13,159 +13,20 @@
 #include "scene/gltf_loader.h"
 #include "scene/gltf_primitives.h"
 #include "scene/scene_summary.h"
+#include "mini_gltf.h"
 
 namespace wf {
 namespace {
 
 namespace fs = std::filesystem;
-
-constexpr int U8 = 5121, U16 = 5123, U32 = 5125, F32 = 5126;
-
-// A fresh folder per test under the system temp dir, removed afterwards.
-class TempDir {
-public:
-    TempDir() {
-        const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-        std::string name = std::string("wf_gltf_") + test->test_suite_name() + "_" +
-                           test->name() + "_" + std::to_string(::getpid());
-        for (char& c : name) {
-            c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-        }
-        path_ = fs::temp_directory_path() / name;
-        fs::remove_all(path_);
-        fs::create_directories(path_);
-    }
-    ~TempDir() {
-        std::error_code ignored;
-        fs::remove_all(path_, ignored);
-    }
-    std::string file(const std::string& name) const { return (path_ / name).string(); }
-
-private:
-    fs::path path_;
-};
-
-void writeBytes(const std::string& path, const std::vector<uint8_t>& bytes) {
-    std::ofstream(path, std::ios::binary)
-        .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-}
-
-std::string base64(const std::vector<uint8_t>& in) {
-    static const char* digits =
-        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    for (size_t i = 0; i < in.size(); i += 3) {
-        uint32_t v = uint32_t(in[i]) << 16;
-        v |= i + 1 < in.size() ? uint32_t(in[i + 1]) << 8 : 0;
-        v |= i + 2 < in.size() ? uint32_t(in[i + 2]) : 0;
-        out += digits[(v >> 18) & 63];
-        out += digits[(v >> 12) & 63];
-        out += i + 1 < in.size() ? digits[(v >> 6) & 63] : '=';
-        out += i + 2 < in.size() ? digits[v & 63] : '=';
-    }
-    return out;
-}
-
-std::string join(const std::vector<std::string>& items) {
-    std::string out;
-    for (const auto& item : items) {
-        out += (out.empty() ? "" : ",") + item;
-    }
-    return "[" + out + "]";
-}
-
-// Builds a glTF document piece by piece; members are JSON text, so a test can break any of
-// them on purpose.
-struct MiniGltf {
-    std::vector<uint8_t> bin;
-    std::vector<std::string> views, accessors, meshes, nodes, materials, cameras;
-    std::string scenes = R"([{"nodes":[0]}])";
-    std::string bufferUri; // empty: the buffer is embedded as a data: URI
-
-    int addView(const void* data, size_t bytes, size_t stride = 0) {
-        while (bin.size() % 4) {
-            bin.push_back(0);
-        }
-        views.push_back("{\"buffer\":0,\"byteOffset\":" + std::to_string(bin.size()) +
-                        ",\"byteLength\":" + std::to_string(bytes) +
-                        (stride ? ",\"byteStride\":" + std::to_string(stride) : "") + "}");
-        const auto* p = static_cast<const uint8_t*>(data);
-        bin.insert(bin.end(), p, p + bytes);
-        return int(views.size()) - 1;
-    }
-    int addAccessor(int view, int componentType, size_t count, const std::string& type,
-                    size_t offset = 0) {
-        accessors.push_back("{\"bufferView\":" + std::to_string(view) + ",\"byteOffset\":" +
-                            std::to_string(offset) + ",\"componentType\":" +
-                            std::to_string(componentType) + ",\"count\":" +
-                            std::to_string(count) + ",\"type\":\"" + type + "\"}");
-        return int(accessors.size()) - 1;
-    }
-    int addPositions(const std::vector<float>& xyz) {
-        int view = addView(xyz.data(), xyz.size() * sizeof(float));
-        return addAccessor(view, F32, xyz.size() / 3, "VEC3");
-    }
-    template <class T> int addIndices(const std::vector<T>& indices, int componentType) {
-        int view = addView(indices.data(), indices.size() * sizeof(T));
-        return addAccessor(view, componentType, indices.size(), "SCALAR");
-    }
-    int addMesh(int positions, int indices = -1, int material = -1, int mode = 4) {
-        meshes.push_back("{\"primitives\":[{\"attributes\":{\"POSITION\":" +
-                         std::to_string(positions) + "}" +
-                         (indices >= 0 ? ",\"indices\":" + std::to_string(indices) : "") +
-                         (material >= 0 ? ",\"material\":" + std::to_string(material) : "") +
-                         ",\"mode\":" + std::to_string(mode) + "}]}");
-        return int(meshes.size()) - 1;
-    }
-    std::string json(bool glb = false) const {
-        std::string buffer = "{\"byteLength\":" + std::to_string(bin.size());
-        if (!glb) {
-            buffer += ",\"uri\":\"" +
-                      (bufferUri.empty() ? "data:application/octet-stream;base64," + base64(bin)
-                                         : bufferUri) +
-                      "\"";
-        }
-        return "{\"asset\":{\"version\":\"2.0\"},\"scenes\":" + scenes +
-               ",\"nodes\":" + join(nodes) + ",\"meshes\":" + join(meshes) +
-               ",\"materials\":" + join(materials) + ",\"cameras\":" + join(cameras) +
-               ",\"accessors\":" + join(accessors) + ",\"bufferViews\":" + join(views) +
-               ",\"buffers\":[" + buffer + "}]}";
-    }
-    // Writes <dir>/<name>, and the buffer beside it when bufferUri names a plain file.
-    std::string write(const TempDir& dir, const std::string& name = "scene.gltf") const {
-        std::ofstream(dir.file(name)) << json();
-        if (!bufferUri.empty() && bufferUri.find('/') == std::string::npos) {
-            writeBytes(dir.file(bufferUri), bin);
-        }
-        return dir.file(name);
-    }
-    std::string writeGlb(const TempDir& dir, const std::string& name = "scene.glb") const {
-        std::string text = json(true);
-        while (text.size() % 4) {
-            text += ' ';
-        }
-        std::vector<uint8_t> chunk = bin;
-        while (chunk.size() % 4) {
-            chunk.push_back(0);
-        }
-        auto u32 = [](std::vector<uint8_t>& out, uint32_t v) {
-            for (int i = 0; i < 4; ++i) {
-                out.push_back(uint8_t(v >> (8 * i)));
-            }
-        };
-        std::vector<uint8_t> out = {'g', 'l', 'T', 'F'};
-        u32(out, 2);
-        u32(out, uint32_t(12 + 8 + text.size() + 8 + chunk.size()));
-        u32(out, uint32_t(text.size()));
-        u32(out, 0x4E4F534A); // "JSON"
-        out.insert(out.end(), text.begin(), text.end());
-        u32(out, uint32_t(chunk.size()));
-        u32(out, 0x004E4942); // "BIN\0"
-        out.insert(out.end(), chunk.begin(), chunk.end());
-        writeBytes(dir.file(name), out);
-        return dir.file(name);
-    }
-};
+using test::base64;
+using test::F32;
+using test::MiniGltf;
+using test::TempDir;
+using test::U16;
+using test::U32;
+using test::U8;
+using test::writeBytes;
 
 const std::vector<float> TRIANGLE = {0, 0, 0, 1, 0, 0, 0, 1, 0};
 
@@ -532,7 +393,8 @@ namespace wf {
 namespace {
 
 // A small file that places one 1000-triangle mesh at more nodes than memory can flatten is
-// refused at once, from the accessors' counts, naming the limit, before any triangle is read.
+// refused at once when flattened (--instancing off), from the accessors' counts, naming the
+// limit, before any triangle is read; instanced (the default), it loads as 1000 triangles.
 TEST(GltfLoader, PlacingAMeshPastTheTriangleLimitIsRefusedUpFront) {
     TempDir dir;
     MiniGltf g;
@@ -549,8 +411,13 @@ TEST(GltfLoader, PlacingAMeshPastTheTriangleLimitIsRefusedUpFront) {
     }
     g.scenes = "[{\"nodes\":[" + roots + "]}]";
     const std::string path = g.write(dir);
+    const Scene instanced = loadGltf(path);
+    EXPECT_EQ(instanced.triangles.size(), 1000u);
+    EXPECT_EQ(instanced.placements.size(), nodes);
     try {
-        loadGltf(path);
+        GltfOptions flatten;
+        flatten.instancing = Instancing::Off;
+        loadGltf(path, nullptr, flatten);
         FAIL() << "a scene of " << nodes * 1000 << " triangles loaded";
     } catch (const InputError& e) {
         const std::string message = e.what();

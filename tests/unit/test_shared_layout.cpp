@@ -58,7 +58,7 @@ void main() {
         counters.depthRays[3] + counters.depthShadowRays[2];
     light.emitter = light.type + uint(light.position.x + light.direction.x + light.radius +
         light.intensity.x + light.cosInner + light.cosOuter + light.pad1 + light.pad2);
-    tref.pad = tref.page + tref.offset + tref.width + tref.height + tref.flags +
+    tref.levels = tref.page + tref.offset + tref.width + tref.height + tref.flags +
         uint(tref.uRow.x + tref.vRow.x) + tnorm.n0 + tnorm.n1 + tnorm.n2 + tnorm.pad +
         ttan.t0 + ttan.t1 + ttan.t2 + ttan.signs + uint(tuv[1].uv0.x + tuv[1].uv1.x + tuv[1].uv2.x);
 }

@@ -1,0 +1,11 @@
+// Ray cones in the passes (the rule and its math: ray_cones.h): the camera ray's cone from the
+// render parameters. Compiled only with WF_RAY_CONES (textured scenes); needs bindings.glsl.
+#ifndef WF_RAY_CONES_GLSL
+#define WF_RAY_CONES_GLSL
+#if WF_RAY_CONES
+#include "ray_cones.h"
+
+vec2 cameraCone() { return cameraCone(params.tanHalfFovY, params.height); }
+
+#endif
+#endif
