@@ -121,6 +121,14 @@ TEST(MaterialLayers, SceneWithoutThemCompilesNoneOfTheirCode) {
     EXPECT_FALSE(spirvMentions(sheen, "coatReflection"));
     EXPECT_TRUE(spirvMentions(volume, "absorption"));
     EXPECT_FALSE(spirvMentions(volume, "layeredSample"));
+    // Every switch at once, in both shading passes (the host builds such variants too).
+    ShaderDefines all = defines;
+    for (auto& [key, value] : all)
+        if (key == "WF_HAS_CLEARCOAT" || key == "WF_HAS_SHEEN" || key == "WF_HAS_VOLUME" ||
+            key == "WF_HAS_SPECULAR_TEXTURES" || key == "WF_HAS_TEXTURES")
+            value = "1";
+    for (const char* pass : {"shade.comp", "megakernel.comp"})
+        EXPECT_TRUE(spirvMentions(compiler.compile(pass, all).spirv, "layeredSample")) << pass;
     EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
 }
 
