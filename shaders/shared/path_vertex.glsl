@@ -5,6 +5,13 @@
 // bsdf, lights and surface.
 // Estimator: WF_LIGHT_SAMPLING 0 = BSDF sampling only, 1 = NEE only, 2 = MIS (power heuristic).
 #include "ray_cones.glsl"
+// Scenes with a clear coat or sheen shade with bsdf_layers.h's layered BSDF instead of bsdf.h's.
+#if WF_HAS_CLEARCOAT || WF_HAS_SHEEN
+#define WF_BSDF_LAYERS 1
+#include "bsdf_layers.h"
+#else
+#define WF_BSDF_LAYERS 0
+#endif
 
 struct PathVertex {
     // In: where the path is.
@@ -111,6 +118,21 @@ BsdfParams bsdfAt(SurfaceHit surface) {
     return bsdf;
 }
 
+#if WF_BSDF_LAYERS
+BsdfLayers layersAt(SurfaceHit surface) {
+    BsdfLayers layers = BsdfLayers(0.0, 0.0, vec3(0.0), 0.0);
+#if WF_HAS_CLEARCOAT
+    layers.clearcoat = surface.clearcoat;
+    layers.clearcoatRoughness = surface.clearcoatRoughness;
+#endif
+#if WF_HAS_SHEEN
+    layers.sheenColor = surface.sheenColor;
+    layers.sheenRoughness = surface.sheenRoughness;
+#endif
+    return layers;
+}
+#endif
+
 void shadePathVertex(inout PathVertex v) {
     v.radiance = vec3(0.0);
     v.continues = false;
@@ -133,6 +155,13 @@ void shadePathVertex(inout PathVertex v) {
 #endif
     SurfaceHit surface = loadSurface(v.hit.x, v.hit.w, uintBitsToFloat(v.hit.y),
                                      uintBitsToFloat(v.hit.z), wo, coneWidth);
+#if WF_HAS_VOLUME
+    // KHR_materials_volume, Beer-Lambert: a ray that meets a transmissive surface from behind
+    // has crossed that mesh's inside over t (world units). Exact for closed meshes that hold
+    // no other surface; see README's Materials section for the rule's limits.
+    if (!surface.frontFace && surface.transmission > 0.0)
+        v.beta *= exp(-surface.absorption * t);
+#endif
 #if WF_AOV
     v.aovAlbedoDistance = vec4(surface.baseColor, t);
     v.aovNormal = surface.ns;
@@ -149,6 +178,9 @@ void shadePathVertex(inout PathVertex v) {
     }
 
     BsdfParams bsdf = bsdfAt(surface);
+#if WF_BSDF_LAYERS
+    BsdfLayers layers = layersAt(surface);
+#endif
     // Opaque surfaces shade two-sided (the frame faces the arriving ray); transmissive ones
     // keep +z on the outside so that the BSDF knows which medium the ray is in.
     bool flip = surface.transmission > 0.0 && !surface.frontFace;
@@ -166,7 +198,12 @@ void shadePathVertex(inout PathVertex v) {
 
 #if WF_HAS_EMITTERS && WF_LIGHT_SAMPLING != 0
     // Next-event estimation: the connection adds one more path segment.
-    if (v.depth + 2u <= params.maxDepth && bsdfHasNonDelta(bsdf)) {
+#if WF_BSDF_LAYERS
+    bool hasNonDelta = layeredHasNonDelta(bsdf, layers);
+#else
+    bool hasNonDelta = bsdfHasNonDelta(bsdf);
+#endif
+    if (v.depth + 2u <= params.maxDepth && hasNonDelta) {
         LightSample light = sampleLight(vertexSample1D(v, WF_DIM_LIGHT_CHOICE),
                                         vertexSample2D(v, WF_DIM_LIGHT_POINT),
                                         vertexSample1D(v, WF_DIM_LIGHT_EXTRA), surface.p,
@@ -174,11 +211,20 @@ void shadePathVertex(inout PathVertex v) {
         vec3 wiLocal = vec3(dot(light.direction, tangent), dot(light.direction, bitangent),
                             dot(light.direction, n));
         if (light.pdf > 0.0) {
+#if WF_BSDF_LAYERS
+            vec3 f = layeredEval(bsdf, layers, woLocal, wiLocal);
+#else
             vec3 f = bsdfEval(bsdf, woLocal, wiLocal);
+#endif
             float weight = 1.0;
 #if WF_LIGHT_SAMPLING == 2
+#if WF_BSDF_LAYERS
+            if (!light.isDelta)
+                weight = powerHeuristic(light.pdf, layeredPdf(bsdf, layers, woLocal, wiLocal));
+#else
             if (!light.isDelta)
                 weight = powerHeuristic(light.pdf, bsdfPdf(bsdf, woLocal, wiLocal));
+#endif
 #endif
             vec3 contribution = v.beta * f * light.radiance * (abs(wiLocal.z) * weight / light.pdf);
             v.shadowOrigin =
@@ -194,9 +240,15 @@ void shadePathVertex(inout PathVertex v) {
     if (v.depth + 1u >= params.maxDepth)
         return;
     BsdfSample s;
+#if WF_BSDF_LAYERS
+    if (!layeredSample(bsdf, layers, woLocal, vertexSample1D(v, WF_DIM_BSDF_LOBE),
+                       vertexSample2D(v, WF_DIM_BSDF), s))
+        return;
+#else
     if (!bsdfSample(bsdf, woLocal, vertexSample1D(v, WF_DIM_BSDF_LOBE),
                     vertexSample2D(v, WF_DIM_BSDF), s))
         return;
+#endif
     vec3 wi = normalize(tangent * s.wi.x + bitangent * s.wi.y + n * s.wi.z);
     vec3 beta = v.beta * s.weight;
     float etaScale = v.etaScale * s.eta * s.eta;

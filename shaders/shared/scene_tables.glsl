@@ -200,18 +200,44 @@ BvhPair bvhPairAt(uint index) {
                    uintBitsToFloat(c.xyz), c.w, uintBitsToFloat(d.xyz), d.w);
 }
 
+#if WF_HAS_SHEEN
+#include "sheen_albedo_table.h"
+// The sheen albedo table (sheen.h) rides at the front of the material table, four nodes a texel.
+#define WF_MATERIAL_TABLE_START WF_SHEEN_TABLE_TEXELS
+float sheenAlbedoNode(int k) {
+    return uintBitsToFloat(wfTexel(materialTexels, uint(k) >> 2)[k & 3]);
+}
+#else
+#define WF_MATERIAL_TABLE_START 0u
+#endif
+
 Material materialAt(uint index) {
-    uint base = index * WF_MATERIAL_TEXELS;
+    uint base = WF_MATERIAL_TABLE_START + index * WF_MATERIAL_TEXELS;
     uvec4 t0 = wfTexel(materialTexels, base);
     uvec4 t1 = wfTexel(materialTexels, base + 1u);
     uvec4 t2 = wfTexel(materialTexels, base + 2u);
     uvec4 t3 = wfTexel(materialTexels, base + 3u);
     uvec4 t4 = wfTexel(materialTexels, base + 4u);
     uvec4 t5 = wfTexel(materialTexels, base + 5u);
+    // The extensions' texels only where the scene uses them.
+    uvec4 t6 = uvec4(WF_NO_TEXTURE, 0u, 0u, 0u);
+    uvec4 t7 = uvec4(0u);
+    uvec4 t8 = uvec4(0u);
+#if WF_HAS_SPECULAR_TEXTURES || WF_HAS_CLEARCOAT
+    t6 = wfTexel(materialTexels, base + 6u);
+#endif
+#if WF_HAS_SHEEN
+    t7 = wfTexel(materialTexels, base + 7u);
+#endif
+#if WF_HAS_VOLUME
+    t8 = wfTexel(materialTexels, base + 8u);
+#endif
     return Material(uintBitsToFloat(t0), uintBitsToFloat(t1.xyz), t1.w, uintBitsToFloat(t2.x),
                     uintBitsToFloat(t2.y), uintBitsToFloat(t2.z), uintBitsToFloat(t2.w),
                     uintBitsToFloat(t3.xyz), uintBitsToFloat(t3.w), uintBitsToFloat(t4.x),
-                    uintBitsToFloat(t4.y), t4.z, t4.w, t5.x, t5.y, t5.z, t5.w);
+                    uintBitsToFloat(t4.y), t4.z, t4.w, t5.x, t5.y, t5.z, t5.w, t6.x,
+                    uintBitsToFloat(t6.y), uintBitsToFloat(t6.z), t6.w, uintBitsToFloat(t7.xyz),
+                    uintBitsToFloat(t7.w), uintBitsToFloat(t8.xyz), uintBitsToFloat(t8.w));
 }
 
 #if WF_HAS_INSTANCES

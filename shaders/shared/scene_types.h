@@ -78,9 +78,9 @@ struct Instance {
 #define WF_MATERIAL_ALPHA_BLEND 4u // see the loader for how BLEND is approximated
 #define WF_NO_TEXTURE 0xffffffffu
 
-// glTF metallic-roughness material with KHR_materials_specular, _transmission, _ior and
-// _emissive_strength folded in. Texture fields index the texture-reference table, or hold
-// WF_NO_TEXTURE.
+// glTF metallic-roughness material with KHR_materials_specular, _transmission, _ior,
+// _emissive_strength, _clearcoat, _sheen and _volume folded in. Texture fields index the
+// texture-reference table, or hold WF_NO_TEXTURE.
 struct Material {
     vec4 baseColor;     // rgb: linear base colour, a: alpha
     vec3 emission;      // emissiveFactor x KHR_materials_emissive_strength
@@ -98,8 +98,33 @@ struct Material {
     uint normalTexture;
     uint emissiveTexture;
     uint transmissionTexture;
+    uint specularTexture;      // its A channel multiplies specular
+    uint specularColorTexture; // its RGB (sRGB) multiplies specularColor
+    float clearcoat;           // KHR_materials_clearcoat clearcoatFactor; 0: no coat
+    float clearcoatRoughness;
     uint pad;
+    vec3 sheenColor;           // KHR_materials_sheen sheenColorFactor; 0: no sheen
+    float sheenRoughness;
+    vec3 attenuation;          // KHR_materials_volume sigma_a = -ln(attenuationColor) / distance
+    float thickness;           // thicknessFactor; 0 is thin-walled: no attenuation
 };
+
+// Per-scene switches for the material extensions (ShaderVariant), off in shaders compiled
+// without them. (C++ tests of bsdf_layers.h compile both layers.)
+#ifndef __cplusplus
+#ifndef WF_HAS_CLEARCOAT
+#define WF_HAS_CLEARCOAT 0
+#endif
+#ifndef WF_HAS_SHEEN
+#define WF_HAS_SHEEN 0
+#endif
+#ifndef WF_HAS_VOLUME
+#define WF_HAS_VOLUME 0
+#endif
+#ifndef WF_HAS_SPECULAR_TEXTURES
+#define WF_HAS_SPECULAR_TEXTURES 0
+#endif
+#endif
 
 // The kind of light an emitter-table entry refers to, in the top two bits of `source`.
 #define WF_EMITTER_TRIANGLE 0x00000000u    // | triangle index
@@ -132,7 +157,7 @@ struct Emitter {
 #define WF_BVH_PAGES 1
 #define WF_BVH_PAGE_SHIFT 31
 #endif
-#define WF_MATERIAL_TEXELS 6u
+#define WF_MATERIAL_TEXELS 9u
 #define WF_INSTANCE_TEXELS 7u
 
 #ifdef __cplusplus
@@ -149,12 +174,18 @@ static_assert(offsetof(wf::gpu_types::Triangle, p2) == 32);
 static_assert(sizeof(wf::gpu_types::BvhNode) == 32);
 static_assert(offsetof(wf::gpu_types::BvhNode, hi) == 16);
 static_assert(offsetof(wf::gpu_types::BvhNode, count) == 28);
-static_assert(sizeof(wf::gpu_types::Material) == 96);
+static_assert(sizeof(wf::gpu_types::Material) == 144);
 static_assert(offsetof(wf::gpu_types::Material, emission) == 16);
 static_assert(offsetof(wf::gpu_types::Material, flags) == 28);
 static_assert(offsetof(wf::gpu_types::Material, specularColor) == 48);
 static_assert(offsetof(wf::gpu_types::Material, specular) == 60);
-static_assert(offsetof(wf::gpu_types::Material, pad) == 92);
+static_assert(offsetof(wf::gpu_types::Material, specularTexture) == 92);
+static_assert(offsetof(wf::gpu_types::Material, specularColorTexture) == 96);
+static_assert(offsetof(wf::gpu_types::Material, pad) == 108);
+static_assert(offsetof(wf::gpu_types::Material, sheenColor) == 112);
+static_assert(offsetof(wf::gpu_types::Material, sheenRoughness) == 124);
+static_assert(offsetof(wf::gpu_types::Material, attenuation) == 128);
+static_assert(offsetof(wf::gpu_types::Material, thickness) == 140);
 static_assert(sizeof(wf::gpu_types::Emitter) == 16);
 static_assert(sizeof(wf::gpu_types::Instance) == 16 * WF_INSTANCE_TEXELS);
 static_assert(offsetof(wf::gpu_types::Instance, worldFromObject0) == 48);

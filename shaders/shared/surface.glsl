@@ -4,7 +4,9 @@
 // shade.comp stays about light transport. Per-scene switches (texture_types.h): WF_HAS_NORMALS
 // interpolates vertex normals, WF_HAS_NORMAL_MAPS perturbs them with the normal texture,
 // WF_HAS_TEXTURES multiplies the factors by their textures (glTF metallic-roughness: B is
-// metalness, G roughness; colour textures are sRGB-decoded in textures.glsl).
+// metalness, G roughness; colour textures are sRGB-decoded in textures.glsl), and
+// WF_HAS_SPECULAR_TEXTURES the KHR_materials_specular maps. WF_HAS_CLEARCOAT, WF_HAS_SHEEN and
+// WF_HAS_VOLUME carry those extensions' factors (their textures are not supported).
 #include "textures.glsl"
 
 struct SurfaceHit {
@@ -25,6 +27,17 @@ struct SurfaceHit {
     float specular;
     vec3 specularColor;
     vec3 emission;   // already zero for faces that do not emit
+#if WF_HAS_CLEARCOAT
+    float clearcoat;
+    float clearcoatRoughness;
+#endif
+#if WF_HAS_SHEEN
+    vec3 sheenColor;
+    float sheenRoughness;
+#endif
+#if WF_HAS_VOLUME
+    vec3 absorption; // sigma_a behind the surface (KHR_materials_volume); zero if thin-walled
+#endif
 };
 
 vec3 decodeUnit(uint packed) { return octDecode(unpackSnorm2x16(packed)); }
@@ -225,6 +238,25 @@ SurfaceHit loadSurface(uint instanceIndex, uint triangleIndex, float b1, float b
     if (material.transmissionTexture != WF_NO_TEXTURE)
         s.transmission *= surfaceTexture(material.transmissionTexture, triangleIndex, b1, b2,
                                          footprint).r;
+#if WF_HAS_SPECULAR_TEXTURES
+    // KHR_materials_specular: the strength in A, the colour in RGB (sRGB).
+    if (material.specularTexture != WF_NO_TEXTURE)
+        s.specular *= surfaceTexture(material.specularTexture, triangleIndex, b1, b2, footprint).a;
+    if (material.specularColorTexture != WF_NO_TEXTURE)
+        s.specularColor *= surfaceTexture(material.specularColorTexture, triangleIndex, b1, b2,
+                                          footprint).rgb;
+#endif
+#endif
+#if WF_HAS_CLEARCOAT
+    s.clearcoat = material.clearcoat;
+    s.clearcoatRoughness = material.clearcoatRoughness;
+#endif
+#if WF_HAS_SHEEN
+    s.sheenColor = material.sheenColor;
+    s.sheenRoughness = material.sheenRoughness;
+#endif
+#if WF_HAS_VOLUME
+    s.absorption = material.thickness > 0.0 ? material.attenuation : vec3(0.0);
 #endif
     s.baseColor = base.rgb;
     s.alpha = base.a;

@@ -1,8 +1,11 @@
 #include "render/scene_buffers.h"
 
+#include <cstring>
+
 #include "scene/bvh_tuning.h"
 #include "scene/instance_bvh.h"
 #include "shaders/shared/render_types.h"
+#include "shaders/shared/sheen.h"
 
 namespace wf {
 
@@ -112,6 +115,18 @@ void bindPages(DescriptorBindings& bindings, const std::vector<Buffer>& pages,
                             &pages[page], BufferAccess::UintTexels});
 }
 
+// The material table as texels; scenes with a sheen get the sheen albedo table in front
+// (scene_tables.glsl reads it there).
+std::vector<glm::vec4> materialTexels(const std::vector<Material>& materials, bool sheen) {
+    const size_t front = sheen ? WF_SHEEN_TABLE_TEXELS : 0;
+    std::vector<glm::vec4> texels(front + materials.size() * WF_MATERIAL_TEXELS, glm::vec4(0.0f));
+    if (sheen)
+        std::memcpy(texels.data(), gpu_types::WF_SHEEN_ALBEDO, sizeof gpu_types::WF_SHEEN_ALBEDO);
+    if (!materials.empty())
+        std::memcpy(texels.data() + front, materials.data(), materials.size() * sizeof(Material));
+    return texels;
+}
+
 } // namespace
 
 SceneBuffers::SceneBuffers(const Context& context, const PreparedScene& scene,
@@ -119,7 +134,8 @@ SceneBuffers::SceneBuffers(const Context& context, const PreparedScene& scene,
     : defines_(variant.defines()),
       trianglePages_(uploadPages(context, "triangles", scene.triangles, variant.trianglePages)),
       bvhPages_(uploadPages(context, "bvh nodes", scene.bvhPairs, variant.bvhPages)),
-      materials_(uploadTable(context, "materials", scene.materials)) {
+      materials_(
+          uploadTable(context, "materials", materialTexels(scene.materials, variant.sheen))) {
     if (variant.instances)
         instances_ = uploadTable(context, "instances", scene.instances);
     if (variant.nextEventEstimation)

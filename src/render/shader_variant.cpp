@@ -34,6 +34,16 @@ ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& se
         scene.materials.begin(), scene.materials.end(), [](const Material& m) {
             return m.metallic <= 0.0f && m.specular <= 0.0f && m.transmission <= 0.0f;
         });
+    // Material extensions compile in only where some material uses them (zero factors stay
+    // zero whatever their textures hold; absorption acts only inside transmissive meshes).
+    for (const Material& m : scene.materials) {
+        variant.clearcoat |= m.clearcoat > 0.0f;
+        variant.sheen |= std::max({m.sheenColor.x, m.sheenColor.y, m.sheenColor.z}) > 0.0f;
+        variant.volume |= m.transmission > 0.0f && m.thickness > 0.0f &&
+                          std::max({m.attenuation.x, m.attenuation.y, m.attenuation.z}) > 0.0f;
+        variant.specularTextures |=
+            m.specularTexture != WF_NO_TEXTURE || m.specularColorTexture != WF_NO_TEXTURE;
+    }
     // The smallest register stack that holds the tree's stack need (bvh_traverse.h).
     const uint32_t need = scene.bvhStats.stackNeed;
     variant.registerStack = !settings.registerStack               ? 0u
@@ -86,6 +96,10 @@ ShaderDefines ShaderVariant::defines() const {
             {"WF_TRIANGLE_SOLID_ANGLE", flag(triangleSolidAngle)},
             {"WF_SPHERE_SOLID_ANGLE", flag(sphereSolidAngle)},
             {"WF_BSDF_DIFFUSE_ONLY", flag(diffuseOnly)},
+            {"WF_HAS_CLEARCOAT", flag(clearcoat)},
+            {"WF_HAS_SHEEN", flag(sheen)},
+            {"WF_HAS_VOLUME", flag(volume)},
+            {"WF_HAS_SPECULAR_TEXTURES", flag(specularTextures && surface.textures)},
             {"WF_HAS_TEXTURES", flag(surface.textures)},
             {"WF_TEXEL_PAGES", std::to_string(surface.texelPages)},
             {"WF_HAS_TEXCOORD1", flag(surface.texcoord1)},

@@ -45,6 +45,10 @@ struct ShaderVariant {
     bool triangleSolidAngle = true;
     bool sphereSolidAngle = true;
     bool diffuseOnly = false;         // every material Lambertian: no specular layer code
+    bool clearcoat = false;           // WF_HAS_CLEARCOAT: some material has a clear coat
+    bool sheen = false;               // WF_HAS_SHEEN: some material has a sheen
+    bool volume = false;              // WF_HAS_VOLUME: some transmissive material absorbs
+    bool specularTextures = false;    // WF_HAS_SPECULAR_TEXTURES: KHR_materials_specular maps
     SurfaceFeatures surface;          // textures, normals, alpha: set by the renderer
     SamplerKind sampler = kDefaultSampler; // WF_SAMPLER (rng.h)
     bool randomizeSamples = true;     // WF_SAMPLER_RANDOMIZE: off for --no-randomize

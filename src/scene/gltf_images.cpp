@@ -130,7 +130,8 @@ void loadImages(const tinygltf::Model& model, const std::string& file,
     }
     for (Material& m : tables.materials) {
         for (uint32_t* field : {&m.metallicRoughnessTexture, &m.normalTexture,
-                                &m.emissiveTexture, &m.transmissionTexture}) {
+                                &m.emissiveTexture, &m.transmissionTexture,
+                                &m.specularTexture, &m.specularColorTexture}) {
             if (*field != WF_NO_TEXTURE && refImage[*field] == FAILED) {
                 *field = WF_NO_TEXTURE;
             }

@@ -352,7 +352,8 @@ Scene Converter::run() {
         scene_.surface.images.clear();
         for (Material& m : scene_.materials) {
             m.baseColorTexture = m.metallicRoughnessTexture = m.normalTexture =
-                m.emissiveTexture = m.transmissionTexture = WF_NO_TEXTURE;
+                m.emissiveTexture = m.transmissionTexture = m.specularTexture =
+                    m.specularColorTexture = WF_NO_TEXTURE;
         }
     }
     addDefaultEnvironment();

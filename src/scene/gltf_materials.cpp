@@ -15,7 +15,8 @@ namespace {
 
 const std::set<std::string> SUPPORTED_EXTENSIONS = {
     "KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_materials_transmission",
-    "KHR_materials_specular", "KHR_texture_transform", "KHR_lights_punctual",
+    "KHR_materials_specular", "KHR_materials_clearcoat", "KHR_materials_sheen",
+    "KHR_materials_volume", "KHR_texture_transform", "KHR_lights_punctual",
     "KHR_mesh_quantization", "KHR_draco_mesh_compression", "EXT_meshopt_compression",
     "KHR_meshopt_compression"};
 
@@ -76,6 +77,11 @@ private:
                             std::to_string(hi) + "]");
         }
     }
+    uint32_t extensionTexture(const tinygltf::Value& extension, const char* key, bool srgb,
+                              const std::string& name, MaterialNeeds& needs);
+    void ignoreTextures(const tinygltf::Value& extension, std::initializer_list<const char*> keys,
+                        const std::string& name) const;
+    void convertLayers(const tinygltf::Material& m, const std::string& name, Material& out);
     Material convert(const tinygltf::Material& m, const std::string& name, MaterialNeeds& needs);
 
     const tinygltf::Model& model_;
@@ -138,6 +144,73 @@ uint32_t MaterialConverter::textureRef(int texture, int texCoord,
     return uint32_t(tables_.refs.size() - 1);
 }
 
+// A textureInfo inside a material extension (tinygltf parses only the core ones).
+uint32_t MaterialConverter::extensionTexture(const tinygltf::Value& extension, const char* key,
+                                             bool srgb, const std::string& name,
+                                             MaterialNeeds& needs) {
+    if (!extension.IsObject() || !extension.Has(key)) {
+        return WF_NO_TEXTURE;
+    }
+    const tinygltf::Value& info = extension.Get(key);
+    const double index = number(info, "index", -1.0);
+    if (!(index >= 0.0 && index < 2147483647.0)) {
+        fail(file_, name + ": " + key + " needs a texture index");
+    }
+    const double set = number(info, "texCoord", 0.0);
+    const int texCoord = std::isfinite(set) ? int(std::clamp(set, -1.0, 1e6)) : -1;
+    return textureRef(int(index), texCoord, {}, srgb, name + " " + key, needs);
+}
+
+void MaterialConverter::ignoreTextures(const tinygltf::Value& extension,
+                                       std::initializer_list<const char*> keys,
+                                       const std::string& name) const {
+    for (const char* key : keys) {
+        if (extension.IsObject() && extension.Has(key)) {
+            warn(file_, name + ": " + key + " is not supported and is ignored (its factor is "
+                                            "used)");
+        }
+    }
+}
+
+// KHR_materials_clearcoat, _sheen and _volume: factors only (their textures are ignored).
+void MaterialConverter::convertLayers(const tinygltf::Material& m, const std::string& name,
+                                      Material& out) {
+    const tinygltf::Value& coat = extension(m.extensions, "KHR_materials_clearcoat");
+    out.clearcoat = float(number(coat, "clearcoatFactor", 0.0));
+    out.clearcoatRoughness = float(number(coat, "clearcoatRoughnessFactor", 0.0));
+    checkRange(name, "clearcoatFactor", out.clearcoat, 0.0, 1.0);
+    checkRange(name, "clearcoatRoughnessFactor", out.clearcoatRoughness, 0.0, 1.0);
+    ignoreTextures(coat,
+                   {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"},
+                   name);
+
+    const tinygltf::Value& sheen = extension(m.extensions, "KHR_materials_sheen");
+    const std::vector<double> sheenColor = numbers(sheen, "sheenColorFactor", 3, {0, 0, 0});
+    for (int c = 0; c < 3; ++c) {
+        checkRange(name, "sheenColorFactor", sheenColor[c], 0.0, 1.0);
+        out.sheenColor[c] = float(sheenColor[c]);
+    }
+    out.sheenRoughness = float(number(sheen, "sheenRoughnessFactor", 0.0));
+    checkRange(name, "sheenRoughnessFactor", out.sheenRoughness, 0.0, 1.0);
+    ignoreTextures(sheen, {"sheenColorTexture", "sheenRoughnessTexture"}, name);
+
+    const tinygltf::Value& volume = extension(m.extensions, "KHR_materials_volume");
+    out.thickness = float(number(volume, "thicknessFactor", 0.0));
+    checkRange(name, "thicknessFactor", out.thickness, 0.0, 1e30);
+    const double distance = number(volume, "attenuationDistance", INFINITY);
+    if (!(distance > 0.0)) { // NaN fails too; +inf (the default) means no attenuation
+        fail(file_, name + ": attenuationDistance must be > 0");
+    }
+    const std::vector<double> color = numbers(volume, "attenuationColor", 3, {1, 1, 1});
+    for (int c = 0; c < 3; ++c) {
+        checkRange(name, "attenuationColor", color[c], 0.0, 1.0);
+        // sigma_a = -ln(color) / distance, kept finite (black absorbs everything within 1e-30).
+        const double sigma = -std::log(std::max(color[c], 1e-30)) / distance;
+        out.attenuation[c] = float(std::min(sigma, 1e30));
+    }
+    ignoreTextures(volume, {"thicknessTexture"}, name);
+}
+
 Material MaterialConverter::convert(const tinygltf::Material& m, const std::string& name,
                                     MaterialNeeds& needs) {
     const auto& pbr = m.pbrMetallicRoughness;
@@ -189,6 +262,7 @@ Material MaterialConverter::convert(const tinygltf::Material& m, const std::stri
             out.specularColor[c] = float(color[c]);
         }
     }
+    convertLayers(m, name, out);
     checkRange(name, "normalTexture.scale", m.normalTexture.scale, -1e30, 1e30);
     out.normalScale = float(m.normalTexture.scale);
 
@@ -214,6 +288,11 @@ Material MaterialConverter::convert(const tinygltf::Material& m, const std::stri
         const int texCoord = std::isfinite(set) ? int(std::clamp(set, -1.0, 1e6)) : -1;
         out.transmissionTexture =
             textureRef(int(index), texCoord, {}, false, name + " transmissionTexture", needs);
+    }
+    if (specular.IsObject()) {
+        out.specularTexture = extensionTexture(specular, "specularTexture", false, name, needs);
+        out.specularColorTexture =
+            extensionTexture(specular, "specularColorTexture", true, name, needs);
     }
     if (out.normalTexture != WF_NO_TEXTURE) {
         const TextureRef& ref = tables_.refs[out.normalTexture];
@@ -248,7 +327,8 @@ Material defaultMaterial() {
     m.alphaCutoff = 0.5f;
     m.normalScale = 1.0f;
     m.baseColorTexture = m.metallicRoughnessTexture = m.normalTexture = m.emissiveTexture =
-        m.transmissionTexture = WF_NO_TEXTURE;
+        m.transmissionTexture = m.specularTexture = m.specularColorTexture = WF_NO_TEXTURE;
+    m.attenuation = glm::vec3(0.0f); // no clearcoat, sheen or absorption: all zero
     return m;
 }
 

@@ -1,6 +1,7 @@
 // glTF materials to the GPU's Material records: metallic-roughness factors and textures,
-// emission (KHR_materials_emissive_strength), alpha modes, KHR_materials_ior, _transmission and
-// _specular, and one TextureRef per texture use (sampler wrap and filter, sRGB for colour,
+// emission (KHR_materials_emissive_strength), alpha modes, KHR_materials_ior, _transmission,
+// _specular (factors and textures), _clearcoat, _sheen and _volume (factors; their textures are
+// ignored with a warning), and one TextureRef per texture use (sampler wrap and filter, sRGB for colour,
 // TEXCOORD set, KHR_texture_transform). Images are decoded later (gltf_images.h).
 #pragma once
 #include <cstdint>

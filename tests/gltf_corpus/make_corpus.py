@@ -421,7 +421,7 @@ for i in range(4):
 g.doc["scenes"][0]["nodes"] = list(range(5))
 case("valid/cameras_some_invalid.gltf", "loads 1 cameras=2", g)
 g = tri()
-g.doc["extensionsUsed"] = ["EXT_unknown_thing", "KHR_materials_volume"]
+g.doc["extensionsUsed"] = ["EXT_unknown_thing", "KHR_materials_iridescence"]
 case("valid/unknown_extensions_warn.gltf", "loads 1", g)
 g = Gltf()
 m = g.material(pbrMetallicRoughness={"baseColorFactor": [0.9, 0.9, 0.9, 1],
@@ -433,6 +433,18 @@ m = g.material(pbrMetallicRoughness={"baseColorFactor": [0.9, 0.9, 0.9, 1],
                            "KHR_materials_specular": {"specularFactor": 0.5,
                                                       "specularColorFactor": [1, 0.9, 0.8]}})
 case("valid/material_extensions.gltf", "loads 2 env=0", quad(g, m, uv=False))
+g = Gltf()
+tex = g.texture(g.image(checker_png()))
+m = g.material(extensions={
+    "KHR_materials_clearcoat": {"clearcoatFactor": 0.8, "clearcoatRoughnessFactor": 0.25,
+                                "clearcoatTexture": {"index": tex}},
+    "KHR_materials_sheen": {"sheenColorFactor": [0.5, 0.4, 0.3], "sheenRoughnessFactor": 0.6},
+    "KHR_materials_transmission": {"transmissionFactor": 1},
+    "KHR_materials_volume": {"thicknessFactor": 0.2, "attenuationColor": [0.5, 0.25, 1],
+                             "attenuationDistance": 2},
+    "KHR_materials_specular": {"specularFactor": 0.9, "specularTexture": {"index": tex},
+                               "specularColorTexture": {"index": tex}}})
+case("valid/material_layers.gltf", "loads 2 images=1", quad(g, m))
 g = tri()
 g.doc["nodes"][0]["children"] = [1]
 g.doc["nodes"].append({"mesh": 0, "translation": [0, 0, 1]})
@@ -674,6 +686,18 @@ broken("meshopt_plain_view_on_fallback.glb", "but is not compressed", g)
 g = Meshopt().quad()
 g.bin[g.doc["bufferViews"][0]["extensions"]["EXT_meshopt_compression"]["byteOffset"]] = 0xa1
 broken("meshopt_vertex_codec_v1.glb", "version 1 of meshopt's vertex codec", g)
+
+
+g = Gltf()
+m = g.material(extensions={"KHR_materials_clearcoat": {"clearcoatFactor": 1.5}})
+broken("clearcoat_above_one.gltf", "clearcoatFactor", quad(g, m, uv=False))
+g = Gltf()
+m = g.material(extensions={"KHR_materials_volume": {"thicknessFactor": 1,
+                                                    "attenuationDistance": 0}})
+broken("attenuation_distance_zero.gltf", "attenuationDistance", quad(g, m, uv=False))
+g = Gltf()
+m = g.material(extensions={"KHR_materials_sheen": {"sheenColorFactor": [0.5, -1, 0.5]}})
+broken("sheen_color_negative.gltf", "sheenColorFactor", quad(g, m, uv=False))
 
 
 def main():

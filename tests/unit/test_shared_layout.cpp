@@ -39,7 +39,10 @@ void main() {
     mat.flags = uint(mat.baseColor.x + mat.emission.x + mat.metallic + mat.roughness + mat.ior +
         mat.transmission + mat.specularColor.x + mat.specular + mat.alphaCutoff +
         mat.normalScale) + mat.baseColorTexture + mat.metallicRoughnessTexture +
-        mat.normalTexture + mat.emissiveTexture + mat.transmissionTexture + mat.pad;
+        mat.normalTexture + mat.emissiveTexture + mat.transmissionTexture + mat.pad +
+        mat.specularTexture + mat.specularColorTexture + uint(mat.clearcoat +
+        mat.clearcoatRoughness + mat.sheenColor.x + mat.sheenRoughness + mat.attenuation.x +
+        mat.thickness);
     em.alias = em.source + uint(em.pmf + em.aliasProb);
     pair.pad1 = pair.child0 + pair.child1 + pair.pad0 + uint(pair.lo0.x + pair.hi0.x + pair.lo1.x +
         pair.hi1.x);
@@ -129,6 +132,15 @@ TEST(SharedLayout, GlslOffsetsMatchCpp) {
     expectOffset("mat.specular", materialBase, offsetof(Material, specular));
     expectOffset("mat.normalScale", materialBase, offsetof(Material, normalScale));
     expectOffset("mat.pad", materialBase, offsetof(Material, pad));
+    expectOffset("mat.specularTexture", materialBase, offsetof(Material, specularTexture));
+    expectOffset("mat.specularColorTexture", materialBase,
+                 offsetof(Material, specularColorTexture));
+    expectOffset("mat.clearcoat", materialBase, offsetof(Material, clearcoat));
+    expectOffset("mat.clearcoatRoughness", materialBase, offsetof(Material, clearcoatRoughness));
+    expectOffset("mat.sheenColor", materialBase, offsetof(Material, sheenColor));
+    expectOffset("mat.sheenRoughness", materialBase, offsetof(Material, sheenRoughness));
+    expectOffset("mat.attenuation", materialBase, offsetof(Material, attenuation));
+    expectOffset("mat.thickness", materialBase, offsetof(Material, thickness));
     expectOffset("em.alias", materialBase + sizeof(Material), offsetof(Emitter, alias));
     const size_t pairBase = materialBase + sizeof(Material) + sizeof(Emitter);
     expectOffset("pair.child0", pairBase, offsetof(BvhPair, child0));
