@@ -37,7 +37,7 @@ double relativeDiscrepancy(SamplerKind kind, uint32_t dim, uint32_t n) {
     return sum / 16.0 / randomL2StarDiscrepancySquared(n);
 }
 
-// The figures the README quotes; QMC and stratified patterns are far more uniform than random
+// The figures docs/samplers.md quotes; QMC and stratified patterns are far more uniform than random
 // points in the pixel pair and in the first BSDF pair.
 TEST(SamplerStatistics, DiscrepancyOfTheFirstDimensions) {
     std::printf("squared L2-star discrepancy / that of random points (16 pixels):\n");
