@@ -10,6 +10,7 @@
 //   textured, smoothly shaded sphere added, so that normals and UVs go through the codecs as
 //   well; the control's UVs are one checker cell off (the checker inverted).
 #include <stb_image_write.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -41,11 +42,21 @@ RenderSettings settings(uint32_t seed) {
     return s;
 }
 
-std::string tempFile(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / "wf_test_compressed_scenes";
+// Files live only while they are loaded, in a folder of this process's own (ctest may run
+// these tests side by side).
+fs::path tempFile(const std::string& name) {
+    const fs::path dir =
+        fs::temp_directory_path() / ("wf_test_compressed_scenes_" + std::to_string(::getpid()));
     fs::create_directories(dir);
-    fs::remove(dir / name);
-    return (dir / name).string();
+    return dir / name;
+}
+
+Scene loadAndRemove(const fs::path& path) {
+    Scene scene = loadGltf(path.string());
+    std::error_code ignored;
+    fs::remove(path, ignored);
+    fs::remove(path.parent_path(), ignored); // once empty
+    return scene;
 }
 
 // The original's renders at seed 1 (the reference) and seed 2 (its noise).
@@ -85,12 +96,13 @@ TEST(CompressedScenes, GltfpackCornellBoxRendersLikeTheOriginal) {
         GTEST_SKIP() << "gltfpack is not installed (scripts/setup.sh --with-tests)";
     }
     const std::string source = std::string(WF_TEST_SCENE_DIR) + "/cornell_box.gltf";
-    const std::string packed = tempFile("cornell_box_cc.glb");
-    const std::string command = "gltfpack -i '" + source + "' -o '" + packed + "' -cc >/dev/null";
+    const fs::path packed = tempFile("cornell_box_cc.glb");
+    const std::string command =
+        "gltfpack -i '" + source + "' -o '" + packed.string() + "' -cc >/dev/null";
     ASSERT_EQ(std::system(command.c_str()), 0) << command;
 
     const Scene original = loadGltf(source);
-    const Scene compressed = loadGltf(packed);
+    const Scene compressed = loadAndRemove(packed);
     ASSERT_EQ(compressed.triangles.size(), original.triangles.size());
     EXPECT_EQ(compressed.surface.normals.size(), original.surface.normals.size());
     EXPECT_EQ(compressed.surface.uv0.size(), original.surface.uv0.size());
@@ -193,7 +205,7 @@ class CompressedCopies : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
         originalDocument = new Document(cornellBoxWithSphere());
-        original = new Scene(loadGltf(originalDocument->write(tempFile("original.glb"))));
+        original = new Scene(loadAndRemove(originalDocument->write(tempFile("original.glb"))));
         reference = new Reference(*original);
     }
     static void TearDownTestSuite() {
@@ -204,7 +216,7 @@ protected:
 
     void expectCopyRendersLikeTheOriginal(MeshCodec codec, const char* name) {
         const Document copy = compressedCopy(*originalDocument, codec);
-        const Scene compressed = loadGltf(copy.write(tempFile(std::string(name) + ".glb")));
+        const Scene compressed = loadAndRemove(copy.write(tempFile(std::string(name) + ".glb")));
         ASSERT_EQ(compressed.triangles.size(), original->triangles.size());
         ASSERT_EQ(compressed.surface.normals.size(), original->triangles.size());
         ASSERT_EQ(compressed.surface.uv0.size(), original->triangles.size());

@@ -73,8 +73,10 @@ std::string writeOriginal(const Grid& grid) {
     Document doc;
     const auto plain = [&](const void* data, std::size_t size, std::size_t count,
                            const char* type, int componentType) {
-        return doc.accessor({{"bufferView", doc.rawView(data, size)}, {"componentType", componentType},
-                             {"count", count}, {"type", type}});
+        return doc.accessor({{"bufferView", doc.rawView(data, size)},
+                             {"componentType", componentType},
+                             {"count", count},
+                             {"type", type}});
     };
     const int p = plain(grid.positions.data(), grid.positions.size() * 4, grid.vertices(),
                         "VEC3", 5126);
