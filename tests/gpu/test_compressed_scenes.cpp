@@ -8,7 +8,9 @@
 //   (scripts/setup.sh --with-tests installs it).
 // - Draco and KHR meshopt copies (tests/gpu/compressed_copy.h) of the Cornell box with a
 //   textured, smoothly shaded sphere added, so that normals and UVs go through the codecs as
-//   well; the control's UVs are one checker cell off (the checker inverted).
+//   well; the control's UVs are one checker cell off (the checker inverted). Each
+//   material's area and centroid are checked too, which catches what renders at 40x40 take
+//   for noise (8-bit Draco positions fail it; 6-bit ones still pass the image check).
 #include <stb_image_write.h>
 #include <unistd.h>
 
@@ -83,6 +85,30 @@ void expectRendersLike(const Reference& reference, const Scene& copy, const char
                 what, error.relMse, reference.noise.relMse, error.bias, reference.noise.bias);
     EXPECT_LT(error.relMse, reference.noise.relMse);
     EXPECT_LT(std::abs(error.bias), std::abs(reference.noise.bias) + 0.01 * reference.mean);
+}
+
+// Renders see sub-pixel moves as noise (6-bit Draco positions, moves of 0.1 on the 5.55 box,
+// pass the image check), so the geometry is checked beside it: each material's area and
+// area-weighted centroid as in the original, within what 14-bit quantization moves.
+void expectSameSurfaces(const Scene& copy, const Scene& original) {
+    const auto moments = [](const Scene& scene) {
+        // Per material: centroid x area, area.
+        std::vector<glm::dvec4> out(scene.materials.size(), glm::dvec4(0.0));
+        for (const Triangle& t : scene.triangles) {
+            const double area = 0.5 * glm::length(glm::cross(t.p1 - t.p0, t.p2 - t.p0));
+            out[t.material] += glm::dvec4(glm::dvec3(t.p0 + t.p1 + t.p2) / 3.0 * area, area);
+        }
+        return out;
+    };
+    ASSERT_EQ(copy.materials.size(), original.materials.size());
+    const std::vector<glm::dvec4> a = moments(copy), b = moments(original);
+    for (std::size_t m = 0; m < a.size(); ++m) {
+        EXPECT_NEAR(a[m].w, b[m].w, 1e-3 * b[m].w) << "area of material " << m;
+        if (b[m].w > 0.0) {
+            EXPECT_LT(glm::distance(glm::dvec3(a[m]) / a[m].w, glm::dvec3(b[m]) / b[m].w), 1e-3)
+                << "centroid of material " << m;
+        }
+    }
 }
 
 void expectControlCaught(const Reference& reference, const Scene& broken, const char* what) {
@@ -220,6 +246,7 @@ protected:
         ASSERT_EQ(compressed.triangles.size(), original->triangles.size());
         ASSERT_EQ(compressed.surface.normals.size(), original->triangles.size());
         ASSERT_EQ(compressed.surface.uv0.size(), original->triangles.size());
+        expectSameSurfaces(compressed, *original);
         expectRendersLike(*reference, compressed, name);
 
         Scene broken = compressed;
