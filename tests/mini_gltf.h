@@ -6,6 +6,7 @@
 
 #include <cctype>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -58,6 +59,46 @@ inline std::string base64(const std::vector<uint8_t>& in) {
         out += i + 1 < in.size() ? digits[(v >> 6) & 63] : '=';
         out += i + 2 < in.size() ? digits[v & 63] : '=';
     }
+    return out;
+}
+
+// The inverse of base64(); stops at the first character that is no digit ('=' or the end).
+inline std::vector<uint8_t> decodeBase64(const std::string& in) {
+    std::vector<uint8_t> out;
+    uint32_t bits = 0;
+    int count = 0;
+    for (char c : in) {
+        const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+        const char* at = c ? std::strchr(digits, c) : nullptr;
+        if (!at) {
+            break;
+        }
+        bits = bits << 6 | uint32_t(at - digits);
+        if ((count += 6) >= 8) {
+            out.push_back(uint8_t(bits >> (count -= 8)));
+        }
+    }
+    return out;
+}
+
+// A binary glTF: the JSON chunk (space-padded) and the BIN chunk (zero-padded).
+inline std::vector<uint8_t> glbBytes(std::string json, std::vector<uint8_t> bin) {
+    json.append((4 - json.size() % 4) % 4, ' ');
+    bin.resize((bin.size() + 3) / 4 * 4, 0);
+    auto u32 = [](std::vector<uint8_t>& out, uint32_t v) {
+        for (int i = 0; i < 4; ++i) {
+            out.push_back(uint8_t(v >> (8 * i)));
+        }
+    };
+    std::vector<uint8_t> out = {'g', 'l', 'T', 'F'};
+    u32(out, 2);
+    u32(out, uint32_t(12 + 8 + json.size() + 8 + bin.size()));
+    u32(out, uint32_t(json.size()));
+    u32(out, 0x4E4F534A); // "JSON"
+    out.insert(out.end(), json.begin(), json.end());
+    u32(out, uint32_t(bin.size()));
+    u32(out, 0x004E4942); // "BIN\0"
+    out.insert(out.end(), bin.begin(), bin.end());
     return out;
 }
 
@@ -140,29 +181,7 @@ struct MiniGltf {
         return dir.file(name);
     }
     std::string writeGlb(const TempDir& dir, const std::string& name = "scene.glb") const {
-        std::string text = json(true);
-        while (text.size() % 4) {
-            text += ' ';
-        }
-        std::vector<uint8_t> chunk = bin;
-        while (chunk.size() % 4) {
-            chunk.push_back(0);
-        }
-        auto u32 = [](std::vector<uint8_t>& out, uint32_t v) {
-            for (int i = 0; i < 4; ++i) {
-                out.push_back(uint8_t(v >> (8 * i)));
-            }
-        };
-        std::vector<uint8_t> out = {'g', 'l', 'T', 'F'};
-        u32(out, 2);
-        u32(out, uint32_t(12 + 8 + text.size() + 8 + chunk.size()));
-        u32(out, uint32_t(text.size()));
-        u32(out, 0x4E4F534A); // "JSON"
-        out.insert(out.end(), text.begin(), text.end());
-        u32(out, uint32_t(chunk.size()));
-        u32(out, 0x004E4942); // "BIN\0"
-        out.insert(out.end(), chunk.begin(), chunk.end());
-        writeBytes(dir.file(name), out);
+        writeBytes(dir.file(name), glbBytes(json(true), bin));
         return dir.file(name);
     }
 };

@@ -19,8 +19,9 @@ DracoOutput encodeDracoMesh(const DracoInput& input) {
     draco::Encoder encoder;
     for (const DracoInput::Attribute& a : input.attributes) {
         const auto type = a.position ? draco::GeometryAttribute::POSITION
-                          : a.normal ? draco::GeometryAttribute::NORMAL
-                                     : draco::GeometryAttribute::GENERIC;
+                          : a.normal   ? draco::GeometryAttribute::NORMAL
+                          : a.texcoord ? draco::GeometryAttribute::TEX_COORD
+                                       : draco::GeometryAttribute::GENERIC;
         const bool floats = !a.floats.empty();
         const int size = floats ? 4 : 2;
         draco::GeometryAttribute ga;

@@ -12,8 +12,9 @@ namespace wf::test {
 // 16-bit unsigned integers (the latter stored as Draco integers, losslessly).
 struct DracoInput {
     struct Attribute {
-        bool position = true;        // POSITION, else GENERIC (a NORMAL is passed as floats)
+        bool position = true;        // POSITION, else GENERIC unless one of these:
         bool normal = false;         // NORMAL
+        bool texcoord = false;       // TEX_COORD (Draco predicts these from the positions)
         int components = 3;
         std::vector<float> floats;   // either these...
         std::vector<uint16_t> u16;   // ...or these (normalized in glTF's sense)

@@ -6,15 +6,13 @@
 #include <gtest/gtest.h>
 
 #include <meshoptimizer.h>
-#include <nlohmann/json.hpp>
 
 #include <cmath>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 
 #include <glm/gtc/packing.hpp>
 
+#include "compressed_gltf.h"
 #include "draco_test_encoder.h"
 #include "errors.h"
 #include "scene/gltf_loader.h"
@@ -22,7 +20,7 @@
 namespace wf {
 namespace {
 
-using Json = nlohmann::json;
+using test::Json;
 namespace fs = std::filesystem;
 
 // A bumpy 12 x 12 grid over [0, 1]^2: 144 vertices, 242 triangles, smooth normals.
@@ -52,74 +50,15 @@ struct Grid {
     std::size_t vertices() const { return positions.size() / 3; }
 };
 
-// A glTF document whose buffer 0 is `bin`, written as .glb or as .gltf with a data: URI.
-struct Document {
-    // Json::object and Json::array wherever a brace list has one element: compilers differ on
-    // whether {x} copies x or makes a one-element array.
-    Json json = {{"asset", Json::object({{"version", "2.0"}})},
-                 {"scene", 0},
-                 {"scenes", Json::array({Json::object({{"nodes", Json::array({0})}})})},
-                 {"bufferViews", Json::array()},
-                 {"accessors", Json::array()}};
-    std::vector<unsigned char> bin;
-    Json moreBuffers = Json::array();
+using test::Document;
+using test::encodeVertices;
+using test::meshoptView;
 
-    std::size_t raw(const void* data, std::size_t size) {
-        bin.resize((bin.size() + 3) / 4 * 4, 0);
-        const std::size_t offset = bin.size();
-        bin.insert(bin.end(), static_cast<const unsigned char*>(data),
-                   static_cast<const unsigned char*>(data) + size);
-        return offset;
-    }
-    int view(Json v) {
-        json["bufferViews"].push_back(std::move(v));
-        return int(json["bufferViews"].size() - 1);
-    }
-    int accessor(Json a) {
-        json["accessors"].push_back(std::move(a));
-        return int(json["accessors"].size() - 1);
-    }
-    std::string write(const std::string& name) {
-        const fs::path dir = fs::temp_directory_path() / "wf_test_gltf_compression";
-        fs::create_directories(dir);
-        const fs::path path = dir / name;
-        Json doc = json;
-        doc["buffers"] = Json::array({Json::object({{"byteLength", bin.size()}})});
-        for (const Json& b : moreBuffers) {
-            doc["buffers"].push_back(b);
-        }
-        std::ofstream out(path, std::ios::binary);
-        if (path.extension() == ".gltf") {
-            static const char* t =
-                "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-            std::string b64;
-            for (std::size_t i = 0; i < bin.size(); i += 3) {
-                const uint32_t v = bin[i] << 16 | (i + 1 < bin.size() ? bin[i + 1] << 8 : 0) |
-                                   (i + 2 < bin.size() ? bin[i + 2] : 0);
-                b64 += t[v >> 18 & 63];
-                b64 += t[v >> 12 & 63];
-                b64 += i + 1 < bin.size() ? t[v >> 6 & 63] : '=';
-                b64 += i + 2 < bin.size() ? t[v & 63] : '=';
-            }
-            doc["buffers"][0]["uri"] = "data:application/octet-stream;base64," + b64;
-            out << doc.dump();
-        } else {
-            std::string text = doc.dump();
-            text.append((4 - text.size() % 4) % 4, ' ');
-            std::vector<unsigned char> data = bin;
-            data.resize((data.size() + 3) / 4 * 4, 0);
-            const uint32_t header[5] = {0x46546C67u, 2u,
-                                        uint32_t(12 + 8 + text.size() + 8 + data.size()),
-                                        uint32_t(text.size()), 0x4E4F534Au};
-            const uint32_t binHeader[2] = {uint32_t(data.size()), 0x004E4942u};
-            out.write(reinterpret_cast<const char*>(header), sizeof header);
-            out.write(text.data(), std::streamsize(text.size()));
-            out.write(reinterpret_cast<const char*>(binHeader), sizeof binHeader);
-            out.write(reinterpret_cast<const char*>(data.data()), std::streamsize(data.size()));
-        }
-        return path.string();
-    }
-};
+std::string tempFile(const std::string& name) {
+    const fs::path dir = fs::temp_directory_path() / "wf_test_gltf_compression";
+    fs::create_directories(dir);
+    return (dir / name).string();
+}
 
 void primitive(Document& doc, int position, int normal, int indices, Json node = Json::object()) {
     const Json attributes = {{"POSITION", position}, {"NORMAL", normal}};
@@ -134,10 +73,10 @@ std::string writeOriginal(const Grid& grid) {
     Document doc;
     const auto plain = [&](const void* data, std::size_t size, std::size_t count,
                            const char* type, int componentType) {
-        const int v = doc.view({{"buffer", 0}, {"byteOffset", doc.raw(data, size)},
-                                {"byteLength", size}});
-        return doc.accessor({{"bufferView", v}, {"componentType", componentType},
-                             {"count", count}, {"type", type}});
+        return doc.accessor({{"bufferView", doc.rawView(data, size)},
+                             {"componentType", componentType},
+                             {"count", count},
+                             {"type", type}});
     };
     const int p = plain(grid.positions.data(), grid.positions.size() * 4, grid.vertices(),
                         "VEC3", 5126);
@@ -146,7 +85,7 @@ std::string writeOriginal(const Grid& grid) {
     const int i = plain(grid.indices.data(), grid.indices.size() * 4, grid.indices.size(),
                         "SCALAR", 5125);
     primitive(doc, p, n, i);
-    return doc.write("original.glb");
+    return doc.write(tempFile("original.glb"));
 }
 
 glm::vec3 decodeNormal(uint32_t packed) {
@@ -216,9 +155,7 @@ Document dracoDocument(const test::DracoOutput& encoded, int positionType, bool 
         doc.json["extensionsUsed"].push_back("KHR_mesh_quantization");
         doc.json["extensionsRequired"].push_back("KHR_mesh_quantization");
     }
-    const int v = doc.view({{"buffer", 0},
-                            {"byteOffset", doc.raw(encoded.bytes.data(), encoded.bytes.size())},
-                            {"byteLength", encoded.bytes.size()}});
+    const int v = doc.rawView(encoded.bytes.data(), encoded.bytes.size());
     const int p = doc.accessor({{"componentType", positionType}, {"normalized", normalized},
                                 {"count", encoded.points}, {"type", "VEC3"}});
     const int n = doc.accessor({{"componentType", 5126}, {"count", encoded.points},
@@ -256,7 +193,7 @@ TEST(GltfCompression, DracoMatchesTheOriginal) {
     for (const char* name : {"draco.glb", "draco.gltf"}) {
         SCOPED_TRACE(name);
         Document doc = dracoDocument(encoded, 5126, false);
-        expectSameTriangles(loadGltf(doc.write(name)), original, 1e-4f, 1.0f);
+        expectSameTriangles(loadGltf(doc.write(tempFile(name))), original, 1e-4f, 1.0f);
     }
 }
 
@@ -275,32 +212,8 @@ TEST(GltfCompression, DracoWithQuantizedPositions) {
     ASSERT_EQ(encoded.error, "");
     Document doc = dracoDocument(encoded, 5123, true,
                                  {{"translation", {lo, lo, lo}}, {"scale", {range, range, range}}});
-    expectSameTriangles(loadGltf(doc.write("draco_quantized.glb")), original, 2e-5f, 1.0f);
-}
-
-// One meshopt-compressed bufferView decoding into the fallback buffer (1) at `target`.
-int meshoptView(Document& doc, const char* extension, const std::vector<unsigned char>& data,
-                std::size_t stride, std::size_t count, const char* mode, const char* filter,
-                std::size_t& target) {
-    Json ext = {{"buffer", 0}, {"byteOffset", doc.raw(data.data(), data.size())},
-                {"byteLength", data.size()}, {"byteStride", stride}, {"count", count},
-                {"mode", mode}};
-    if (filter) {
-        ext["filter"] = filter;
-    }
-    Json view = {{"buffer", 1}, {"byteOffset", target}, {"byteLength", stride * count},
-                 {"extensions", Json::object({{extension, ext}})}};
-    if (std::string(mode) == "ATTRIBUTES") {
-        view["byteStride"] = stride;
-    }
-    target += (stride * count + 3) / 4 * 4;
-    return doc.view(view);
-}
-
-std::vector<unsigned char> encodeVertices(const void* data, std::size_t count, std::size_t size) {
-    std::vector<unsigned char> out(meshopt_encodeVertexBufferBound(count, size));
-    out.resize(meshopt_encodeVertexBuffer(out.data(), out.size(), data, count, size));
-    return out;
+    expectSameTriangles(loadGltf(doc.write(tempFile("draco_quantized.glb"))), original, 2e-5f,
+                        1.0f);
 }
 
 // gltfpack -cc's layout: u16 positions padded to 8 bytes, normalized, dequantized by the node;
@@ -348,7 +261,8 @@ TEST(GltfCompression, MeshoptQuantizedAsGltfpackWritesIt) {
                                 {"count", indices.size()}, {"type", "SCALAR"}});
     primitive(doc, p, nn, i, {{"translation", {lo, lo, lo}}, {"scale", {range, range, range}}});
     // 16-bit positions move corners by up to range / 2^17; 8-bit octahedral normals by ~1 deg.
-    expectSameTriangles(loadGltf(doc.write("meshopt_quantized.glb")), original, 2e-5f, 2.0f);
+    expectSameTriangles(loadGltf(doc.write(tempFile("meshopt_quantized.glb"))), original, 2e-5f,
+                        2.0f);
 }
 
 // KHR in a .gltf: float positions through the exponential filter (lossless at 24 mantissa
@@ -382,7 +296,7 @@ TEST(GltfCompression, MeshoptKhrFloatsInGltf) {
                                 {"count", grid.indices.size()}, {"type", "SCALAR"}});
     primitive(doc, p, nn, i);
     // Normals exact (the dot of equal unit vectors rounds to within 0.1 deg of 1).
-    expectSameTriangles(loadGltf(doc.write("meshopt_khr.gltf")), original, 1e-6f, 0.1f);
+    expectSameTriangles(loadGltf(doc.write(tempFile("meshopt_khr.gltf"))), original, 1e-6f, 0.1f);
 }
 
 // Loading must end in a scene or one InputError line; anything else (a crash, another
@@ -408,7 +322,8 @@ TEST(GltfCompression, CutOrCorruptedStreamsAreRefusedCleanly) {
         test::DracoOutput shorter = encoded;
         shorter.bytes.resize(cut);
         Document doc = dracoDocument(shorter, 5126, false);
-        EXPECT_TRUE(refusedInOneLine(doc.write("draco_cut.glb"))) << "cut at " << cut;
+        EXPECT_TRUE(refusedInOneLine(doc.write(tempFile("draco_cut.glb"))))
+            << "cut at " << cut;
     }
     // Flipped bytes may still decode (to other triangles); then they must load as such.
     std::size_t refused = 0, tried = 0;
@@ -416,7 +331,7 @@ TEST(GltfCompression, CutOrCorruptedStreamsAreRefusedCleanly) {
         test::DracoOutput flipped = encoded;
         flipped.bytes[at] ^= 0x5a;
         Document doc = dracoDocument(flipped, 5126, false);
-        refused += refusedInOneLine(doc.write("draco_flipped.glb"));
+        refused += refusedInOneLine(doc.write(tempFile("draco_flipped.glb")));
     }
     EXPECT_GT(refused, 0u) << "of " << tried;
 
@@ -441,7 +356,7 @@ TEST(GltfCompression, CutOrCorruptedStreamsAreRefusedCleanly) {
         doc.json["meshes"] =
             Json::array({Json::object({{"primitives", Json::array({primitive})}})});
         doc.json["nodes"] = Json::array({Json::object({{"mesh", 0}})});
-        refusedInOneLine(doc.write("meshopt_cut.glb"));
+        refusedInOneLine(doc.write(tempFile("meshopt_cut.glb")));
     }
 }
 
