@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <functional>
 #include <numeric>
+#include <random>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -169,6 +170,38 @@ inline std::vector<double> integrateOverCells(const SphereGrid& grid,
         }
     }
     return result;
+}
+
+// A uniform float in [0, 1): generate_canonical<float> can round to 1.0f; samplers take [0, 1).
+inline float uniform01(std::mt19937& rng) {
+    return std::min(std::uniform_real_distribution<float>(0.0f, 1.0f)(rng), 0x1.fffffep-1f);
+}
+
+// Counts per grid cell of `samples` directions drawn by sample(uLobe, u, wi) (false: no
+// direction, or a Dirac one, whose mass the pdfs leave out too).
+template <typename Sample>
+std::vector<double> sampleHistogram(const SphereGrid& grid, unsigned seed, int samples,
+                                    Sample sample) {
+    std::mt19937 rng(seed);
+    std::vector<double> counts(grid.cells(), 0.0);
+    for (int i = 0; i < samples; ++i) {
+        const float uLobe = uniform01(rng);
+        const glm::vec2 u(uniform01(rng), uniform01(rng));
+        glm::vec3 wi;
+        if (sample(uLobe, u, wi))
+            counts[grid.cellOf(wi)] += 1.0;
+    }
+    return counts;
+}
+
+// The chi-square p-value of `counts` (from `samples` draws) against pdf integrated over the
+// grid's cells.
+inline double pdfFitPValue(const std::vector<double>& counts, const SphereGrid& grid,
+                           int samples, const std::function<double(glm::vec3)>& pdf) {
+    std::vector<double> expected = integrateOverCells(grid, pdf, 0.05 / samples);
+    for (double& e : expected)
+        e *= samples;
+    return chiSquarePValue(counts, expected);
 }
 
 } // namespace wf::test

@@ -14,6 +14,8 @@
 
 namespace {
 
+using wf::test::uniform01;
+
 using glm::vec2;
 using glm::vec3;
 using namespace wf::gpu_types;
@@ -58,43 +60,27 @@ std::vector<Case> cases() {
     };
 }
 
-float uniform01(std::mt19937& rng) {
-    // generate_canonical<float> can round to 1.0f; samplers take [0, 1).
-    return std::min(std::uniform_real_distribution<float>(0.0f, 1.0f)(rng), 0x1.fffffep-1f);
-}
-
 bool finite(vec3 v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
 constexpr int CHI2_SAMPLES = 300000;
 
-// Counts of non-delta sampled directions per sphere cell (delta and failed samples fall in no
-// cell, just as bsdfPdf leaves their mass out).
 std::vector<double> sampleHistogram(const Case& c, const wf::test::SphereGrid& grid,
                                     unsigned seed) {
-    std::mt19937 rng(seed);
-    std::vector<double> counts(grid.cells(), 0.0);
-    for (int i = 0; i < CHI2_SAMPLES; ++i) {
-        float uLobe = uniform01(rng);
-        vec2 u(uniform01(rng), uniform01(rng));
+    auto sample = [&](float uLobe, vec2 u, vec3& wi) {
         BsdfSample s;
-        if (bsdfSample(c.m, c.wo, uLobe, u, s) && !s.isDelta) {
-            counts[grid.cellOf(s.wi)] += 1.0;
-        }
-    }
-    return counts;
+        const bool sampled = bsdfSample(c.m, c.wo, uLobe, u, s) && !s.isDelta;
+        wi = s.wi;
+        return sampled;
+    };
+    return wf::test::sampleHistogram(grid, seed, CHI2_SAMPLES, sample);
 }
 
 double pdfFit(const Case& c, const std::vector<double>& counts, const wf::test::SphereGrid& grid,
               const BsdfParams& pdfMaterial) {
-    std::vector<double> expected = wf::test::integrateOverCells(
-        grid, [&](vec3 wi) { return double(bsdfPdf(pdfMaterial, c.wo, wi)); },
-        0.05 / CHI2_SAMPLES);
-    for (double& e : expected) {
-        e *= CHI2_SAMPLES;
-    }
-    return wf::test::chiSquarePValue(counts, expected);
+    auto pdf = [&](vec3 wi) { return double(bsdfPdf(pdfMaterial, c.wo, wi)); };
+    return wf::test::pdfFitPValue(counts, grid, CHI2_SAMPLES, pdf);
 }
 
 TEST(Bsdf, SampledDirectionsFollowBsdfPdf) {
