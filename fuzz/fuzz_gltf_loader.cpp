@@ -1,7 +1,9 @@
 // libFuzzer target for the glTF loader (built with -DWF_FUZZ=ON and clang; see
 // fuzz/CMakeLists.txt). Inputs starting with "glTF" load as .glb, others as .gltf, from a
 // folder holding a small valid buffer and PNG so URIs have something to find; PNG and JPEG
-// inputs also go straight to the image decoder. Any InputError is the expected outcome for
+// inputs also go straight to the image decoder. Inputs of odd length load with every multiply
+// placed mesh instanced (--instancing on), so that the instancing path is fuzzed too; even ones
+// with the default. Any InputError is the expected outcome for
 // bad input; a crash, sanitizer report, leak or timeout is a bug.
 #include <cstddef>
 #include <cstdint>
@@ -37,7 +39,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         wf::gltf::decodeImage(data, size, image, why);
     }
     try {
-        wf::loadGltfFromMemory(data, size, scenePath(binary));
+        wf::GltfOptions options;
+        options.instancing = size % 2 ? wf::Instancing::On : wf::Instancing::Auto;
+        wf::loadGltfFromMemory(data, size, scenePath(binary), options);
     } catch (const wf::InputError&) {
     }
     return 0;
