@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The README's convergence charts: `wavefront converge` on the Cornell box and on every failure
+# The convergence charts (docs/convergence.md): `wavefront converge` on the Cornell box and on every failure
 # scene, then the charts copied to docs/images/convergence/<scene>_{error_vs_time,error_vs_spp,
 # equal_time}.png. Full results (CSV, JSON, crops, reference) stay in OUT (default
 # out/convergence). Takes about half an hour on 2 CPU cores with lavapipe.
