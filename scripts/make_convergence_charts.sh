@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The convergence charts (docs/convergence.md): `wavefront converge` on the Cornell box and
 # on every failure scene, then the charts copied to
-# docs/images/convergence/<scene>_{error_vs_time,error_vs_spp,equal_time}.png. Full results (CSV, JSON, crops, reference) stay in OUT (default
+# docs/images/convergence/<scene>_{error_vs_time,error_vs_spp,equal_time}.png.
+# Full results (CSV, JSON, crops, reference) stay in OUT (default
 # out/convergence). Takes about half an hour on 2 CPU cores with lavapipe.
 # Usage: scripts/make_convergence_charts.sh [build/wavefront] [OUT] [SCENE...]
 # (with SCENE names, e.g. glass_caustic, only those are redone)
