@@ -159,21 +159,23 @@ vec3 instancedSpawnError(Instance instance, Triangle tri, vec3 p0, vec3 p1, vec3
     return triangleHitPointError(p0, p1, p2, b1, b2) + cornerError + slack + backError;
 }
 
+// A triangle's corners in world space, through its instance.
+void worldCorners(Instance instance, Triangle tri, out vec3 p0, out vec3 p1, out vec3 p2) {
+    p0 = affinePoint(instance.worldFromObject0, instance.worldFromObject1,
+                     instance.worldFromObject2, tri.p0);
+    p1 = affinePoint(instance.worldFromObject0, instance.worldFromObject1,
+                     instance.worldFromObject2, tri.p1);
+    p2 = affinePoint(instance.worldFromObject0, instance.worldFromObject1,
+                     instance.worldFromObject2, tri.p2);
+}
+
 // The distance along a unit-length ray from `origin` to an instanced hit, which the hit record
 // does not keep (its x holds the instance): the world point as loadSurface computes it.
 float instancedHitDistance(uint instanceIndex, uint triangleIndex, float b1, float b2,
                            vec3 origin) {
-    Triangle tri = triangleAt(triangleIndex);
-    Instance instance = instanceAt(instanceIndex);
-    vec3 p = triangleHitPoint(
-        affinePoint(instance.worldFromObject0, instance.worldFromObject1,
-                    instance.worldFromObject2, tri.p0),
-        affinePoint(instance.worldFromObject0, instance.worldFromObject1,
-                    instance.worldFromObject2, tri.p1),
-        affinePoint(instance.worldFromObject0, instance.worldFromObject1,
-                    instance.worldFromObject2, tri.p2),
-        b1, b2);
-    return length(p - origin);
+    vec3 p0, p1, p2;
+    worldCorners(instanceAt(instanceIndex), triangleAt(triangleIndex), p0, p1, p2);
+    return length(triangleHitPoint(p0, p1, p2, b1, b2) - origin);
 }
 #endif
 
@@ -185,12 +187,8 @@ SurfaceHit loadSurface(uint instanceIndex, uint triangleIndex, float b1, float b
     SurfaceHit s;
 #if WF_HAS_INSTANCES
     Instance instance = instanceAt(instanceIndex);
-    vec3 p0 = affinePoint(instance.worldFromObject0, instance.worldFromObject1,
-                          instance.worldFromObject2, tri.p0);
-    vec3 p1 = affinePoint(instance.worldFromObject0, instance.worldFromObject1,
-                          instance.worldFromObject2, tri.p1);
-    vec3 p2 = affinePoint(instance.worldFromObject0, instance.worldFromObject1,
-                          instance.worldFromObject2, tri.p2);
+    vec3 p0, p1, p2;
+    worldCorners(instance, tri, p0, p1, p2);
     s.p = triangleHitPoint(p0, p1, p2, b1, b2);
     s.pError = instancedSpawnError(instance, tri, p0, p1, p2, b1, b2, s.p);
 #else
