@@ -46,7 +46,7 @@ std::vector<Triangle> terrain(int side) {
 }
 
 TEST(BvhParallel, SameTreeForAnyThreadCount) {
-    // Large enough that subtrees go to other threads and the top binning passes are split.
+    // Large enough that subtrees go to other threads and the top levels are binned over samples.
     const std::vector<Triangle> input = soup(300000, 3);
     std::vector<Triangle> firstTriangles;
     std::vector<BvhNode> firstNodes;
@@ -126,7 +126,9 @@ double sweepCost(std::vector<Box>& boxes, size_t begin, size_t end, const BvhBui
 }
 
 TEST(BvhParallel, SahWithinFivePercentOfAFullSweep) {
-    const std::vector<std::vector<Triangle>> meshes = {soup(20000, 5), terrain(100)};
+    // The larger two are binned over samples at their top levels (nodes of 32768 or more).
+    const std::vector<std::vector<Triangle>> meshes = {soup(20000, 5), terrain(100),
+                                                       soup(100000, 6), terrain(250)};
     for (const std::vector<Triangle>& mesh : meshes) {
         std::vector<Box> boxes;
         Box root;
