@@ -12,9 +12,9 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <memory>
 #include <thread>
 
-#include <sys/mman.h>
 #include <atomic>
 #include <bit>
 
@@ -25,50 +25,6 @@ namespace wf {
 namespace {
 
 static_assert(BVH_MAX_DEPTH + 1 <= WF_BVH_STACK_SIZE, "traversal stack too small for the tree");
-
-// A large scratch array, uninitialised, in transparent huge pages where the kernel gives them
-// on request (THP "madvise" mode): a first touch of each 4 KiB page is slow in a virtual
-// machine, and the builder's arrays of 10 M triangles spent a second in page faults.
-template <typename T> class ScratchArray {
-public:
-    static constexpr std::size_t kHugePage = std::size_t(2) << 20;
-
-    explicit ScratchArray(std::size_t count)
-        : bytes_((count * sizeof(T) + 2 * kHugePage - 1) / kHugePage * kHugePage) {
-        mapping_ = mmap(nullptr, bytes_, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS,
-                        -1, 0);
-        if (mapping_ == MAP_FAILED)
-            throw std::bad_alloc();
-        // Huge pages need 2 MiB-aligned ranges: start at the first boundary inside.
-        const auto address = reinterpret_cast<std::uintptr_t>(mapping_);
-        data_ = reinterpret_cast<T*>((address + kHugePage - 1) / kHugePage * kHugePage);
-        madvise(static_cast<void*>(data_), bytes_ - kHugePage, MADV_HUGEPAGE); // a hint
-    }
-    ~ScratchArray() { munmap(mapping_, bytes_); }
-    ScratchArray(const ScratchArray&) = delete;
-    ScratchArray& operator=(const ScratchArray&) = delete;
-
-    T* data() { return data_; }
-    T& operator[](std::size_t i) { return data_[i]; }
-
-private:
-    std::size_t bytes_;
-    void* mapping_ = nullptr;
-    T* data_ = nullptr;
-};
-
-// Asks for huge pages over the 2 MiB-aligned part of a vector's capacity (as ScratchArray
-// does), for node arrays of millions of entries that are written once, front to back.
-template <typename T> void reserveInHugePages(std::vector<T>& v, std::size_t count) {
-    v.reserve(count);
-    constexpr std::uintptr_t kHugePage = std::uintptr_t(2) << 20;
-    const auto begin = reinterpret_cast<std::uintptr_t>(v.data());
-    const std::uintptr_t end = begin + v.capacity() * sizeof(T);
-    const std::uintptr_t first = (begin + kHugePage - 1) & ~(kHugePage - 1);
-    const std::uintptr_t last = end & ~(kHugePage - 1);
-    if (last > first)
-        madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE); // a hint
-}
 
 using glm::vec3;
 
@@ -245,7 +201,7 @@ public:
             // worker hands its thread back as soon as it is done, so that a thread still busy
             // with a larger subtree can give a part of it away.
             std::vector<BvhNode> rightNodes;
-            reserveInHugePages(rightNodes, 2 * std::size_t(right.size()) / opts_.maxLeafSize + 1);
+            rightNodes.reserve(2 * std::size_t(right.size()) / opts_.maxLeafSize + 1);
             SubtreeStats rightStats;
             std::thread worker([&] {
                 build(right, depth + 1, rightNodes, rightStats);
@@ -284,10 +240,10 @@ private:
     static constexpr std::uint32_t kSpawnMin = 16384;
     // Nodes this large or larger are binned over a sample of kSampleBlocks blocks of
     // kSampleBlock refs: the top levels cost one pass over their refs, not two, and the SAH
-    // cost of the tree changed by under 0.1% (8192 refs place 32 bins well).
-    static constexpr std::uint32_t kSampledBinMin = 1u << 15;
+    // cost of the tree changed by under 2%, either way (4096 refs place 32 bins well).
+    static constexpr std::uint32_t kSampledBinMin = 1u << 13;
     static constexpr std::uint32_t kSampleBlock = 16;
-    static constexpr std::uint32_t kSampleBlocks = 512;
+    static constexpr std::uint32_t kSampleBlocks = 256;
     static constexpr std::uint32_t kRefsPerExtraBin = 4;
     static constexpr std::uint32_t kTwoBinSetsMin = 256; // below, a second set costs more
 
@@ -603,11 +559,14 @@ BvhBuildStats buildBvh(Triangle* triangles, std::size_t count, std::vector<BvhNo
     }
     const std::uint32_t threads =
         opts.threads > 0 ? opts.threads : std::max(1u, std::thread::hardware_concurrency());
-    // One scratch serves the build's refs and then the reordering (the triangles and their
-    // leaf-order sources), as each first touch of a page costs (see ScratchArray).
-    static_assert(sizeof(PrimRef) <= sizeof(Triangle) && alignof(PrimRef) <= 16);
-    ScratchArray<std::byte> scratch((sizeof(Triangle) + sizeof(std::uint32_t)) * std::size_t(n));
-    auto* refs = reinterpret_cast<PrimRef*>(scratch.data());
+    // One scratch, uninitialised, serves the build's refs and then the reordering (the
+    // triangles and their leaf-order sources): the first touch of a page is what costs, a
+    // tenth of the build at 5 M triangles. (Asking for transparent huge pages made it slower
+    // on these virtual machines: 1.4 s against 0.9 s at 5 M; the host backs each anew.)
+    static_assert(sizeof(PrimRef) <= sizeof(Triangle) && alignof(PrimRef) <= alignof(std::max_align_t));
+    const auto scratch = std::make_unique_for_overwrite<std::byte[]>(
+        (sizeof(Triangle) + sizeof(std::uint32_t)) * std::size_t(n));
+    auto* refs = reinterpret_cast<PrimRef*>(scratch.get());
     parallelChunks(n, threads, [&](std::uint32_t, std::uint32_t begin, std::uint32_t end) {
         for (std::uint32_t i = begin; i < end; ++i) {
             const Triangle& t = triangles[i];
@@ -616,7 +575,7 @@ BvhBuildStats buildBvh(Triangle* triangles, std::size_t count, std::vector<BvhNo
         }
     });
     // Address space only (pages are touched as nodes are written); a reallocation would copy.
-    reserveInHugePages(nodes, std::size_t(n) * 2);
+    nodes.reserve(std::size_t(n) * 2);
     stats.threads = threads;
     Builder builder(refs, opts, threads);
     SubtreeStats subtree;
@@ -629,8 +588,8 @@ BvhBuildStats buildBvh(Triangle* triangles, std::size_t count, std::vector<BvhNo
     // array, whose pages are in memory already. (Following the permutation's cycles in place
     // saves the scratch but, single-threaded and latency-bound, took 0.5-0.8 s longer at 5 M
     // triangles; the scratch is not at the peak of host memory, which is the load.)
-    auto* source = reinterpret_cast<std::uint32_t*>(scratch.data() + sizeof(Triangle) * n);
-    auto* original = reinterpret_cast<Triangle*>(scratch.data()); // over the refs, once read
+    auto* source = reinterpret_cast<std::uint32_t*>(scratch.get() + sizeof(Triangle) * n);
+    auto* original = reinterpret_cast<Triangle*>(scratch.get()); // over the refs, once read
     parallelChunks(n, threads, [&](std::uint32_t, std::uint32_t begin, std::uint32_t end) {
         for (std::uint32_t i = begin; i < end; ++i)
             source[i] = refs[i].index();
