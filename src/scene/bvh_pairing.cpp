@@ -30,7 +30,10 @@ public:
                                 vec3(0.0f), 0};
             return std::move(pairs_);
         }
-        // Interior nodes become the first entries, in depth-first order: the root's is 0.
+        // Interior nodes become the first entries, in depth-first order: the root's is 0. (A
+        // binary tree has one fewer interior node than leaves, so about half are interior:
+        // reserved, as growing a table of millions by doubling copied it over and over.)
+        pairs_.reserve(nodes_.size() / 2 + 1);
         for (std::size_t i = 0; i < nodes_.size(); ++i)
             if (nodes_[i].count == 0)
                 pairOf_[i] = std::uint32_t(pairs_.size()), pairs_.emplace_back();

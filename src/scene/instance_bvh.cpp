@@ -144,6 +144,10 @@ TwoLevelBvh buildTwoLevelBvh(std::vector<Triangle>& triangles, const std::vector
     out.stats.maxDepth += topStats.maxDepth + 1;
 
     std::vector<uint32_t> roots;
+    size_t pairCount = out.pairs.size();
+    for (const BuiltTree& tree : trees)
+        pairCount += tree.pairs.size();
+    out.pairs.reserve(pairCount);
     for (size_t t = 0; t < trees.size(); ++t) {
         roots.push_back(uint32_t(out.pairs.size()));
         append(out.pairs, trees[t].pairs, triangleBases[t]);
