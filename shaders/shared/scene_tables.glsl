@@ -2,8 +2,9 @@
 // storage texel buffers read with imageLoad (src/gpu/compute_program.h says why) and unpacked
 // into the structs of scene_types.h. Unused fields cost nothing: the compiler drops loads whose
 // texel is unread.
-// Triangles and BVH entries may span several buffers ("pages", WF_TRIANGLE_PAGES and
-// WF_BVH_PAGES of 2^shift entries each) where one buffer would pass the device's limit.
+// Triangles, BVH entries and instances may span several buffers ("pages", WF_TRIANGLE_PAGES,
+// WF_BVH_PAGES and WF_INSTANCE_PAGES of 2^shift entries each) where one buffer would pass the
+// device's limit.
 layout(binding = WF_BINDING_TRIANGLES, rgba32ui) uniform readonly restrict uimageBuffer
     triangleTexels;
 #if WF_TRIANGLE_PAGES > 1
@@ -69,6 +70,34 @@ layout(binding = WF_BINDING_MATERIALS, rgba32ui) uniform readonly restrict uimag
 #if WF_HAS_INSTANCES
 layout(binding = WF_BINDING_INSTANCES, rgba32ui) uniform readonly restrict uimageBuffer
     instanceTexels;
+#if WF_INSTANCE_PAGES > 1
+layout(binding = WF_BINDING_INSTANCE_PAGE1 + 0, rgba32ui) uniform readonly restrict uimageBuffer
+    instancePage1;
+#endif
+#if WF_INSTANCE_PAGES > 2
+layout(binding = WF_BINDING_INSTANCE_PAGE1 + 1, rgba32ui) uniform readonly restrict uimageBuffer
+    instancePage2;
+#endif
+#if WF_INSTANCE_PAGES > 3
+layout(binding = WF_BINDING_INSTANCE_PAGE1 + 2, rgba32ui) uniform readonly restrict uimageBuffer
+    instancePage3;
+#endif
+#if WF_INSTANCE_PAGES > 4
+layout(binding = WF_BINDING_INSTANCE_PAGE1 + 3, rgba32ui) uniform readonly restrict uimageBuffer
+    instancePage4;
+#endif
+#if WF_INSTANCE_PAGES > 5
+layout(binding = WF_BINDING_INSTANCE_PAGE1 + 4, rgba32ui) uniform readonly restrict uimageBuffer
+    instancePage5;
+#endif
+#if WF_INSTANCE_PAGES > 6
+layout(binding = WF_BINDING_INSTANCE_PAGE1 + 5, rgba32ui) uniform readonly restrict uimageBuffer
+    instancePage6;
+#endif
+#if WF_INSTANCE_PAGES > 7
+layout(binding = WF_BINDING_INSTANCE_PAGE1 + 6, rgba32ui) uniform readonly restrict uimageBuffer
+    instancePage7;
+#endif
 #endif
 #if WF_HAS_EMITTERS
 layout(binding = WF_BINDING_EMITTERS, rgba32ui) uniform readonly restrict uimageBuffer
@@ -241,15 +270,57 @@ Material materialAt(uint index) {
 }
 
 #if WF_HAS_INSTANCES
+// Texel `part` of instance `index`, from its page.
+uvec4 instanceTexel(uint index, uint part) {
+#if WF_INSTANCE_PAGES > 1
+    const uint page = index >> WF_INSTANCE_PAGE_SHIFT;
+    const uint texel =
+        (index & ((1u << WF_INSTANCE_PAGE_SHIFT) - 1u)) * WF_INSTANCE_TEXELS + part;
+    switch (page) {
+#if WF_INSTANCE_PAGES > 1
+    case 1u:
+        return wfTexel(instancePage1, texel);
+#endif
+#if WF_INSTANCE_PAGES > 2
+    case 2u:
+        return wfTexel(instancePage2, texel);
+#endif
+#if WF_INSTANCE_PAGES > 3
+    case 3u:
+        return wfTexel(instancePage3, texel);
+#endif
+#if WF_INSTANCE_PAGES > 4
+    case 4u:
+        return wfTexel(instancePage4, texel);
+#endif
+#if WF_INSTANCE_PAGES > 5
+    case 5u:
+        return wfTexel(instancePage5, texel);
+#endif
+#if WF_INSTANCE_PAGES > 6
+    case 6u:
+        return wfTexel(instancePage6, texel);
+#endif
+#if WF_INSTANCE_PAGES > 7
+    case 7u:
+        return wfTexel(instancePage7, texel);
+#endif
+    default:
+        return wfTexel(instanceTexels, texel);
+    }
+#else
+    return wfTexel(instanceTexels, index * WF_INSTANCE_TEXELS + part);
+#endif
+}
+
 Instance instanceAt(uint index) {
-    uint base = index * WF_INSTANCE_TEXELS;
-    uvec4 t6 = wfTexel(instanceTexels, base + 6u);
-    return Instance(uintBitsToFloat(wfTexel(instanceTexels, base)),
-                    uintBitsToFloat(wfTexel(instanceTexels, base + 1u)),
-                    uintBitsToFloat(wfTexel(instanceTexels, base + 2u)),
-                    uintBitsToFloat(wfTexel(instanceTexels, base + 3u)),
-                    uintBitsToFloat(wfTexel(instanceTexels, base + 4u)),
-                    uintBitsToFloat(wfTexel(instanceTexels, base + 5u)), t6.x, t6.y, t6.z, t6.w);
+    uvec4 t6 = instanceTexel(index, 6u);
+    return Instance(uintBitsToFloat(instanceTexel(index, 0u)),
+                    uintBitsToFloat(instanceTexel(index, 1u)),
+                    uintBitsToFloat(instanceTexel(index, 2u)),
+                    uintBitsToFloat(instanceTexel(index, 3u)),
+                    uintBitsToFloat(instanceTexel(index, 4u)),
+                    uintBitsToFloat(instanceTexel(index, 5u)), t6.x, t6.y, t6.z, t6.w);
 }
 #endif
 

@@ -146,8 +146,8 @@ struct Emitter {
 // is a whole number of 16-byte texels.
 #define WF_TRIANGLE_TEXELS 3u
 #define WF_BVH_PAIR_TEXELS 4u
-// Pages (buffers) the triangle and BVH tables may span, of 2^shift entries each: set per scene
-// by the host (ShaderVariant), defaults for code compiled without them.
+// Pages (buffers) the triangle, BVH and instance tables may span, of 2^shift entries each: set
+// per scene by the host (ShaderVariant), defaults for code compiled without them.
 #define WF_MAX_TABLE_PAGES 8u
 #ifndef WF_TRIANGLE_PAGES
 #define WF_TRIANGLE_PAGES 1
@@ -156,6 +156,10 @@ struct Emitter {
 #ifndef WF_BVH_PAGES
 #define WF_BVH_PAGES 1
 #define WF_BVH_PAGE_SHIFT 31
+#endif
+#ifndef WF_INSTANCE_PAGES
+#define WF_INSTANCE_PAGES 1
+#define WF_INSTANCE_PAGE_SHIFT 31
 #endif
 #define WF_MATERIAL_TEXELS 9u
 #define WF_INSTANCE_TEXELS 7u

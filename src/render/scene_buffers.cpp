@@ -137,7 +137,7 @@ SceneBuffers::SceneBuffers(const Context& context, const PreparedScene& scene,
       materials_(
           uploadTable(context, "materials", materialTexels(scene.materials, variant.sheen))) {
     if (variant.instances)
-        instances_ = uploadTable(context, "instances", scene.instances);
+        instancePages_ = uploadPages(context, "instances", scene.instances, variant.instancePages);
     if (variant.nextEventEstimation)
         emitters_ = uploadTable(context, "emitters",
                                 selectionTable(scene.lights, scene.lightTree,
@@ -167,8 +167,7 @@ void SceneBuffers::appendBindings(
     bindPages(bindings, trianglePages_, WF_BINDING_TRIANGLES, WF_BINDING_TRIANGLE_PAGE1);
     bindPages(bindings, bvhPages_, WF_BINDING_BVH_NODES, WF_BINDING_BVH_PAGE1);
     bindings.push_back({WF_BINDING_MATERIALS, &materials_, BufferAccess::UintTexels});
-    if (instances_)
-        bindings.push_back({WF_BINDING_INSTANCES, &instances_, BufferAccess::UintTexels});
+    bindPages(bindings, instancePages_, WF_BINDING_INSTANCES, WF_BINDING_INSTANCE_PAGE1);
     if (emitters_)
         bindings.push_back({WF_BINDING_EMITTERS, &emitters_, BufferAccess::UintTexels});
     if (lightTree_) {
@@ -188,10 +187,10 @@ void SceneBuffers::appendBindings(
 
 void SceneBuffers::appendMemoryReport(
     std::vector<std::pair<std::string, uint64_t>>& report) const {
-    for (const std::vector<Buffer>* pages : {&trianglePages_, &bvhPages_})
+    for (const std::vector<Buffer>* pages : {&trianglePages_, &bvhPages_, &instancePages_})
         for (const Buffer& page : *pages)
             report.emplace_back(page.name(), page.size());
-    for (const Buffer* buffer : {&materials_, &instances_, &emitters_, &lightTree_,
+    for (const Buffer* buffer : {&materials_, &emitters_, &lightTree_,
                                  &lightTreeTrails_, &lights_, &environment_, &environmentAlias_})
         if (*buffer)
             report.emplace_back(buffer->name(), buffer->size());

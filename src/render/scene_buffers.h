@@ -58,8 +58,8 @@ private:
     ShaderDefines defines_;
     std::vector<Buffer> trianglePages_; // the variant's trianglePages
     std::vector<Buffer> bvhPages_;      // and bvhPages
+    std::vector<Buffer> instancePages_; // and instancePages: two-level scenes only
     Buffer materials_;
-    Buffer instances_; // two-level scenes only
     Buffer emitters_; // empty handle when the scene has no emitters
     Buffer lightTree_;       // nodes and each emitter's trail, with --light-selection tree
     Buffer lightTreeTrails_;

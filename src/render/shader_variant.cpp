@@ -119,7 +119,9 @@ ShaderDefines ShaderVariant::defines() const {
             {"WF_TRIANGLE_PAGES", std::to_string(trianglePages.count)},
             {"WF_TRIANGLE_PAGE_SHIFT", std::to_string(trianglePages.shift)},
             {"WF_BVH_PAGES", std::to_string(bvhPages.count)},
-            {"WF_BVH_PAGE_SHIFT", std::to_string(bvhPages.shift)}};
+            {"WF_BVH_PAGE_SHIFT", std::to_string(bvhPages.shift)},
+            {"WF_INSTANCE_PAGES", std::to_string(instancePages.count)},
+            {"WF_INSTANCE_PAGE_SHIFT", std::to_string(instancePages.shift)}};
 }
 
 std::string ShaderVariant::describe() const {

@@ -62,6 +62,7 @@ struct ShaderVariant {
     bool rayCones = false;            // WF_RAY_CONES: texture LOD by ray cones (textured scenes)
     TablePages trianglePages;         // WF_TRIANGLE_PAGES, _SHIFT: set by the renderer
     TablePages bvhPages;              // WF_BVH_PAGES, _SHIFT: set by the renderer
+    TablePages instancePages;         // WF_INSTANCE_PAGES, _SHIFT: set by the renderer
 
     bool lightsBuffer() const { return sphereLights || deltaLights; }
     bool lightTree() const {

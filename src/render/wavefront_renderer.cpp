@@ -96,6 +96,8 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
         tablePaging(scene.triangles.size(), sizeof(Triangle), pageBytes, "triangles");
     variant_.bvhPages =
         tablePaging(scene.bvhPairs.size(), sizeof(BvhPair), pageBytes, "BVH nodes");
+    variant_.instancePages =
+        tablePaging(scene.instances.size(), sizeof(Instance), pageBytes, "instances");
     defines_ = variant_.defines();
     if (sharedScene && sharedScene->defines() != defines_)
         throw InternalError("scene buffers shared between renderers of different variants");

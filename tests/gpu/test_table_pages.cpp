@@ -1,11 +1,15 @@
 // The triangle and BVH tables spread over several buffers (pages) where one would pass the
-// device's limit. A small scene made to spread over 2-8 pages of each (RenderSettings::
-// tablePageBytes) renders the image it renders from single buffers, bit for bit, in the
-// wavefront and in the megakernel; a scene past the most pages is refused naming the limit.
+// device's limit, and so may a two-level scene's instances. A small scene made to spread over
+// 2-8 pages of each (RenderSettings::tablePageBytes) renders the image it renders from single
+// buffers, bit for bit, in the wavefront and in the megakernel; a scene past the most pages is
+// refused naming the limit.
 #include <gtest/gtest.h>
 
 #include "errors.h"
+#include <cmath>
 #include <random>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "analytic_scenes.h"
 #include "gpu_test_util.h"
@@ -73,6 +77,47 @@ TEST(TablePages, PagedTablesRenderTheSameImage) {
         const RenderResult paged = renderScene(scene, settings);
         EXPECT_EQ(paged.rgb, single.rgb) << trianglePages << " triangle pages, " << bvhPages
                                          << " BVH pages, megakernel " << megakernel;
+    }
+    EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
+}
+
+TEST(TablePages, PagedInstancesRenderTheSameImage) {
+    // A floor and a sphere light in world space, and one small tetrahedron placed 15 times in a
+    // ring, each turned and scaled differently: 16 instances, the world's included.
+    Scene scene = floorScene(0.7f);
+    scene.lights.push_back(sphereLight({0.0f, 3.0f, 0.0f}, 0.3f, glm::vec3(20.0f)));
+    const glm::vec3 corners[4] = {{0.0f, 0.0f, 0.0f}, {0.3f, 0.0f, 0.0f}, {0.0f, 0.3f, 0.0f},
+                                  {0.0f, 0.0f, 0.3f}};
+    const int faces[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+    scene.meshes.push_back(MeshRange{uint32_t(scene.triangles.size()), 4});
+    for (const auto& f : faces)
+        scene.triangles.push_back(
+            Triangle{corners[f[0]], 0, corners[f[1]], WF_NO_EMITTER, corners[f[2]], 0});
+    for (int i = 0; i < 15; ++i) {
+        const float angle = 2.0f * float(M_PI) * float(i) / 15.0f;
+        glm::mat4 m = glm::translate(glm::mat4(1.0f), glm::vec3(0.7f * std::cos(angle), 0.3f,
+                                                                0.7f * std::sin(angle)));
+        m = glm::rotate(m, angle, glm::vec3(0.3f, 1.0f, 0.2f));
+        m = glm::scale(m, glm::vec3(1.0f + 0.05f * float(i), 1.0f, i % 3 == 0 ? -1.0f : 1.0f));
+        scene.placements.push_back(MeshPlacement{m, 0});
+    }
+    const PreparedScene prepared = prepareScene(scene);
+    ASSERT_EQ(prepared.instances.size(), 16u);
+    // Pages of 4 instances: 4 of them, while the triangles and the BVH fit in 8 pages or fewer.
+    const uint64_t pageBytes = 4 * sizeof(Instance);
+    ASSERT_EQ(tablePaging(prepared.instances.size(), sizeof(Instance), pageBytes, "instances").count,
+              4u);
+    for (bool megakernel : {false, true}) {
+        RenderSettings settings;
+        settings.width = settings.height = 24;
+        settings.samplesPerPixel = 2;
+        settings.maxDepth = 4;
+        settings.megakernel = megakernel;
+        const RenderResult single = renderScene(scene, settings);
+        settings.tablePageBytes = pageBytes;
+        const RenderResult paged = renderScene(scene, settings);
+        EXPECT_EQ(paged.rgb, single.rgb) << "megakernel " << megakernel;
+        EXPECT_GT(imageMean(paged.rgb).mean, 0.01) << "the scene is lit";
     }
     EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
 }
