@@ -228,7 +228,7 @@ TEST(Bvh, RandomSoupsMatchBruteForce) {
     compareWithBruteForce(randomSoup(10000, 2u), 3000, 12u);
 }
 
-// Nodes of 8192 refs or more are binned over a sample and take their children's boxes from
+// Nodes of 16384 refs or more are binned over a sample and take their children's boxes from
 // the partition: every box must still bound its triangles, and traversal find every hit.
 TEST(Bvh, SampledTopLevelsMatchBruteForce) {
     compareWithBruteForce(randomSoup(100000, 4u), 1000, 14u);

@@ -126,7 +126,7 @@ double sweepCost(std::vector<Box>& boxes, size_t begin, size_t end, const BvhBui
 }
 
 TEST(BvhParallel, SahWithinFivePercentOfAFullSweep) {
-    // The larger two are binned over samples at their top levels (nodes of 8192 or more).
+    // The larger two are binned over samples at their top levels (nodes of 16384 or more).
     const std::vector<std::vector<Triangle>> meshes = {soup(20000, 5), terrain(100),
                                                        soup(100000, 6), terrain(250)};
     for (const std::vector<Triangle>& mesh : meshes) {
