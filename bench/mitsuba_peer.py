@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""A peer on the same machine: renders the project's Cornell box with Mitsuba 3 (the --variant
+"""A peer on the same machine: renders one scene (--scene: the project's Cornell box, the box with
+a mirror and a glass sphere, or 300k diffuse triangles in it) with Mitsuba 3 (the --variant
 given, path tracer) and with Wavefront at the same resolution, max depth and samples per pixel,
 and prints paths/s and relMSE x time of both, plus the wavefront/megakernel ratio from a
 `wavefront bench --compare-megakernel` in the same run. A manual benchmark, not a test: it
@@ -7,7 +8,7 @@ needs `pip install mitsuba` (into a virtual environment of your own, not the pro
 
     python3 -m venv /tmp/mi && /tmp/mi/bin/pip install mitsuba==3.9.1 numpy
     /tmp/mi/bin/python bench/mitsuba_peer.py [--variant scalar_rgb|llvm_ad_rgb|cuda_ad_rgb]
-        [--wavefront build/wavefront] [--width 256] [--spp 64] [--max-depth 8]
+        [--scene cornell|mirror-glass|mesh] [--wavefront build/wavefront] [--width 256] [--spp 64] [--max-depth 8]
         [--reference-spp 512] [--repeats 3] [--sampler NAME] [--json bench/results/peer.json]
 
 `llvm_ad_rgb` (Dr.Jit's LLVM JIT, vectorised: what a CPU user would pick) needs an LLVM that
@@ -15,10 +16,10 @@ Dr.Jit can drive: on Debian 12 `apt install libllvm19`; the script points DRJIT_
 its libLLVM.so.19.1 when the variable is unset (Debian's LLVM 15 crashes Dr.Jit on AVX-512
 machines). The JIT variants compile their kernels in a first, untimed render.
 
-The Mitsuba scene is built from scenes/make_cornell_box.py, the generator of
-scenes/cornell_box.gltf: the same quads, node transforms, Lambert albedos, the light's
-emission (front face only) and albedo, the same camera (yfov, position, looking along +z) and a
-box pixel filter. Each renderer's relMSE is measured against its own high-spp reference (so a
+The Mitsuba scene is read from the very glTF Wavefront renders (bench/gltf_to_mitsuba.py: the
+same triangles in world space, each material as the Mitsuba BSDF that is the same function, the
+light's emission on its front face only, the same camera) with a box pixel filter. Each
+renderer's relMSE is measured against its own high-spp reference (so a
 small systematic difference between the two does not count as noise); the two references'
 relMSE against each other is printed as a check that the scenes match.
 
@@ -42,65 +43,55 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, os.path.join(ROOT, "scenes"))
 import make_cornell_box as cornell  # noqa: E402
+import gltf_to_mitsuba  # noqa: E402
+import make_scaling_scene as scaling  # noqa: E402
 
 
-def rotate_y(p, degrees):
-    a = math.radians(degrees)
-    return (math.cos(a) * p[0] + math.sin(a) * p[2], p[1], -math.sin(a) * p[0] + math.cos(a) * p[2])
+SCENES = ("cornell", "mirror-glass", "mesh")
 
 
-def transformed(quads, translation, degrees, scale):
-    out = []
-    for q in quads:
-        out.append([tuple(t + c for t, c in zip(translation, rotate_y(
-            tuple(s * c for s, c in zip(scale, p)), degrees))) for p in q])
-    return out
-
-
-def write_obj(path, quads):
-    with open(path, "w") as f:
-        for q in quads:
-            for p in q:
-                f.write("v %.9g %.9g %.9g\n" % p)
-        for i in range(len(quads)):
-            b = 4 * i + 1  # counter-clockwise as in the glTF: the same front faces
-            f.write("f %d %d %d\nf %d %d %d\n" % (b, b + 1, b + 2, b, b + 2, b + 3))
-
-
-def mitsuba_scene(mi, folder, width, height, spp, max_depth, rr_depth):
+def write_scene(name, folder):
+    """The glTF both renderers render: the project's Cornell box; the box with a perfect mirror
+    for the tall block and a smooth glass sphere for the short one (specular chains, the peer's
+    worst case); or about 300,000 diffuse triangles in it (the scaling scene's spheres)."""
+    if name == "cornell":
+        return os.path.join(ROOT, "scenes", "cornell_box.gltf")
+    path = os.path.join(folder, name + ".gltf")
+    if name == "mesh":
+        g, _, _ = scaling.build(300000, 1, False, 0)
+        g.write(path)
+        return path
+    g = cornell.GltfWriter()
+    white = g.material("white", cornell.WHITE)
+    red = g.material("red", cornell.RED)
+    green = g.material("green", cornell.GREEN)
+    light = g.material("light", (0.78, 0.78, 0.78), cornell.EMISSION)
+    g.doc["materials"].append({"name": "mirror", "pbrMetallicRoughness": {
+        "baseColorFactor": [1.0, 1.0, 1.0, 1.0], "metallicFactor": 1.0, "roughnessFactor": 0.0}})
+    mirror = len(g.doc["materials"]) - 1
+    g.doc["materials"].append({"name": "glass", "pbrMetallicRoughness": {
+        "baseColorFactor": [1.0, 1.0, 1.0, 1.0], "metallicFactor": 0.0, "roughnessFactor": 0.0},
+        "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1.0}}})
+    glass = len(g.doc["materials"]) - 1
+    g.doc["extensionsUsed"].append("KHR_materials_transmission")
     white_q, red_q, green_q = cornell.room_quads()
-    block = cornell.unit_block_quads()
-    # The node transforms of make_cornell_box.build(): glTF applies scale, then rotation.
-    white_q = white_q + transformed(block, (1.855, 0.0, 1.69), -17.0, (1.65, 1.65, 1.65))
-    white_q = white_q + transformed(block, (3.685, 0.0, 3.5125), 17.0, (1.65, 3.30, 1.65))
-    groups = {"white": (white_q, cornell.WHITE, None), "red": (red_q, cornell.RED, None),
-              "green": (green_q, cornell.GREEN, None),
-              "light": (cornell.light_quad(), (0.78, 0.78, 0.78), cornell.EMISSION)}
-    yfov = math.degrees(2 * math.atan(12.5 / 35.0))
-    origin = [2.775, 2.73, -8.0]
-    scene = {
-        "type": "scene",
-        "integrator": {"type": "path", "max_depth": max_depth, "rr_depth": rr_depth},
-        "sensor": {
-            "type": "perspective", "fov": yfov, "fov_axis": "y",
-            "to_world": mi.ScalarTransform4f().look_at(
-                origin=origin, target=[origin[0], origin[1], 0.0], up=[0, 1, 0]),
-            "sampler": {"type": "independent", "sample_count": spp},
-            "film": {"type": "hdrfilm", "width": width, "height": height,
-                     "rfilter": {"type": "box"}, "pixel_format": "rgb"},
-        },
-    }
-    for name, (quads, albedo, emission) in groups.items():
-        path = os.path.join(folder, name + ".obj")
-        write_obj(path, quads)
-        shape = {"type": "obj", "filename": path, "face_normals": True,
-                 "bsdf": {"type": "twosided", "bsdf": {  # Wavefront shades two-sided
-                     "type": "diffuse", "reflectance": {"type": "rgb", "value": list(albedo)}}}}
-        if emission:
-            shape["emitter"] = {"type": "area",
-                                "radiance": {"type": "rgb", "value": list(emission)}}
-        scene[name] = shape
-    return scene
+    g.node(name="room", mesh=g.mesh("room", [g.primitive(white_q, white),
+                                             g.primitive(red_q, red),
+                                             g.primitive(green_q, green)]))
+    g.node(name="light", mesh=g.mesh("light", [g.primitive(cornell.light_quad(), light)]))
+    g.node(name="tall block", mesh=g.mesh("block", [g.primitive(cornell.unit_block_quads(),
+                                                                mirror)]),
+           translation=[3.685, 0.0, 3.5125], rotation=cornell.y_rotation(17.0),
+           scale=[1.65, 3.30, 1.65])
+    points, tris = scaling.uv_sphere(48)
+    g.node(name="glass sphere", mesh=g.mesh("sphere", [scaling.sphere_primitive(
+        g, points, tris, glass)]), translation=[1.855, 0.9, 1.69], scale=[0.9, 0.9, 0.9])
+    g.doc["cameras"].append({"type": "perspective", "name": "camera", "perspective": {
+        "yfov": 2 * math.atan(12.5 / 35.0), "aspectRatio": 1.0, "znear": 0.1, "zfar": 100.0}})
+    g.node(name="camera", camera=0, translation=[2.775, 2.73, -8.0],
+           rotation=cornell.y_rotation(180.0))
+    g.write(path)
+    return path
 
 
 def find_libllvm19():
@@ -113,8 +104,9 @@ def find_libllvm19():
     return next((f for f in files if f.endswith("libLLVM.so.19.1")), None)
 
 
-def render_mitsuba(mi, folder, width, height, spp, max_depth, rr_depth, seed=0):
-    scene = mi.load_dict(mitsuba_scene(mi, folder, width, height, spp, max_depth, rr_depth))
+def render_mitsuba(mi, gltf, folder, width, height, spp, max_depth, rr_depth, seed=0):
+    scene = mi.load_dict(gltf_to_mitsuba.scene_dict(mi, gltf, folder, width, height, spp,
+                                                    max_depth, rr_depth))
     start = time.perf_counter()
     image = np.array(mi.render(scene, spp=spp, seed=seed), dtype=np.float64)[:, :, :3]
     return image, time.perf_counter() - start
@@ -124,12 +116,12 @@ def render_mitsuba(mi, folder, width, height, spp, max_depth, rr_depth, seed=0):
 MITSUBA_ESTIMATOR = ["--sampler", "independent", "--triangle-sampling", "area"]
 
 
-def render_wavefront(mi, exe, folder, width, height, spp, max_depth, rr_depth, tag, seed=0,
-                     sampler=None, flags=()):
+def render_wavefront(mi, exe, gltf, folder, width, height, spp, max_depth, rr_depth, tag,
+                     seed=0, sampler=None, flags=()):
     out = os.path.join(folder, "wavefront_%s.exr" % tag)
     stats = os.path.join(folder, "wavefront_%s.json" % tag)
     extra = (["--sampler", sampler] if sampler else []) + list(flags)
-    subprocess.run([exe, "render", os.path.join(ROOT, "scenes", "cornell_box.gltf"), "-o", out,
+    subprocess.run([exe, "render", gltf, "-o", out,
                     "--width", str(width), "--height", str(height), "--spp", str(spp),
                     "--max-depth", str(max_depth), "--rr-depth", str(rr_depth), "--json", stats,
                     "--seed", str(seed), "--quiet"] + extra, check=True)
@@ -141,9 +133,9 @@ def rel_mse(image, reference):
     return float(np.mean((image - reference) ** 2 / (reference ** 2 + 1e-2)))
 
 
-def bench_ratio(exe, folder, width, height, spp, max_depth):
+def bench_ratio(exe, gltf, folder, width, height, spp, max_depth):
     out = os.path.join(folder, "bench.json")
-    subprocess.run([exe, "bench", os.path.join(ROOT, "scenes", "cornell_box.gltf"), "--width",
+    subprocess.run([exe, "bench", gltf, "--width",
                     str(width), "--height", str(height), "--max-depth", str(max_depth),
                     "--frames", "4", "--warmup", "1", "--spp", str(max(1, spp // 4)),
                     "--compare-megakernel", "--json", out, "--quiet"], check=True,
@@ -167,6 +159,9 @@ def main():
     parser.add_argument("--repeats", type=int, default=3,
                         help="timed renders of each, alternating (median time, mean relMSE)")
     parser.add_argument("--json", help="write the numbers here")
+    parser.add_argument("--scene", default="cornell", choices=SCENES,
+                        help="cornell (default), mirror-glass (a mirror block and a glass "
+                             "sphere in the box) or mesh (300k diffuse triangles in the box)")
     parser.add_argument("--variant", default="scalar_rgb",
                         choices=["scalar_rgb", "llvm_ad_rgb", "cuda_ad_rgb"],
                         help="Mitsuba's variant (default scalar_rgb; llvm_ad_rgb is the fast one "
@@ -182,27 +177,29 @@ def main():
     mitsuba_name = "Mitsuba 3 " + args.variant
     w, h, spp, depth = args.width, args.height, args.spp, args.max_depth
     with tempfile.TemporaryDirectory() as folder:
+        gltf = write_scene(args.scene, folder)
         # The references' seed is none of the timed renders' (0 .. repeats - 1): a reference
         # that shared a timed render's first samples would understate that render's error.
         ref_seed = 1000
         # A first render compiles the JIT variants' kernels; a new seed does not recompile.
-        render_mitsuba(mi, folder, w, h, 4, depth, args.rr_depth + 1, ref_seed + 1)
-        mi_ref, mi_ref_s = render_mitsuba(mi, folder, w, h, args.reference_spp, depth,
+        render_mitsuba(mi, gltf, folder, w, h, 4, depth, args.rr_depth + 1, ref_seed + 1)
+        mi_ref, mi_ref_s = render_mitsuba(mi, gltf, folder, w, h, args.reference_spp, depth,
                                           args.rr_depth + 1, ref_seed)
-        wf_ref, wf_ref_s = render_wavefront(mi, args.wavefront, folder, w, h, args.reference_spp,
-                                            depth, args.rr_depth, "reference", ref_seed,
-                                            args.sampler)
+        wf_ref, wf_ref_s = render_wavefront(mi, args.wavefront, gltf, folder, w, h,
+                                            args.reference_spp, depth, args.rr_depth,
+                                            "reference", ref_seed, args.sampler)
         # Timed renders alternate between the two, each with its own seed, so that a drift in
         # the machine's speed (other tenants) falls on both; times are medians, errors means.
         mi_runs, wf_runs, matched_runs = [], [], []
         for seed in range(args.repeats):
-            mi_runs.append(render_mitsuba(mi, folder, w, h, spp, depth, args.rr_depth + 1, seed))
-            wf_runs.append(render_wavefront(mi, args.wavefront, folder, w, h, spp, depth,
+            mi_runs.append(render_mitsuba(mi, gltf, folder, w, h, spp, depth, args.rr_depth + 1,
+                                          seed))
+            wf_runs.append(render_wavefront(mi, args.wavefront, gltf, folder, w, h, spp, depth,
                                             args.rr_depth, "test", seed, args.sampler))
-            matched_runs.append(render_wavefront(mi, args.wavefront, folder, w, h, spp, depth,
-                                                 args.rr_depth, "matched", seed,
+            matched_runs.append(render_wavefront(mi, args.wavefront, gltf, folder, w, h, spp,
+                                                 depth, args.rr_depth, "matched", seed,
                                                  flags=MITSUBA_ESTIMATOR))
-        bench = bench_ratio(args.wavefront, folder, w, h, spp, depth)
+        bench = bench_ratio(args.wavefront, gltf, folder, w, h, spp, depth)
     paths = w * h * spp
     rows = {}
     matched_name = "Wavefront, Mitsuba's estimator"
@@ -218,9 +215,9 @@ def main():
     efficiency = (rows[mitsuba_name]["relMSETimesSeconds"] /
                   rows["Wavefront"]["relMSETimesSeconds"])
     matched = rows[matched_name]["pathsPerSecond"] / rows[mitsuba_name]["pathsPerSecond"]
-    print("Cornell box %dx%d, %d spp, max depth %d; references %d spp; %d alternating timed "
-          "renders each (median seconds, mean relMSE)" % (w, h, spp, depth, args.reference_spp,
-                                                        args.repeats))
+    print("%s %dx%d, %d spp, max depth %d; references %d spp; %d alternating timed renders "
+          "each (median seconds, mean relMSE)" % (args.scene, w, h, spp, depth,
+                                                  args.reference_spp, args.repeats))
     print("| renderer | seconds | paths/s | relMSE | relMSE x seconds | image mean |")
     print("|---|---|---|---|---|---|")
     for name, r in rows.items():
@@ -236,7 +233,7 @@ def main():
     print("wavefront / megakernel (bench, same run): %.3f" % bench["wavefrontOverMegakernel"])
     if args.json:
         with open(args.json, "w") as f:
-            json.dump({"mitsubaVariant": args.variant,
+            json.dump({"mitsubaVariant": args.variant, "scene": args.scene,
                        "width": w, "height": h, "spp": spp, "maxDepth": depth,
                        "referenceSpp": args.reference_spp, "repeats": args.repeats,
                        "wavefrontSampler": args.sampler or "default",
