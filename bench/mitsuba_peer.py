@@ -8,8 +8,9 @@ needs `pip install mitsuba` (into a virtual environment of your own, not the pro
 
     python3 -m venv /tmp/mi && /tmp/mi/bin/pip install mitsuba==3.9.1 numpy
     /tmp/mi/bin/python bench/mitsuba_peer.py [--variant scalar_rgb|llvm_ad_rgb|cuda_ad_rgb]
-        [--scene cornell|mirror-glass|mesh] [--wavefront build/wavefront] [--width 256] [--spp 64] [--max-depth 8]
-        [--reference-spp 512] [--repeats 3] [--sampler NAME] [--json bench/results/peer.json]
+        [--scene cornell|mirror-glass|mesh] [--wavefront build/wavefront] [--width 256]
+        [--spp 64] [--max-depth 8] [--reference-spp 512] [--repeats 3] [--sampler NAME]
+        [--json bench/results/peer.json]
 
 `llvm_ad_rgb` (Dr.Jit's LLVM JIT, vectorised: what a CPU user would pick) needs an LLVM that
 Dr.Jit can drive: on Debian 12 `apt install libllvm19`; the script points DRJIT_LIBLLVM_PATH at
