@@ -48,9 +48,16 @@ BvhBuildStats buildBvh(Triangle* triangles, std::size_t count, std::vector<BvhNo
 // The layout traversal walks (BvhPair in scene_types.h): one entry per interior node of
 // `nodes` (from buildBvh), or a single entry for a leaf root or an empty scene.
 std::vector<BvhPair> pairBvhNodes(const std::vector<BvhNode>& nodes);
+// The same appended to `pairs` (a table of several trees), child references offset by its
+// size and triangle references by `triangleBase`; returns the tree's root entry.
+std::uint32_t appendBvhPairs(const std::vector<BvhNode>& nodes, std::vector<BvhPair>& pairs,
+                             std::uint32_t triangleBase);
 
 // The most entries traversal (bvh_traverse.h) can hold on its stack for these pairs, whatever
 // the ray: an entry whose children are both interior pushes one and descends into the other.
 std::uint32_t bvhStackNeed(const std::vector<BvhPair>& pairs);
+// The same for the tree at entries [first, end) of a table of several (appendBvhPairs).
+std::uint32_t bvhStackNeed(const std::vector<BvhPair>& table, std::size_t first,
+                           std::size_t end);
 
 } // namespace wf

@@ -12,28 +12,33 @@ using glm::vec3;
 
 namespace {
 
-// Packs child references (BvhPair in scene_types.h); leaves over WF_BVH_MAX_LEAF_COUNT become
-// extra pair entries whose two children share the leaf's box and halve its range.
+// Packs child references (BvhPair in scene_types.h) at the end of `pairs`, whose entries
+// before are other trees' (so references are offset by the size it had), with triangle
+// indices offset by `triangleBase`; leaves over WF_BVH_MAX_LEAF_COUNT become extra pair
+// entries whose two children share the leaf's box and halve its range.
 class BvhPairer {
 public:
-    explicit BvhPairer(const std::vector<BvhNode>& nodes)
-        : nodes_(nodes), pairOf_(nodes.size(), WF_BVH_NO_CHILD) {}
+    BvhPairer(const std::vector<BvhNode>& nodes, std::vector<BvhPair>& pairs,
+              std::uint32_t triangleBase)
+        : nodes_(nodes), pairs_(pairs), triangleBase_(triangleBase),
+          pairOf_(nodes.size(), WF_BVH_NO_CHILD) {}
 
-    std::vector<BvhPair> pair() {
+    void pair() {
         const BvhNode& root = nodes_[0];
+        const std::size_t rootEntry = pairs_.size();
         if (root.count > 0 || nodes_.size() == 1) { // a leaf root, or the empty scene
-            pairs_.emplace_back(); // entry 0, before any entries an oversized leaf adds
+            pairs_.emplace_back(); // the root's, before any entries an oversized leaf adds
             const std::uint32_t only =
                 root.count > 0 ? leafRef(root.lo, root.hi, root.rightOrFirst, root.count)
                                : WF_BVH_NO_CHILD;
-            pairs_[0] = BvhPair{root.lo, only, root.hi, 0, vec3(0.0f), WF_BVH_NO_CHILD,
-                                vec3(0.0f), 0};
-            return std::move(pairs_);
+            pairs_[rootEntry] = BvhPair{root.lo, only, root.hi, 0, vec3(0.0f), WF_BVH_NO_CHILD,
+                                        vec3(0.0f), 0};
+            return;
         }
-        // Interior nodes become the first entries, in depth-first order: the root's is 0. (A
+        // Interior nodes become the first entries, in depth-first order: the root's first. (A
         // binary tree has one fewer interior node than leaves, so about half are interior:
         // reserved, as growing a table of millions by doubling copied it over and over.)
-        pairs_.reserve(nodes_.size() / 2 + 1);
+        pairs_.reserve(pairs_.size() + nodes_.size() / 2 + 1);
         for (std::size_t i = 0; i < nodes_.size(); ++i)
             if (nodes_[i].count == 0)
                 pairOf_[i] = std::uint32_t(pairs_.size()), pairs_.emplace_back();
@@ -45,7 +50,6 @@ public:
                                nodes_[right].lo, childRef(right), nodes_[right].hi, 0};
             pairs_[pairOf_[i]] = pair;
         }
-        return std::move(pairs_);
     }
 
 private:
@@ -63,12 +67,13 @@ private:
     }
 
     std::uint32_t leafRef(vec3 lo, vec3 hi, std::uint32_t first, std::uint32_t count) {
-        if (std::uint64_t(first) + count >= kMaxIndex)
-            throw InputError("the scene has " + std::to_string(std::uint64_t(first) + count) +
+        const std::uint64_t end = std::uint64_t(triangleBase_) + first + count;
+        if (end >= kMaxIndex)
+            throw InputError("the scene has " + std::to_string(end) +
                              " triangles, over the traversal's limit of " +
                              std::to_string(kMaxIndex - 1));
         if (count <= WF_BVH_MAX_LEAF_COUNT)
-            return first << WF_BVH_COUNT_BITS | count;
+            return (triangleBase_ + first) << WF_BVH_COUNT_BITS | count;
         const std::size_t entry = pairs_.size();
         pairs_.emplace_back();
         const std::uint32_t half = count / 2;
@@ -82,36 +87,52 @@ private:
     static constexpr std::uint64_t kMaxIndex = (1ull << (32 - WF_BVH_COUNT_BITS)) - 1;
 
     const std::vector<BvhNode>& nodes_;
+    std::vector<BvhPair>& pairs_;
+    std::uint32_t triangleBase_;
     std::vector<std::uint32_t> pairOf_;
-    std::vector<BvhPair> pairs_;
 };
 
 } // namespace
 
 std::vector<BvhPair> pairBvhNodes(const std::vector<BvhNode>& nodes) {
+    std::vector<BvhPair> pairs;
+    appendBvhPairs(nodes, pairs, 0);
+    return pairs;
+}
+
+std::uint32_t appendBvhPairs(const std::vector<BvhNode>& nodes, std::vector<BvhPair>& pairs,
+                             std::uint32_t triangleBase) {
     assert(!nodes.empty() && "buildBvh always emits a root");
-    return BvhPairer(nodes).pair();
+    const auto root = std::uint32_t(pairs.size());
+    BvhPairer(nodes, pairs, triangleBase).pair();
+    return root;
 }
 
 std::uint32_t bvhStackNeed(const std::vector<BvhPair>& pairs) {
+    return bvhStackNeed(pairs, 0, pairs.size());
+}
+
+std::uint32_t bvhStackNeed(const std::vector<BvhPair>& table, std::size_t first,
+                           std::size_t end) {
     // Children come after their parents (BvhPairer), so one backward sweep sees them first.
-    std::vector<std::uint32_t> need(pairs.size(), 0);
+    const BvhPair* pairs = table.data() + first;
+    std::vector<std::uint32_t> need(end - first, 0);
     auto interior = [](std::uint32_t child) {
         return child != WF_BVH_NO_CHILD && (child & WF_BVH_MAX_LEAF_COUNT) == 0;
     };
-    for (std::size_t i = pairs.size(); i-- > 0;) {
+    for (std::size_t i = end - first; i-- > 0;) {
         const std::uint32_t children[2] = {pairs[i].child0, pairs[i].child1};
         std::uint32_t deepest = 0;
         for (const std::uint32_t child : children) {
             if (!interior(child))
                 continue;
-            const std::size_t entry = child >> WF_BVH_COUNT_BITS;
-            assert(entry > i && entry < pairs.size() && "pair entries follow their parents");
+            const std::size_t entry = (child >> WF_BVH_COUNT_BITS) - first;
+            assert(entry > i && entry < end - first && "pair entries follow their parents");
             deepest = std::max(deepest, need[entry]);
         }
         need[i] = deepest + (interior(children[0]) && interior(children[1]) ? 1 : 0);
     }
-    return pairs.empty() ? 0 : need[0];
+    return need.empty() ? 0 : need[0];
 }
 
 } // namespace wf

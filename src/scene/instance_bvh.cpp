@@ -11,56 +11,37 @@
 namespace wf {
 namespace {
 
+// A tree's nodes until they are paired into the shared table, and the triangle range they
+// index from 0.
 struct BuiltTree {
-    std::vector<BvhPair> pairs; // indices local to the tree and its triangle range
-    Bounds box;
+    std::vector<BvhNode> nodes;
+    uint32_t firstTriangle = 0;
+    Bounds box() const { return Bounds{nodes[0].lo, nodes[0].hi}; }
 };
 
 BuiltTree buildRange(std::vector<Triangle>& triangles, uint32_t first, uint32_t count, bool tuned,
                      const std::vector<Material>& materials, const Camera& camera,
                      BvhBuildStats& total) {
-    std::vector<BvhNode> nodes;
+    BuiltTree tree;
+    tree.firstTriangle = first;
     BvhBuildStats stats;
     if (tuned && count <= kMaxTunedTriangles) {
         // Tuning builds candidate trees from copies; small enough to copy this range too.
         std::vector<Triangle> part(triangles.begin() + first, triangles.begin() + first + count);
-        stats = buildTunedBvh(part, nodes, materials, camera);
+        stats = buildTunedBvh(part, tree.nodes, materials, camera);
         std::copy(part.begin(), part.end(), triangles.begin() + first);
     } else {
         // In place: a copy of millions of triangles would raise the peak of host memory.
-        stats = buildBvh(triangles.data() + first, count, nodes);
+        stats = buildBvh(triangles.data() + first, count, tree.nodes);
         stats.traversalCost = kTunedTraversalCosts[0];
     }
-    BuiltTree tree;
-    tree.pairs = pairBvhNodes(nodes);
-    tree.box.lo = nodes[0].lo;
-    tree.box.hi = nodes[0].hi;
     total.sahCost += tuned ? stats.sahCost : 0.0;
     total.traversalCost = tuned ? stats.traversalCost : total.traversalCost;
     total.nodeCount += stats.nodeCount;
     total.leafCount += stats.leafCount;
     total.maxDepth = std::max(total.maxDepth, stats.maxDepth);
-    total.stackNeed = std::max(total.stackNeed, bvhStackNeed(tree.pairs));
     total.threads = std::max(total.threads, stats.threads);
     return tree;
-}
-
-// A child reference moved from a tree's own tables to the shared ones.
-uint32_t rebase(uint32_t child, uint32_t pairBase, uint32_t triangleBase) {
-    if (child == WF_BVH_NO_CHILD)
-        return child;
-    const uint32_t count = child & WF_BVH_MAX_LEAF_COUNT;
-    const uint32_t index = (child >> WF_BVH_COUNT_BITS) + (count == 0 ? pairBase : triangleBase);
-    return index << WF_BVH_COUNT_BITS | count;
-}
-
-void append(std::vector<BvhPair>& table, const std::vector<BvhPair>& pairs, uint32_t triangleBase) {
-    const uint32_t pairBase = uint32_t(table.size());
-    for (BvhPair pair : pairs) {
-        pair.child0 = rebase(pair.child0, pairBase, triangleBase);
-        pair.child1 = rebase(pair.child1, pairBase, triangleBase);
-        table.push_back(pair);
-    }
 }
 
 // A box grown by a few float ulps of its largest coordinate, so that rounding in the box's
@@ -103,17 +84,12 @@ TwoLevelBvh buildTwoLevelBvh(std::vector<Triangle>& triangles, const std::vector
     out.stats.threads = 1;
     const uint32_t worldCount = meshes.empty() ? uint32_t(triangles.size()) : meshes[0].firstTriangle;
     std::vector<BuiltTree> trees; // the world's first where it has triangles, then the meshes'
-    std::vector<uint32_t> triangleBases;
-    if (worldCount > 0) {
+    if (worldCount > 0)
         trees.push_back(buildRange(triangles, 0, worldCount, true, materials, camera, out.stats));
-        triangleBases.push_back(0);
-    }
     const uint32_t firstMeshTree = uint32_t(trees.size());
-    for (const MeshRange& mesh : meshes) {
+    for (const MeshRange& mesh : meshes)
         trees.push_back(buildRange(triangles, mesh.firstTriangle, mesh.triangleCount, false,
                                    materials, camera, out.stats));
-        triangleBases.push_back(mesh.firstTriangle);
-    }
 
     // The top level: each instance a pseudo-triangle (lo, hi, centre) whose bounds are its box
     // and whose centroid is the box's centre, so the triangle builder serves; one per leaf.
@@ -130,7 +106,7 @@ TwoLevelBvh buildTwoLevelBvh(std::vector<Triangle>& triangles, const std::vector
     boxes.reserve(placed.size());
     for (uint32_t i = 0; i < placed.size(); ++i) {
         const Bounds box =
-            padded(transformedBounds(trees[placed[i].tree].box, placed[i].worldFromObject));
+            padded(transformedBounds(trees[placed[i].tree].box(), placed[i].worldFromObject));
         boxes.push_back(Triangle{box.lo, 0u, box.hi, 0u, 0.5f * (box.lo + box.hi), i});
     }
     std::vector<BvhNode> topNodes;
@@ -138,20 +114,23 @@ TwoLevelBvh buildTwoLevelBvh(std::vector<Triangle>& triangles, const std::vector
     topOptions.maxLeafSize = 1;
     topOptions.maxSahLeafSize = 1;
     const BvhBuildStats topStats = buildBvh(boxes, topNodes, topOptions);
-    out.pairs = pairBvhNodes(topNodes);
+    // The top level first (traversal starts at entry 0), then each tree paired straight into
+    // the shared table, its nodes freed as it goes.
+    size_t pairCount = topNodes.size() / 2 + 1;
+    for (const BuiltTree& tree : trees)
+        pairCount += tree.nodes.size() / 2 + 1;
+    out.pairs.reserve(pairCount);
+    appendBvhPairs(topNodes, out.pairs, 0);
     out.stats.nodeCount += topStats.nodeCount;
     out.stats.leafCount += topStats.leafCount;
     out.stats.maxDepth += topStats.maxDepth + 1;
 
     std::vector<uint32_t> roots;
-    size_t pairCount = out.pairs.size();
-    for (const BuiltTree& tree : trees)
-        pairCount += tree.pairs.size();
-    out.pairs.reserve(pairCount);
-    for (size_t t = 0; t < trees.size(); ++t) {
-        roots.push_back(uint32_t(out.pairs.size()));
-        append(out.pairs, trees[t].pairs, triangleBases[t]);
-        trees[t].pairs = {};
+    for (BuiltTree& tree : trees) {
+        roots.push_back(appendBvhPairs(tree.nodes, out.pairs, tree.firstTriangle));
+        out.stats.stackNeed = std::max(
+            out.stats.stackNeed, bvhStackNeed(out.pairs, roots.back(), out.pairs.size()));
+        tree.nodes = {};
     }
     for (const Triangle& box : boxes) {
         const Placed& p = placed[box.pad];
