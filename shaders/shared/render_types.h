@@ -59,6 +59,7 @@ namespace wf::gpu_types {
 #define WF_BINDING_TRIANGLE_PAGE1 49 // pages 1-7 of the triangles (49 .. 55)
 #define WF_BINDING_BVH_PAGE1 56      // pages 1-7 of the BVH entries (56 .. 62)
 #define WF_BINDING_INSTANCE_PAGE1 64 // pages 1-7 of the instances (64 .. 70)
+// 71-98: pages 1-7 of the per-triangle attributes (texture_types.h)
 #define WF_BINDING_LIGHTS 17
 #define WF_BINDING_ENVIRONMENT 18       // vec4 radiance per texel
 #define WF_BINDING_ENVIRONMENT_ALIAS 19 // Emitter-shaped alias table over texels

@@ -4,100 +4,37 @@
 // texel is unread.
 // Triangles, BVH entries and instances may span several buffers ("pages", WF_TRIANGLE_PAGES,
 // WF_BVH_PAGES and WF_INSTANCE_PAGES of 2^shift entries each) where one buffer would pass the
-// device's limit.
-layout(binding = WF_BINDING_TRIANGLES, rgba32ui) uniform readonly restrict uimageBuffer
-    triangleTexels;
-#if WF_TRIANGLE_PAGES > 1
-layout(binding = WF_BINDING_TRIANGLE_PAGE1 + 0, rgba32ui) uniform readonly restrict uimageBuffer
-    trianglePage1;
-#endif
-#if WF_TRIANGLE_PAGES > 2
-layout(binding = WF_BINDING_TRIANGLE_PAGE1 + 1, rgba32ui) uniform readonly restrict uimageBuffer
-    trianglePage2;
-#endif
-#if WF_TRIANGLE_PAGES > 3
-layout(binding = WF_BINDING_TRIANGLE_PAGE1 + 2, rgba32ui) uniform readonly restrict uimageBuffer
-    trianglePage3;
-#endif
-#if WF_TRIANGLE_PAGES > 4
-layout(binding = WF_BINDING_TRIANGLE_PAGE1 + 3, rgba32ui) uniform readonly restrict uimageBuffer
-    trianglePage4;
-#endif
-#if WF_TRIANGLE_PAGES > 5
-layout(binding = WF_BINDING_TRIANGLE_PAGE1 + 4, rgba32ui) uniform readonly restrict uimageBuffer
-    trianglePage5;
-#endif
-#if WF_TRIANGLE_PAGES > 6
-layout(binding = WF_BINDING_TRIANGLE_PAGE1 + 5, rgba32ui) uniform readonly restrict uimageBuffer
-    trianglePage6;
-#endif
-#if WF_TRIANGLE_PAGES > 7
-layout(binding = WF_BINDING_TRIANGLE_PAGE1 + 6, rgba32ui) uniform readonly restrict uimageBuffer
-    trianglePage7;
-#endif
-layout(binding = WF_BINDING_BVH_NODES, rgba32ui) uniform readonly restrict uimageBuffer
-    bvhNodeTexels;
-#if WF_BVH_PAGES > 1
-layout(binding = WF_BINDING_BVH_PAGE1 + 0, rgba32ui) uniform readonly restrict uimageBuffer
-    bvhPage1;
-#endif
-#if WF_BVH_PAGES > 2
-layout(binding = WF_BINDING_BVH_PAGE1 + 1, rgba32ui) uniform readonly restrict uimageBuffer
-    bvhPage2;
-#endif
-#if WF_BVH_PAGES > 3
-layout(binding = WF_BINDING_BVH_PAGE1 + 2, rgba32ui) uniform readonly restrict uimageBuffer
-    bvhPage3;
-#endif
-#if WF_BVH_PAGES > 4
-layout(binding = WF_BINDING_BVH_PAGE1 + 3, rgba32ui) uniform readonly restrict uimageBuffer
-    bvhPage4;
-#endif
-#if WF_BVH_PAGES > 5
-layout(binding = WF_BINDING_BVH_PAGE1 + 4, rgba32ui) uniform readonly restrict uimageBuffer
-    bvhPage5;
-#endif
-#if WF_BVH_PAGES > 6
-layout(binding = WF_BINDING_BVH_PAGE1 + 5, rgba32ui) uniform readonly restrict uimageBuffer
-    bvhPage6;
-#endif
-#if WF_BVH_PAGES > 7
-layout(binding = WF_BINDING_BVH_PAGE1 + 6, rgba32ui) uniform readonly restrict uimageBuffer
-    bvhPage7;
-#endif
+// device's limit (paged_table.glsl declares them and their readers: triangleTexel, bvhTexel,
+// instanceTexel).
+#define WF_PAGED_NAME triangleTexel
+#define WF_PAGED_FORMAT rgba32ui
+#define WF_PAGED_BINDING WF_BINDING_TRIANGLES
+#define WF_PAGED_BINDING_PAGE1 WF_BINDING_TRIANGLE_PAGE1
+#define WF_PAGED_PAGES WF_TRIANGLE_PAGES
+#define WF_PAGED_SHIFT WF_TRIANGLE_PAGE_SHIFT
+#define WF_PAGED_TEXELS WF_TRIANGLE_TEXELS
+#include "paged_table.glsl"
+
+#define WF_PAGED_NAME bvhTexel
+#define WF_PAGED_FORMAT rgba32ui
+#define WF_PAGED_BINDING WF_BINDING_BVH_NODES
+#define WF_PAGED_BINDING_PAGE1 WF_BINDING_BVH_PAGE1
+#define WF_PAGED_PAGES WF_BVH_PAGES
+#define WF_PAGED_SHIFT WF_BVH_PAGE_SHIFT
+#define WF_PAGED_TEXELS WF_BVH_PAIR_TEXELS
+#include "paged_table.glsl"
+
 layout(binding = WF_BINDING_MATERIALS, rgba32ui) uniform readonly restrict uimageBuffer
     materialTexels;
 #if WF_HAS_INSTANCES
-layout(binding = WF_BINDING_INSTANCES, rgba32ui) uniform readonly restrict uimageBuffer
-    instanceTexels;
-#if WF_INSTANCE_PAGES > 1
-layout(binding = WF_BINDING_INSTANCE_PAGE1 + 0, rgba32ui) uniform readonly restrict uimageBuffer
-    instancePage1;
-#endif
-#if WF_INSTANCE_PAGES > 2
-layout(binding = WF_BINDING_INSTANCE_PAGE1 + 1, rgba32ui) uniform readonly restrict uimageBuffer
-    instancePage2;
-#endif
-#if WF_INSTANCE_PAGES > 3
-layout(binding = WF_BINDING_INSTANCE_PAGE1 + 2, rgba32ui) uniform readonly restrict uimageBuffer
-    instancePage3;
-#endif
-#if WF_INSTANCE_PAGES > 4
-layout(binding = WF_BINDING_INSTANCE_PAGE1 + 3, rgba32ui) uniform readonly restrict uimageBuffer
-    instancePage4;
-#endif
-#if WF_INSTANCE_PAGES > 5
-layout(binding = WF_BINDING_INSTANCE_PAGE1 + 4, rgba32ui) uniform readonly restrict uimageBuffer
-    instancePage5;
-#endif
-#if WF_INSTANCE_PAGES > 6
-layout(binding = WF_BINDING_INSTANCE_PAGE1 + 5, rgba32ui) uniform readonly restrict uimageBuffer
-    instancePage6;
-#endif
-#if WF_INSTANCE_PAGES > 7
-layout(binding = WF_BINDING_INSTANCE_PAGE1 + 6, rgba32ui) uniform readonly restrict uimageBuffer
-    instancePage7;
-#endif
+#define WF_PAGED_NAME instanceTexel
+#define WF_PAGED_FORMAT rgba32ui
+#define WF_PAGED_BINDING WF_BINDING_INSTANCES
+#define WF_PAGED_BINDING_PAGE1 WF_BINDING_INSTANCE_PAGE1
+#define WF_PAGED_PAGES WF_INSTANCE_PAGES
+#define WF_PAGED_SHIFT WF_INSTANCE_PAGE_SHIFT
+#define WF_PAGED_TEXELS WF_INSTANCE_TEXELS
+#include "paged_table.glsl"
 #endif
 #if WF_HAS_EMITTERS
 layout(binding = WF_BINDING_EMITTERS, rgba32ui) uniform readonly restrict uimageBuffer
@@ -127,90 +64,6 @@ layout(binding = WF_BINDING_ENVIRONMENT_ALIAS, rgba32ui) uniform readonly restri
 // A macro, as GLSL functions cannot take the images themselves.
 #define wfTexel(table, index) imageLoad(table, int(index))
 
-// Texel `part` of triangle `index`, from its page.
-uvec4 triangleTexel(uint index, uint part) {
-#if WF_TRIANGLE_PAGES > 1
-    const uint page = index >> WF_TRIANGLE_PAGE_SHIFT;
-    const uint texel =
-        (index & ((1u << WF_TRIANGLE_PAGE_SHIFT) - 1u)) * WF_TRIANGLE_TEXELS + part;
-    switch (page) {
-#if WF_TRIANGLE_PAGES > 1
-    case 1u:
-        return wfTexel(trianglePage1, texel);
-#endif
-#if WF_TRIANGLE_PAGES > 2
-    case 2u:
-        return wfTexel(trianglePage2, texel);
-#endif
-#if WF_TRIANGLE_PAGES > 3
-    case 3u:
-        return wfTexel(trianglePage3, texel);
-#endif
-#if WF_TRIANGLE_PAGES > 4
-    case 4u:
-        return wfTexel(trianglePage4, texel);
-#endif
-#if WF_TRIANGLE_PAGES > 5
-    case 5u:
-        return wfTexel(trianglePage5, texel);
-#endif
-#if WF_TRIANGLE_PAGES > 6
-    case 6u:
-        return wfTexel(trianglePage6, texel);
-#endif
-#if WF_TRIANGLE_PAGES > 7
-    case 7u:
-        return wfTexel(trianglePage7, texel);
-#endif
-    default:
-        return wfTexel(triangleTexels, texel);
-    }
-#else
-    return wfTexel(triangleTexels, index * WF_TRIANGLE_TEXELS + part);
-#endif
-}
-
-// Texel `part` of BVH entry `index`, from its page.
-uvec4 bvhTexel(uint index, uint part) {
-#if WF_BVH_PAGES > 1
-    const uint page = index >> WF_BVH_PAGE_SHIFT;
-    const uint texel = (index & ((1u << WF_BVH_PAGE_SHIFT) - 1u)) * WF_BVH_PAIR_TEXELS + part;
-    switch (page) {
-#if WF_BVH_PAGES > 1
-    case 1u:
-        return wfTexel(bvhPage1, texel);
-#endif
-#if WF_BVH_PAGES > 2
-    case 2u:
-        return wfTexel(bvhPage2, texel);
-#endif
-#if WF_BVH_PAGES > 3
-    case 3u:
-        return wfTexel(bvhPage3, texel);
-#endif
-#if WF_BVH_PAGES > 4
-    case 4u:
-        return wfTexel(bvhPage4, texel);
-#endif
-#if WF_BVH_PAGES > 5
-    case 5u:
-        return wfTexel(bvhPage5, texel);
-#endif
-#if WF_BVH_PAGES > 6
-    case 6u:
-        return wfTexel(bvhPage6, texel);
-#endif
-#if WF_BVH_PAGES > 7
-    case 7u:
-        return wfTexel(bvhPage7, texel);
-#endif
-    default:
-        return wfTexel(bvhNodeTexels, texel);
-    }
-#else
-    return wfTexel(bvhNodeTexels, index * WF_BVH_PAIR_TEXELS + part);
-#endif
-}
 
 Triangle triangleAt(uint index) {
     uvec4 a = triangleTexel(index, 0u);
@@ -270,48 +123,6 @@ Material materialAt(uint index) {
 }
 
 #if WF_HAS_INSTANCES
-// Texel `part` of instance `index`, from its page.
-uvec4 instanceTexel(uint index, uint part) {
-#if WF_INSTANCE_PAGES > 1
-    const uint page = index >> WF_INSTANCE_PAGE_SHIFT;
-    const uint texel =
-        (index & ((1u << WF_INSTANCE_PAGE_SHIFT) - 1u)) * WF_INSTANCE_TEXELS + part;
-    switch (page) {
-#if WF_INSTANCE_PAGES > 1
-    case 1u:
-        return wfTexel(instancePage1, texel);
-#endif
-#if WF_INSTANCE_PAGES > 2
-    case 2u:
-        return wfTexel(instancePage2, texel);
-#endif
-#if WF_INSTANCE_PAGES > 3
-    case 3u:
-        return wfTexel(instancePage3, texel);
-#endif
-#if WF_INSTANCE_PAGES > 4
-    case 4u:
-        return wfTexel(instancePage4, texel);
-#endif
-#if WF_INSTANCE_PAGES > 5
-    case 5u:
-        return wfTexel(instancePage5, texel);
-#endif
-#if WF_INSTANCE_PAGES > 6
-    case 6u:
-        return wfTexel(instancePage6, texel);
-#endif
-#if WF_INSTANCE_PAGES > 7
-    case 7u:
-        return wfTexel(instancePage7, texel);
-#endif
-    default:
-        return wfTexel(instanceTexels, texel);
-    }
-#else
-    return wfTexel(instanceTexels, index * WF_INSTANCE_TEXELS + part);
-#endif
-}
 
 Instance instanceAt(uint index) {
     uvec4 t6 = instanceTexel(index, 6u);

@@ -8,21 +8,36 @@
 #define WF_SURFACE_BINDINGS_GLSL
 #include "texture_types.h"
 
+// The per-triangle arrays are paged where the triangles are (WF_TRIANGLE_PAGES), so that one
+// page index serves them all.
 #if WF_HAS_NORMALS
-layout(binding = WF_BINDING_NORMALS, rgba32ui) uniform readonly restrict uimageBuffer normalTexels;
+#define WF_PAGED_NAME normalTexel
+#define WF_PAGED_FORMAT rgba32ui
+#define WF_PAGED_BINDING WF_BINDING_NORMALS
+#define WF_PAGED_BINDING_PAGE1 WF_BINDING_NORMAL_PAGE1
+#define WF_PAGED_PAGES WF_TRIANGLE_PAGES
+#define WF_PAGED_SHIFT WF_TRIANGLE_PAGE_SHIFT
+#define WF_PAGED_TEXELS WF_TRIANGLE_NORMALS_TEXELS
+#include "paged_table.glsl"
 
 TriangleNormals triangleNormalsAt(uint triangle) {
-    uvec4 t = imageLoad(normalTexels, int(triangle * WF_TRIANGLE_NORMALS_TEXELS));
+    uvec4 t = normalTexel(triangle, 0u);
     return TriangleNormals(t.x, t.y, t.z, t.w);
 }
 #endif
 
 #if WF_HAS_NORMAL_MAPS
-layout(binding = WF_BINDING_TANGENTS, rgba32ui) uniform readonly restrict uimageBuffer
-    tangentTexels;
+#define WF_PAGED_NAME tangentTexel
+#define WF_PAGED_FORMAT rgba32ui
+#define WF_PAGED_BINDING WF_BINDING_TANGENTS
+#define WF_PAGED_BINDING_PAGE1 WF_BINDING_TANGENT_PAGE1
+#define WF_PAGED_PAGES WF_TRIANGLE_PAGES
+#define WF_PAGED_SHIFT WF_TRIANGLE_PAGE_SHIFT
+#define WF_PAGED_TEXELS WF_TRIANGLE_TANGENTS_TEXELS
+#include "paged_table.glsl"
 
 TriangleTangents triangleTangentsAt(uint triangle) {
-    uvec4 t = imageLoad(tangentTexels, int(triangle * WF_TRIANGLE_TANGENTS_TEXELS));
+    uvec4 t = tangentTexel(triangle, 0u);
     return TriangleTangents(t.x, t.y, t.z, t.w);
 }
 #endif
@@ -30,11 +45,23 @@ TriangleTangents triangleTangentsAt(uint triangle) {
 #if WF_HAS_TEXTURES
 layout(binding = WF_BINDING_TEXTURE_REFS, rgba32ui) uniform readonly restrict uimageBuffer
     textureRefTexels;
-layout(binding = WF_BINDING_TEXCOORDS0, rg32ui) uniform readonly restrict uimageBuffer
-    texcoord0Texels;
+#define WF_PAGED_NAME texcoord0Texel
+#define WF_PAGED_FORMAT rg32ui
+#define WF_PAGED_BINDING WF_BINDING_TEXCOORDS0
+#define WF_PAGED_BINDING_PAGE1 WF_BINDING_TEXCOORD0_PAGE1
+#define WF_PAGED_PAGES WF_TRIANGLE_PAGES
+#define WF_PAGED_SHIFT WF_TRIANGLE_PAGE_SHIFT
+#define WF_PAGED_TEXELS WF_TRIANGLE_UVS_TEXELS
+#include "paged_table.glsl"
 #if WF_HAS_TEXCOORD1
-layout(binding = WF_BINDING_TEXCOORDS1, rg32ui) uniform readonly restrict uimageBuffer
-    texcoord1Texels;
+#define WF_PAGED_NAME texcoord1Texel
+#define WF_PAGED_FORMAT rg32ui
+#define WF_PAGED_BINDING WF_BINDING_TEXCOORDS1
+#define WF_PAGED_BINDING_PAGE1 WF_BINDING_TEXCOORD1_PAGE1
+#define WF_PAGED_PAGES WF_TRIANGLE_PAGES
+#define WF_PAGED_SHIFT WF_TRIANGLE_PAGE_SHIFT
+#define WF_PAGED_TEXELS WF_TRIANGLE_UVS_TEXELS
+#include "paged_table.glsl"
 #endif
 layout(binding = WF_BINDING_TEXELS0, r32ui) uniform readonly restrict uimageBuffer texelPage0;
 #if WF_TEXEL_PAGES > 1
@@ -58,16 +85,15 @@ TextureRef textureRefAt(uint index) {
 
 // UV set `layer` (0: TEXCOORD_0, 1: TEXCOORD_1) at a triangle's corners.
 TriangleUvs triangleUvsAt(uint layer, uint triangle) {
-    int base = int(triangle * WF_TRIANGLE_UVS_TEXELS);
 #if WF_HAS_TEXCOORD1
     if (layer == 1u)
-        return TriangleUvs(uintBitsToFloat(imageLoad(texcoord1Texels, base).xy),
-                           uintBitsToFloat(imageLoad(texcoord1Texels, base + 1).xy),
-                           uintBitsToFloat(imageLoad(texcoord1Texels, base + 2).xy));
+        return TriangleUvs(uintBitsToFloat(texcoord1Texel(triangle, 0u).xy),
+                           uintBitsToFloat(texcoord1Texel(triangle, 1u).xy),
+                           uintBitsToFloat(texcoord1Texel(triangle, 2u).xy));
 #endif
-    return TriangleUvs(uintBitsToFloat(imageLoad(texcoord0Texels, base).xy),
-                       uintBitsToFloat(imageLoad(texcoord0Texels, base + 1).xy),
-                       uintBitsToFloat(imageLoad(texcoord0Texels, base + 2).xy));
+    return TriangleUvs(uintBitsToFloat(texcoord0Texel(triangle, 0u).xy),
+                       uintBitsToFloat(texcoord0Texel(triangle, 1u).xy),
+                       uintBitsToFloat(texcoord0Texel(triangle, 2u).xy));
 }
 
 // One RGBA8 texel (packed as unpackUnorm4x8 reads it) of a texel page.

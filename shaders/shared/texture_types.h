@@ -35,7 +35,7 @@ namespace wf::gpu_types {
 using namespace glm;
 #endif
 
-// Bindings 20-31 of the shared descriptor set (render_types.h keeps 0-19).
+// Bindings 20-31 and 71-98 of the shared descriptor set (render_types.h keeps the others).
 #define WF_BINDING_TEXTURE_REFS 20
 #define WF_BINDING_NORMALS 21
 #define WF_BINDING_TANGENTS 22
@@ -43,6 +43,11 @@ using namespace glm;
 #define WF_BINDING_TEXCOORDS1 24
 #define WF_BINDING_TEXELS0 25 // texel pages 0..3: images split across buffers so that none
 #define WF_MAX_TEXEL_PAGES 4  // passes the device's per-buffer limit (lavapipe: 128 MiB)
+// Pages 1-7 of the per-triangle attributes, cut where the triangles' pages are (71-98)
+#define WF_BINDING_NORMAL_PAGE1 71    // 71 .. 77
+#define WF_BINDING_TANGENT_PAGE1 78   // 78 .. 84
+#define WF_BINDING_TEXCOORD0_PAGE1 85 // 85 .. 91
+#define WF_BINDING_TEXCOORD1_PAGE1 92 // 92 .. 98
 
 // TextureRef.flags: bits 0-1 wrap S, bits 2-3 wrap T, then switches.
 #define WF_WRAP_REPEAT 0u

@@ -4,6 +4,7 @@
 
 #include "scene/bvh_tuning.h"
 #include "scene/instance_bvh.h"
+#include "render/table_pages.h"
 #include "shaders/shared/render_types.h"
 #include "shaders/shared/sheen.h"
 
@@ -92,29 +93,6 @@ Buffer uploadTable(const Context& context, const char* name, const std::vector<T
     return buffer;
 }
 
-// `values` cut into `pages`, a buffer each ("triangles", "triangles page 2", ...).
-template <typename T>
-std::vector<Buffer> uploadPages(const Context& context, const std::string& name,
-                                const std::vector<T>& values, const TablePages& pages) {
-    std::vector<Buffer> buffers;
-    for (uint32_t page = 0; page < pages.count; ++page) {
-        const size_t first = size_t(page) * pages.entriesPerPage();
-        const size_t count = std::min<size_t>(values.size() - first, pages.entriesPerPage());
-        buffers.emplace_back(context,
-                             page == 0 ? name : name + " page " + std::to_string(page + 1),
-                             count * sizeof(T));
-        buffers.back().upload(values.data() + first, count * sizeof(T));
-    }
-    return buffers;
-}
-
-void bindPages(DescriptorBindings& bindings, const std::vector<Buffer>& pages,
-               uint32_t firstBinding, uint32_t otherBindings) {
-    for (size_t page = 0; page < pages.size(); ++page)
-        bindings.push_back({page == 0 ? firstBinding : otherBindings + uint32_t(page) - 1,
-                            &pages[page], BufferAccess::UintTexels});
-}
-
 // The material table as texels; scenes with a sheen get the sheen albedo table in front
 // (scene_tables.glsl reads it there).
 std::vector<glm::vec4> materialTexels(const std::vector<Material>& materials, bool sheen) {
@@ -148,7 +126,7 @@ SceneBuffers::SceneBuffers(const Context& context, const PreparedScene& scene,
     }
     if (variant.lightsBuffer())
         lights_ = uploadTable(context, "lights", scene.punctualLights);
-    surface_ = SurfaceBuffers(context, scene.surface, variant.surface);
+    surface_ = SurfaceBuffers(context, scene.surface, variant.surface, variant.trianglePages);
     if (variant.environment) {
         const Environment& env = scene.environment;
         std::vector<glm::vec4> texels(size_t(env.width) * env.height);

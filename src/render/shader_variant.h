@@ -6,6 +6,7 @@
 #include "gpu/shader_compiler.h"
 #include "render/samplers.h"
 #include "render/surface_buffers.h"
+#include "render/table_pages.h"
 
 namespace wf {
 
@@ -19,20 +20,6 @@ enum class LightSampling { Bsdf = 0, Nee = 1, Mis = 2 };
 // the scene has kLightTreeMinLights or more lights for it, else power.
 enum class LightSelection { Auto, Uniform, Power, Tree };
 constexpr uint32_t kLightTreeMinLights = 4;
-
-// How a table of entries spreads over buffers: `count` pages of 2^shift entries (shift 31 and
-// one page when it fits in one buffer).
-struct TablePages {
-    uint32_t count = 1;
-    uint32_t shift = 31;
-    uint64_t entriesPerPage() const { return uint64_t(1) << shift; }
-    bool operator==(const TablePages&) const = default;
-};
-
-// The pages `entries` entries of `entryBytes` need where one buffer holds at most `pageBytes`;
-// InputError naming the table and the limit past WF_MAX_TABLE_PAGES pages.
-TablePages tablePaging(uint64_t entries, uint64_t entryBytes, uint64_t pageBytes,
-                       const char* table);
 
 struct ShaderVariant {
     LightSampling lightSampling = LightSampling::Mis;

@@ -137,17 +137,17 @@ SurfaceFeatures surfaceFeatures(const SurfaceData& surface, const std::vector<Ma
 }
 
 SurfaceBuffers::SurfaceBuffers(const Context& context, const SurfaceData& surface,
-                               const SurfaceFeatures& features) {
+                               const SurfaceFeatures& features, const TablePages& trianglePages) {
     if (features.normals)
-        normals_ = uploadArray(context, "vertex normals", surface.normals);
+        normals_ = uploadPages(context, "vertex normals", surface.normals, trianglePages);
     if (features.normalMaps)
-        tangents_ = uploadArray(context, "vertex tangents", surface.tangents);
+        tangents_ = uploadPages(context, "vertex tangents", surface.tangents, trianglePages);
     if (!features.textures)
         return;
-    uv0_ = uploadArray(context, "texcoords 0",
-                       surface.uv0.empty() ? std::vector<TriangleUvs>(1) : surface.uv0);
+    // Without UVs, one zero entry a page: the variant reads them, no texture lookup uses them.
+    uv0_ = uploadPages(context, "texcoords 0", surface.uv0, trianglePages);
     if (features.texcoord1)
-        uv1_ = uploadArray(context, "texcoords 1", surface.uv1);
+        uv1_ = uploadPages(context, "texcoords 1", surface.uv1, trianglePages);
 
     const uint64_t pageBytes = texelPageBytes(context);
     const TexelPlan plan = planTexels(surface, pageBytes);
@@ -194,15 +194,14 @@ SurfaceBuffers::SurfaceBuffers(const Context& context, const SurfaceData& surfac
 
 // All read-only at scattered indices, so texel buffers (surface_bindings.glsl unpacks them).
 void SurfaceBuffers::appendBindings(DescriptorBindings& bindings) const {
-    const DescriptorBinding all[] = {
-        {WF_BINDING_NORMALS, &normals_, BufferAccess::UintTexels},
-        {WF_BINDING_TANGENTS, &tangents_, BufferAccess::UintTexels},
-        {WF_BINDING_TEXCOORDS0, &uv0_, BufferAccess::Uint2Texels},
-        {WF_BINDING_TEXCOORDS1, &uv1_, BufferAccess::Uint2Texels},
-        {WF_BINDING_TEXTURE_REFS, &textureRefs_, BufferAccess::UintTexels}};
-    for (const auto& binding : all)
-        if (*binding.buffer)
-            bindings.push_back(binding);
+    bindPages(bindings, normals_, WF_BINDING_NORMALS, WF_BINDING_NORMAL_PAGE1);
+    bindPages(bindings, tangents_, WF_BINDING_TANGENTS, WF_BINDING_TANGENT_PAGE1);
+    bindPages(bindings, uv0_, WF_BINDING_TEXCOORDS0, WF_BINDING_TEXCOORD0_PAGE1,
+              BufferAccess::Uint2Texels);
+    bindPages(bindings, uv1_, WF_BINDING_TEXCOORDS1, WF_BINDING_TEXCOORD1_PAGE1,
+              BufferAccess::Uint2Texels);
+    if (textureRefs_)
+        bindings.push_back({WF_BINDING_TEXTURE_REFS, &textureRefs_, BufferAccess::UintTexels});
     for (size_t page = 0; page < texelPages_.size(); ++page)
         bindings.push_back(
             {WF_BINDING_TEXELS0 + uint32_t(page), &texelPages_[page], BufferAccess::Uint1Texels});
@@ -210,9 +209,11 @@ void SurfaceBuffers::appendBindings(DescriptorBindings& bindings) const {
 
 void SurfaceBuffers::appendMemoryReport(
     std::vector<std::pair<std::string, uint64_t>>& report) const {
-    for (const Buffer* buffer : {&normals_, &tangents_, &uv0_, &uv1_, &textureRefs_})
-        if (*buffer)
-            report.emplace_back(buffer->name(), buffer->size());
+    for (const std::vector<Buffer>* pages : {&normals_, &tangents_, &uv0_, &uv1_})
+        for (const Buffer& page : *pages)
+            report.emplace_back(page.name(), page.size());
+    if (textureRefs_)
+        report.emplace_back(textureRefs_.name(), textureRefs_.size());
     for (const Buffer& page : texelPages_)
         report.emplace_back(page.name(), page.size());
 }

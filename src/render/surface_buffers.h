@@ -11,6 +11,7 @@
 
 #include "gpu/buffer.h"
 #include "gpu/compute_program.h"
+#include "render/table_pages.h"
 #include "scene/scene.h"
 
 namespace wf {
@@ -59,17 +60,19 @@ SurfaceFeatures surfaceFeatures(const SurfaceData& surface, const std::vector<Ma
 class SurfaceBuffers {
 public:
     SurfaceBuffers() = default;
+    // The per-triangle arrays are cut at the triangle table's page boundaries
+    // (`trianglePages`), so one page index serves them all.
     SurfaceBuffers(const Context& context, const SurfaceData& surface,
-                   const SurfaceFeatures& features);
+                   const SurfaceFeatures& features, const TablePages& trianglePages);
 
     void appendBindings(DescriptorBindings& bindings) const;
     void appendMemoryReport(std::vector<std::pair<std::string, uint64_t>>& report) const;
 
 private:
-    Buffer normals_;
-    Buffer tangents_;
-    Buffer uv0_;
-    Buffer uv1_;
+    std::vector<Buffer> normals_; // a buffer per triangle page, each of these four
+    std::vector<Buffer> tangents_;
+    std::vector<Buffer> uv0_;
+    std::vector<Buffer> uv1_;
     Buffer textureRefs_;
     std::vector<Buffer> texelPages_;
 };

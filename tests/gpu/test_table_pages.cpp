@@ -13,7 +13,9 @@
 
 #include "analytic_scenes.h"
 #include "gpu_test_util.h"
+#include "instanced_scene.h"
 #include "render/scene_buffers.h"
+#include "scene/gltf_loader.h"
 
 namespace wf::test {
 namespace {
@@ -119,6 +121,37 @@ TEST(TablePages, PagedInstancesRenderTheSameImage) {
         EXPECT_EQ(paged.rgb, single.rgb) << "megakernel " << megakernel;
         EXPECT_GT(imageMean(paged.rgb).mean, 0.01) << "the scene is lit";
     }
+    EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
+}
+
+TEST(TablePages, PagedAttributesRenderTheSameImage) {
+    // Smooth normals, MikkTSpace tangents and UVs (a normal map) follow the triangles' pages.
+    TempDir dir;
+    std::vector<std::string> warnings;
+    GltfOptions options;
+    options.instancing = Instancing::Off;
+    const Scene scene = loadGltf(writeNormalMappedInstancedScene(dir), &warnings, options);
+    ASSERT_FALSE(scene.surface.normals.empty());
+    ASSERT_FALSE(scene.surface.tangents.empty());
+    ASSERT_FALSE(scene.surface.uv0.empty());
+    const PreparedScene prepared = prepareScene(scene);
+    const uint64_t pageBytes = 128 * sizeof(Triangle);
+    const uint32_t trianglePages =
+        tablePaging(prepared.triangles.size(), sizeof(Triangle), pageBytes, "triangles").count;
+    ASSERT_GE(trianglePages, 2u);
+    ASSERT_LE(tablePaging(prepared.bvhPairs.size(), sizeof(BvhPair), pageBytes, "BVH").count,
+              8u);
+    // The wavefront only: the megakernel reads the tables through the same functions.
+    RenderSettings settings;
+    settings.width = 32;
+    settings.height = 24;
+    settings.samplesPerPixel = 2;
+    settings.maxDepth = 4;
+    const RenderResult single = renderScene(scene, settings);
+    settings.tablePageBytes = pageBytes;
+    const RenderResult paged = renderScene(scene, settings);
+    EXPECT_EQ(paged.rgb, single.rgb) << trianglePages << " pages";
+    EXPECT_GT(imageMean(paged.rgb).mean, 0.01) << "the scene is lit";
     EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
 }
 
