@@ -20,6 +20,23 @@
 namespace wf::test {
 namespace {
 
+// The scene rendered from single buffers and from pages of at most `pageBytes`, bit for bit
+// the same; lit, so that the comparison means something. `what` names the case.
+void expectPagedRendersAlike(const Scene& scene, uint64_t pageBytes, bool megakernel,
+                             uint32_t width, uint32_t height, const std::string& what) {
+    RenderSettings settings;
+    settings.width = width;
+    settings.height = height;
+    settings.samplesPerPixel = 2;
+    settings.maxDepth = 4;
+    settings.megakernel = megakernel;
+    const RenderResult single = renderScene(scene, settings);
+    settings.tablePageBytes = pageBytes;
+    const RenderResult paged = renderScene(scene, settings);
+    EXPECT_EQ(paged.rgb, single.rgb) << what << (megakernel ? ", megakernel" : ", wavefront");
+    EXPECT_GT(imageMean(paged.rgb).mean, 0.01) << what << ": the scene is lit";
+}
+
 TEST(TablePages, PagingRule) {
     EXPECT_EQ(tablePaging(1000, 48, 1 << 20, "triangles"), TablePages{});
     const TablePages pages = tablePaging(1000, 48, 48 * 300, "triangles");
@@ -68,18 +85,10 @@ TEST(TablePages, PagedTablesRenderTheSameImage) {
     const auto [trianglePages, bvhPages] = pagesAt(pageBytes);
     ASSERT_GE(trianglePages, 2u);
     ASSERT_GE(bvhPages, 2u);
-    for (bool megakernel : {false, true}) {
-        RenderSettings settings;
-        settings.width = settings.height = 24;
-        settings.samplesPerPixel = 2;
-        settings.maxDepth = 4;
-        settings.megakernel = megakernel;
-        const RenderResult single = renderScene(scene, settings);
-        settings.tablePageBytes = pageBytes;
-        const RenderResult paged = renderScene(scene, settings);
-        EXPECT_EQ(paged.rgb, single.rgb) << trianglePages << " triangle pages, " << bvhPages
-                                         << " BVH pages, megakernel " << megakernel;
-    }
+    for (bool megakernel : {false, true})
+        expectPagedRendersAlike(scene, pageBytes, megakernel, 24, 24,
+                                std::to_string(trianglePages) + " triangle pages, " +
+                                    std::to_string(bvhPages) + " BVH pages");
     EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
 }
 
@@ -109,18 +118,8 @@ TEST(TablePages, PagedInstancesRenderTheSameImage) {
     const uint64_t pageBytes = 4 * sizeof(Instance);
     ASSERT_EQ(tablePaging(prepared.instances.size(), sizeof(Instance), pageBytes, "instances").count,
               4u);
-    for (bool megakernel : {false, true}) {
-        RenderSettings settings;
-        settings.width = settings.height = 24;
-        settings.samplesPerPixel = 2;
-        settings.maxDepth = 4;
-        settings.megakernel = megakernel;
-        const RenderResult single = renderScene(scene, settings);
-        settings.tablePageBytes = pageBytes;
-        const RenderResult paged = renderScene(scene, settings);
-        EXPECT_EQ(paged.rgb, single.rgb) << "megakernel " << megakernel;
-        EXPECT_GT(imageMean(paged.rgb).mean, 0.01) << "the scene is lit";
-    }
+    for (bool megakernel : {false, true})
+        expectPagedRendersAlike(scene, pageBytes, megakernel, 24, 24, "4 instance pages");
     EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
 }
 
@@ -142,16 +141,8 @@ TEST(TablePages, PagedAttributesRenderTheSameImage) {
     ASSERT_LE(tablePaging(prepared.bvhPairs.size(), sizeof(BvhPair), pageBytes, "BVH").count,
               8u);
     // The wavefront only: the megakernel reads the tables through the same functions.
-    RenderSettings settings;
-    settings.width = 32;
-    settings.height = 24;
-    settings.samplesPerPixel = 2;
-    settings.maxDepth = 4;
-    const RenderResult single = renderScene(scene, settings);
-    settings.tablePageBytes = pageBytes;
-    const RenderResult paged = renderScene(scene, settings);
-    EXPECT_EQ(paged.rgb, single.rgb) << trianglePages << " pages";
-    EXPECT_GT(imageMean(paged.rgb).mean, 0.01) << "the scene is lit";
+    expectPagedRendersAlike(scene, pageBytes, false, 32, 24,
+                            std::to_string(trianglePages) + " triangle pages");
     EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
 }
 
