@@ -1,6 +1,8 @@
 // pairBvhNodes and bvhStackNeed (bvh_builder.h): the built tree in the layout traversal reads.
+#include <algorithm>
 #include <cassert>
 #include <string>
+#include <thread>
 
 #include "errors.h"
 #include "scene/bvh_builder.h"
@@ -35,6 +37,8 @@ public:
                                         vec3(0.0f), 0};
             return;
         }
+        if (nodes_.size() >= kParallelNodes && pairInParallel())
+            return;
         // Interior nodes become the first entries, in depth-first order: the root's first. (A
         // binary tree has one fewer interior node than leaves, so about half are interior:
         // reserved, as growing a table of millions by doubling copied it over and over.)
@@ -53,6 +57,84 @@ public:
     }
 
 private:
+    // Trees this large are paired on every core: 0.09 s of a 5 M triangle two-level build
+    // on one.
+    static constexpr std::size_t kParallelNodes = std::size_t(1) << 16;
+
+    // The same entries as the serial loops, in three passes over contiguous chunks of the
+    // nodes: count each chunk's interior nodes (and check the limits leafRef would throw on),
+    // number them from the chunk's prefix, then fill them. False, with nothing written, where
+    // a leaf needs splitting or a limit is passed: the serial loops handle those.
+    bool pairInParallel() {
+        const std::size_t n = nodes_.size();
+        const std::size_t chunks =
+            std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, 8);
+        auto chunkStart = [&](std::size_t k) { return n * k / chunks; };
+        struct Scan {
+            std::size_t interior = 0;
+            std::uint64_t leafEnd = 0; // past the last triangle any leaf holds
+            bool oversized = false;
+        };
+        std::vector<Scan> scans(chunks);
+        onChunks(chunks, [&](std::size_t k) {
+            Scan scan;
+            for (std::size_t i = chunkStart(k); i < chunkStart(k + 1); ++i) {
+                const BvhNode& node = nodes_[i];
+                if (node.count == 0) {
+                    ++scan.interior;
+                    continue;
+                }
+                scan.oversized |= node.count > WF_BVH_MAX_LEAF_COUNT;
+                scan.leafEnd = std::max(scan.leafEnd, std::uint64_t(node.rightOrFirst) + node.count);
+            }
+            scans[k] = scan;
+        });
+        std::vector<std::size_t> first(chunks + 1, pairs_.size());
+        std::uint64_t leafEnd = 0;
+        for (std::size_t k = 0; k < chunks; ++k) {
+            if (scans[k].oversized)
+                return false;
+            first[k + 1] = first[k] + scans[k].interior;
+            leafEnd = std::max(leafEnd, scans[k].leafEnd);
+        }
+        if (first[chunks] >= kMaxIndex || triangleBase_ + leafEnd >= kMaxIndex)
+            return false;
+        pairs_.resize(first[chunks]);
+        onChunks(chunks, [&](std::size_t k) {
+            auto entry = std::uint32_t(first[k]);
+            for (std::size_t i = chunkStart(k); i < chunkStart(k + 1); ++i)
+                if (nodes_[i].count == 0)
+                    pairOf_[i] = entry++;
+        });
+        onChunks(chunks, [&](std::size_t k) {
+            for (std::size_t i = chunkStart(k); i < chunkStart(k + 1); ++i) {
+                if (nodes_[i].count > 0)
+                    continue;
+                const std::size_t right = nodes_[i].rightOrFirst;
+                pairs_[pairOf_[i]] = BvhPair{nodes_[i + 1].lo, checkedChildRef(i + 1),
+                                             nodes_[i + 1].hi, 0, nodes_[right].lo,
+                                             checkedChildRef(right), nodes_[right].hi, 0};
+            }
+        });
+        return true;
+    }
+
+    // childRef for trees pairInParallel has checked: no leaf to split, every index in range.
+    std::uint32_t checkedChildRef(std::size_t node) const {
+        const BvhNode& n = nodes_[node];
+        return n.count > 0 ? (triangleBase_ + n.rightOrFirst) << WF_BVH_COUNT_BITS | n.count
+                           : pairOf_[node] << WF_BVH_COUNT_BITS;
+    }
+
+    template <typename Fn> static void onChunks(std::size_t chunks, Fn fn) {
+        std::vector<std::thread> workers;
+        for (std::size_t k = 1; k < chunks; ++k)
+            workers.emplace_back(fn, k);
+        fn(std::size_t(0));
+        for (std::thread& worker : workers)
+            worker.join();
+    }
+
     std::uint32_t childRef(std::size_t node) {
         const BvhNode& n = nodes_[node];
         return n.count > 0 ? leafRef(n.lo, n.hi, n.rightOrFirst, n.count)

@@ -229,9 +229,11 @@ TEST(Bvh, RandomSoupsMatchBruteForce) {
 }
 
 // Nodes of 16384 refs or more are binned over a sample and take their children's boxes from
-// the partition: every box must still bound its triangles, and traversal find every hit.
+// the partition: every box must still bound its triangles, and traversal find every hit. Trees
+// of 65536 nodes or more are paired on several threads (the second soup).
 TEST(Bvh, SampledTopLevelsMatchBruteForce) {
     compareWithBruteForce(randomSoup(100000, 4u), 1000, 14u);
+    compareWithBruteForce(randomSoup(200000, 5u), 300, 15u);
 }
 
 TEST(Bvh, DegenerateMeshMatchesBruteForce) {
