@@ -2,18 +2,54 @@
 // intersect: closest hit of every ray in the current ray queue.
 // In: rayQueue[depth & 1] (count in counters.rayArgs.count), rayOrigin, rayDirection, BVH.
 // Out: hits[index] (by queue slot: shade reads the same queue) = (t, b1, b2, triangle),
-// (t, -, -, WF_SPHERE_HIT | light) or WF_MISS.
+// (t, -, -, WF_SPHERE_HIT | light) or WF_MISS. With WF_SHADE_BINS > 1 it also appends the
+// slot to kindQueues of the hit material's shade bin (counters.kindCount).
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "bindings.glsl"
 #include "scene_intersect.glsl"
+#if WF_SHADE_BINS > 1
+#include "queue_append.glsl"
+WF_DEFINE_INDEXED_QUEUE_APPEND(appendToBin, counters.kindCount)
+#endif
 
 layout(push_constant) uniform Push { PassConstants pass; };
 
+#if WF_SHADE_BINS > 1
+// The bin rides in the material's flags (WF_MATERIAL_SHADE_BIN_SHIFT), texel 1 of its entry.
+uint shadeBinOf(uvec4 hit) {
+    if (hit.w == WF_MISS || (hit.w & WF_SPHERE_HIT) != 0u)
+        return WF_LIGHT_HIT_BIN;
+    uint material = triangleTexel(hit.w, 0u).w;
+    uint flags = wfTexel(materialTexels,
+                         WF_MATERIAL_TABLE_START + material * WF_MATERIAL_TEXELS + 1u).w;
+    return (flags >> WF_MATERIAL_SHADE_BIN_SHIFT) & WF_MATERIAL_SHADE_BIN_MASK;
+}
+#endif
+
 void main() {
     uint index = gl_GlobalInvocationID.x;
+#if WF_SHADE_BINS > 1
+    bool inQueue = index < counters.rayArgs.count;
+    uint bin = WF_SHADE_BINS;
+    if (inQueue) {
+        uint path = rayQueueAt(pass.depth, index);
+        uvec4 hit = intersectClosest(rayOriginAt(path).xyz, rayDirectionAt(path).xyz);
+        hits[index] = wfPack(hit);
+        bin = shadeBinOf(hit);
+    }
+    // Appends in uniform control flow: every lane of the subgroup takes part in each.
+    uint slot = 0u;
+    for (uint b = 0u; b < WF_SHADE_BINS; ++b) {
+        uint s = appendToBin(b, bin == b);
+        slot = bin == b ? s : slot;
+    }
+    if (inQueue)
+        kindQueues[bin * params.pathCapacity + slot] = index;
+#else
     if (index >= counters.rayArgs.count)
         return;
     uint path = rayQueueAt(pass.depth, index);
     hits[index] = wfPack(intersectClosest(rayOriginAt(path).xyz, rayDirectionAt(path).xyz));
+#endif
 }

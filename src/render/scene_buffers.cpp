@@ -2,6 +2,7 @@
 
 #include <cstring>
 
+#include "render/shade_kinds.h"
 #include "scene/bvh_tuning.h"
 #include "scene/instance_bvh.h"
 #include "shaders/shared/render_types.h"
@@ -116,8 +117,13 @@ void bindPages(DescriptorBindings& bindings, const std::vector<Buffer>& pages,
 }
 
 // The material table as texels; scenes with a sheen get the sheen albedo table in front
-// (scene_tables.glsl reads it there).
-std::vector<glm::vec4> materialTexels(const std::vector<Material>& materials, bool sheen) {
+// (scene_tables.glsl reads it there). Scenes shaded by kind carry each material's shade bin in
+// its flags, for intersect to bin hits by.
+std::vector<glm::vec4> materialTexels(std::vector<Material> materials, bool sheen,
+                                      uint32_t shadeKinds) {
+    if (shadeKinds != 0)
+        for (Material& m : materials)
+            m.flags |= shadeBinOf(shadeKinds, shadeKind(m)) << WF_MATERIAL_SHADE_BIN_SHIFT;
     const size_t front = sheen ? WF_SHEEN_TABLE_TEXELS : 0;
     std::vector<glm::vec4> texels(front + materials.size() * WF_MATERIAL_TEXELS, glm::vec4(0.0f));
     if (sheen)
@@ -135,7 +141,7 @@ SceneBuffers::SceneBuffers(const Context& context, const PreparedScene& scene,
       trianglePages_(uploadPages(context, "triangles", scene.triangles, variant.trianglePages)),
       bvhPages_(uploadPages(context, "bvh nodes", scene.bvhPairs, variant.bvhPages)),
       materials_(
-          uploadTable(context, "materials", materialTexels(scene.materials, variant.sheen))) {
+          uploadTable(context, "materials", materialTexels(scene.materials, variant.sheen, variant.shadeKinds))) {
     if (variant.instances)
         instances_ = uploadTable(context, "instances", scene.instances);
     if (variant.nextEventEstimation)

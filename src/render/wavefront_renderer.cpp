@@ -13,6 +13,7 @@
 #include "passes/megakernel_pass.h"
 #include "passes/queue_pass.h"
 #include "passes/raygen_pass.h"
+#include "passes/shade_bins_pass.h"
 #include "passes/shade_pass.h"
 #include "passes/shadow_pass.h"
 #include "render/path_buffers.h"
@@ -116,8 +117,10 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
             {WF_BINDING_SAMPLER_TABLES, samplerTable_.get(), BufferAccess::Uint1Texels});
     }
     table_ = std::make_unique<DescriptorTable>(context, bindings);
-    // Four passes per depth, plus raygen and accumulate.
-    timer_ = std::make_unique<TimestampTimer>(context, 4 * settings.maxDepth + 2);
+    // Four passes per depth (with shade bins, one more and a shade pass per bin), plus raygen
+    // and accumulate.
+    const uint32_t passesPerDepth = 4 + (variant_.shadeKinds ? variant_.shadeBins() : 0);
+    timer_ = std::make_unique<TimestampTimer>(context, passesPerDepth * settings.maxDepth + 2);
 
     PassResources resources{context, compiler, defines_, *table_, pathBuffers_->counters,
                             *timer_};
@@ -126,7 +129,15 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
     } else {
         raygen_ = std::make_unique<RaygenPass>(resources);
         intersect_ = std::make_unique<IntersectPass>(resources);
-        shade_ = std::make_unique<ShadePass>(resources);
+        if (variant_.shadeKinds == 0) {
+            shades_.push_back(std::make_unique<ShadePass>(resources));
+        } else {
+            shadeBins_ = std::make_unique<ShadeBinsPass>(resources);
+            for (uint32_t k = 0; k < kShadeKinds; ++k)
+                if (variant_.shadeKinds & (1u << k))
+                    shades_.push_back(std::make_unique<ShadePass>(
+                        resources, static_cast<uint32_t>(shades_.size()), ShadeKind(k)));
+        }
         queue_ = std::make_unique<QueuePass>(resources);
         if (variant_.nextEventEstimation)
             shadow_ = std::make_unique<ShadowPass>(resources);
@@ -185,7 +196,10 @@ void WavefrontRenderer::recordWave(VkCommandBuffer cmd, const PassConstants& wav
         raygen_->record(cmd, wave);
         for (uint32_t depth = 0; depth < settings_.maxDepth; ++depth) {
             intersect_->record(cmd, depth);
-            shade_->record(cmd, depth, wave);
+            if (shadeBins_)
+                shadeBins_->record(cmd, depth);
+            for (const auto& shade : shades_)
+                shade->record(cmd, depth, wave);
             if (depth + 1 == settings_.maxDepth)
                 break; // the last bounce queues nothing
             queue_->record(cmd, depth);
