@@ -18,9 +18,11 @@ ShaderDefines kindDefines(const ShaderDefines& scene, uint32_t bin, ShadeKind ki
         defines.push_back({name, value});
     };
     set("WF_SHADE_BIN", std::to_string(bin));
+    if (kind == ShadeKind::General)
+        return defines; // the scene's BSDF, for every kind
     set("WF_BSDF_DIFFUSE_ONLY", kind == ShadeKind::Diffuse ? "1" : "0");
     set("WF_BSDF_DELTA_ONLY", kind == ShadeKind::Specular ? "1" : "0");
-    set("WF_BSDF_NO_LAYERS", kind == ShadeKind::General ? "0" : "1");
+    set("WF_BSDF_NO_LAYERS", "1");
     return defines;
 }
 

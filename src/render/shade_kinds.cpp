@@ -35,6 +35,11 @@ uint32_t shadeKindsPresent(const std::vector<gpu_types::Material>& materials) {
     return kinds;
 }
 
+uint32_t shadeKindsFor(uint32_t present) {
+    return std::popcount(present) > 1 ? present | 1u << static_cast<uint32_t>(ShadeKind::General)
+                                      : 0u;
+}
+
 uint32_t shadeBinOf(uint32_t kinds, ShadeKind kind) {
     return static_cast<uint32_t>(std::popcount(kinds & ((1u << static_cast<uint32_t>(kind)) - 1u)));
 }

@@ -38,9 +38,8 @@ ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& se
         });
     // One shade pass per kind only where the scene holds two kinds or more: a scene of one kind
     // keeps its single shade pass and shaders.
-    const uint32_t kinds = shadeKindsPresent(scene.materials);
-    if (settings.shadeSplit && !settings.megakernel && std::popcount(kinds) > 1)
-        variant.shadeKinds = kinds;
+    if (settings.shadeSplit && !settings.megakernel)
+        variant.shadeKinds = shadeKindsFor(shadeKindsPresent(scene.materials));
     // Material extensions compile in only where some material uses them (zero factors stay
     // zero whatever their textures hold; absorption acts only inside transmissive meshes).
     for (const Material& m : scene.materials) {
