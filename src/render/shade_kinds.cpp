@@ -36,8 +36,7 @@ uint32_t shadeKindsPresent(const std::vector<gpu_types::Material>& materials) {
 }
 
 uint32_t shadeKindsFor(uint32_t present) {
-    return std::popcount(present) > 1 ? present | 1u << static_cast<uint32_t>(ShadeKind::General)
-                                      : 0u;
+    return std::popcount(present) > 1 ? present : 0u;
 }
 
 uint32_t shadeBinOf(uint32_t kinds, ShadeKind kind) {
@@ -48,7 +47,7 @@ uint32_t lightHitBin(uint32_t kinds) {
     for (ShadeKind kind : {ShadeKind::Specular, ShadeKind::Diffuse, ShadeKind::General})
         if (kinds & (1u << static_cast<uint32_t>(kind)))
             return shadeBinOf(kinds, kind);
-    return 0;
+    return 0; // no bins: one shade pass
 }
 
 } // namespace wf

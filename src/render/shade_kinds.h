@@ -28,13 +28,12 @@ const char* shadeKindName(ShadeKind kind); // "diffuse", "specular", "general"
 uint32_t shadeKindsPresent(const std::vector<gpu_types::Material>& materials);
 
 // The kinds that get a shade pass where the scene holds `present` (bit k: kind k): none (0)
-// below two kinds; else those present and always General, which shades subgroups of mixed
-// kinds (intersect bins whole subgroups).
+// below two kinds ("model no more than a scene needs": one pass, today's shaders), else those.
 uint32_t shadeKindsFor(uint32_t present);
 
-// Bins are the kinds of `kinds` in kind order (General last): the bin of `kind` (which must be
-// in it), and the bin of subgroups that found only misses and sphere lights (the cheapest
-// variant: specular, else diffuse).
+// Bins are the kinds of `kinds` in kind order: the bin of `kind` (which must be in it), and
+// the bin that takes misses and sphere-light hits (the cheapest variant: specular, else
+// diffuse, else general).
 uint32_t shadeBinOf(uint32_t kinds, ShadeKind kind);
 uint32_t lightHitBin(uint32_t kinds);
 
