@@ -181,7 +181,10 @@ TEST(SharedLayout, GlslOffsetsMatchCpp) {
     expectOffset("counters.depthShadowRays", countersBase,
                  offsetof(QueueCounters, depthShadowRays));
     expectOffset("counters.kindCount", countersBase, offsetof(QueueCounters, kindCount));
-    expectOffset("counters.kindArgs", countersBase, offsetof(QueueCounters, kindArgs));
+    expectOffset("counters.kindArgs[0].groupsX", countersBase, offsetof(QueueCounters, kindArgs));
+    expectOffset("counters.kindArgs[2].count", countersBase,
+                 offsetof(QueueCounters, kindArgs) + 2 * sizeof(DispatchArgs) +
+                     offsetof(DispatchArgs, count));
 }
 
 } // namespace
