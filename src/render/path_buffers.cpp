@@ -32,7 +32,8 @@ PathBuffers::PathBuffers(const Context& context, uint32_t pathCapacity, uint32_t
     hits = Buffer(context, "hits", uint64_t(pathCapacity) * 16);
     rayQueues = Buffer(context, "ray queues", uint64_t(pathCapacity) * 2 * 4);
     if (variant.shadeKinds != 0) // at most 3 x 4 bytes x 4 M paths: within 128 MiB
-        kindQueues = Buffer(context, "shade bins", uint64_t(pathCapacity) * variant.shadeBins() * 4);
+        kindQueues =
+            Buffer(context, "shade bins", uint64_t(pathCapacity) * variant.shadeBins() * 4);
     if (use != PathStateUse::WavefrontWithShadowRays)
         return;
     shadowOrigin = Buffer(context, "shadow origins", uint64_t(pathCapacity) * 16);

@@ -140,8 +140,8 @@ SceneBuffers::SceneBuffers(const Context& context, const PreparedScene& scene,
     : defines_(variant.defines()),
       trianglePages_(uploadPages(context, "triangles", scene.triangles, variant.trianglePages)),
       bvhPages_(uploadPages(context, "bvh nodes", scene.bvhPairs, variant.bvhPages)),
-      materials_(
-          uploadTable(context, "materials", materialTexels(scene.materials, variant.sheen, variant.shadeKinds))) {
+      materials_(uploadTable(context, "materials",
+                             materialTexels(scene.materials, variant.sheen, variant.shadeKinds))) {
     if (variant.instances)
         instances_ = uploadTable(context, "instances", scene.instances);
     if (variant.nextEventEstimation)

@@ -20,14 +20,6 @@ ShadeKind shadeKind(const gpu_types::Material& m) {
     return ShadeKind::General;
 }
 
-const char* shadeKindName(ShadeKind kind) {
-    switch (kind) {
-    case ShadeKind::Diffuse: return "diffuse";
-    case ShadeKind::Specular: return "specular";
-    default: return "general";
-    }
-}
-
 uint32_t shadeKindsPresent(const std::vector<gpu_types::Material>& materials) {
     uint32_t kinds = 0;
     for (const gpu_types::Material& m : materials)
@@ -40,7 +32,8 @@ uint32_t shadeKindsFor(uint32_t present) {
 }
 
 uint32_t shadeBinOf(uint32_t kinds, ShadeKind kind) {
-    return static_cast<uint32_t>(std::popcount(kinds & ((1u << static_cast<uint32_t>(kind)) - 1u)));
+    const uint32_t below = (1u << static_cast<uint32_t>(kind)) - 1u;
+    return static_cast<uint32_t>(std::popcount(kinds & below));
 }
 
 uint32_t lightHitBin(uint32_t kinds) {

@@ -22,7 +22,6 @@ constexpr uint32_t kShadeKinds = 3;
 // factors multiply the material's factors, so zero factors stay zero and a factor of one
 // stays one only without a texture.
 ShadeKind shadeKind(const gpu_types::Material& m);
-const char* shadeKindName(ShadeKind kind); // "diffuse", "specular", "general"
 
 // Bit k set: some material is of kind k.
 uint32_t shadeKindsPresent(const std::vector<gpu_types::Material>& materials);

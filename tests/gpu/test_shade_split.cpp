@@ -99,6 +99,24 @@ TEST(ShadeSplit, MixedScenesShadeByKindAndRenderTheSameImage) {
     EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
 }
 
+// bench --compare-megakernel: the megakernel ignores the bins but shares the scene buffers
+// they ride in, and traces the same image.
+TEST(ShadeSplit, MegakernelSharesTheSplitScenesBuffers) {
+    PreparedScene prepared = prepareScene(mixedCornell());
+    ShaderCompiler compiler;
+    WavefrontRenderer split(gpuContext(), prepared, splitSettings(true, 2), compiler);
+    RenderSettings mega = splitSettings(true, 2);
+    mega.megakernel = true;
+    WavefrontRenderer megakernel(gpuContext(), prepared, mega, compiler, split.sceneBuffers());
+    split.render();
+    megakernel.render();
+    const std::vector<float> a = split.readImage(), b = megakernel.readImage();
+    ASSERT_EQ(a.size(), b.size());
+    for (size_t i = 0; i < a.size(); ++i)
+        ASSERT_NEAR(a[i], b[i], 1e-3f * std::max(1.0f, std::abs(b[i]))) << i;
+    EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
+}
+
 TEST(ShadeSplit, SceneOfOneKindKeepsOneShadePass) {
     PreparedScene prepared = prepareScene(loadGltf(WF_TEST_SCENE_DIR "/cornell_box.gltf"));
     ShaderCompiler compiler;
