@@ -3,14 +3,15 @@
 // In: rayQueue[depth & 1] (count in counters.rayArgs.count), rayOrigin, rayDirection, BVH.
 // Out: hits[index] (by queue slot: shade reads the same queue) = (t, b1, b2, triangle),
 // (t, -, -, WF_SPHERE_HIT | light) or WF_MISS. With WF_SHADE_BINS > 1 it also appends the
-// slot to kindQueues of the hit material's shade bin (counters.kindCount).
+// slot to kindQueues of the hit material's shade bin (counters.kindCount), and keeps each
+// bin's group count in counters.kindArgs, which the bin's shade pass dispatches by.
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "bindings.glsl"
 #include "scene_intersect.glsl"
 #if WF_SHADE_BINS > 1
-#include "queue_append.glsl"
-WF_DEFINE_INDEXED_QUEUE_APPEND(appendToBin, counters.kindCount)
+#extension GL_KHR_shader_subgroup_basic : require
+#extension GL_KHR_shader_subgroup_ballot : require
 #endif
 
 layout(push_constant) uniform Push { PassConstants pass; };
@@ -24,6 +25,25 @@ uint shadeBinOf(uvec4 hit) {
     uint flags = wfTexel(materialTexels,
                          WF_MATERIAL_TABLE_START + material * WF_MATERIAL_TEXELS + 1u).w;
     return (flags >> WF_MATERIAL_SHADE_BIN_SHIFT) & WF_MATERIAL_SHADE_BIN_MASK;
+}
+
+// A ballot append (queue_append.glsl) that also raises the bin's group count to cover the
+// slots taken: the shade pass's indirect arguments without a pass of their own (one such
+// pass, a single invocation, cost 1-3 ms a frame with lavapipe's four threads). The queue
+// pass zeroes both for the next bounce.
+uint appendToBin(uint bin, bool wants) {
+    uvec4 ballot = subgroupBallot(wants);
+    uint total = subgroupBallotBitCount(ballot);
+    uint base = 0u;
+    if (total > 0u) {
+        if (subgroupElect()) {
+            base = atomicAdd(counters.kindCount[bin], total);
+            atomicMax(counters.kindArgs[bin].groupsX,
+                      (base + total + WF_WORKGROUP_SIZE - 1u) / WF_WORKGROUP_SIZE);
+        }
+        base = subgroupBroadcastFirst(base);
+    }
+    return base + subgroupBallotExclusiveBitCount(ballot);
 }
 #endif
 

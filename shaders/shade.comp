@@ -7,7 +7,7 @@
 // rayQueue[(depth + 1) & 1] with its BSDF-sampled continuation (rayOrigin/Direction,
 // throughput and with WF_RAY_CONES rayCone, by path).
 // Shaded by kind (WF_SHADE_BIN defined): only the slots of that bin, kindQueues[WF_SHADE_BIN]
-// (count in counters.kindArgs[WF_SHADE_BIN].count), with the BSDF of its kind compiled in.
+// (count in counters.kindCount[WF_SHADE_BIN]), with the BSDF of its kind compiled in.
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "bindings.glsl"
@@ -32,7 +32,7 @@ WF_DEFINE_QUEUE_APPEND(appendShadow, counters.shadowCount)
 void main() {
 #ifdef WF_SHADE_BIN
     // The queue slot, not the bin's entry, indexes the hits.
-    bool inQueue = gl_GlobalInvocationID.x < counters.kindArgs[WF_SHADE_BIN].count;
+    bool inQueue = gl_GlobalInvocationID.x < counters.kindCount[WF_SHADE_BIN];
     uint index = inQueue ? kindQueueAt(WF_SHADE_BIN, gl_GlobalInvocationID.x) : 0u;
 #else
     uint index = gl_GlobalInvocationID.x;

@@ -5,8 +5,8 @@
 //   raygen      writes PathState for paths [0, pathCount), rayQueue[0] = identity
 //   intersect   reads rayQueue[depth & 1] (count in rayArgs.count), writes hits by queue slot
 //   (with WF_SHADE_BINS: intersect also appends each queue slot to the shade bin of the
-//   material it hit, kindQueues[bin] (kindCount[bin]); shade bins copies those counts into
-//   kindArgs and zeroes them; one shade pass per bin reads its bin's slots)
+//   material it hit, kindQueues[bin] (kindCount[bin], group count in kindArgs[bin]); one
+//   shade pass per bin reads its bin's slots; queue zeroes the bins for the next bounce)
 //   shade       reads rayQueue[depth & 1] + hits; appends to rayQueue[(depth+1) & 1] (rayCount)
 //               and to the shadow queue (shadowCount): the connection's shadow* data at its
 //               slot, its path in shadowOrigin.w; adds emission to radiance
@@ -142,8 +142,10 @@ struct QueueCounters {
     uint pad2;
     uint depthRays[WF_TRACKED_DEPTHS];       // rays intersected at each depth (0: camera rays)
     uint depthShadowRays[WF_TRACKED_DEPTHS]; // NEE connections made at each depth
-    uint kindCount[WF_MAX_SHADE_BINS];       // WF_SHADE_BINS: live append counters of the bins
-    DispatchArgs kindArgs[WF_MAX_SHADE_BINS]; // and the shade passes' arguments
+    uint kindCount[WF_MAX_SHADE_BINS];       // WF_SHADE_BINS: append counters of the bins
+    // The shade passes' arguments: groupsX raised by intersect's appends (atomicMax), groupsY
+    // and groupsZ 1 from the wave's start; count unused (kindCount has it).
+    DispatchArgs kindArgs[WF_MAX_SHADE_BINS];
 };
 
 // A wave covers pixels [pixelBase, pixelBase + wavePixels) x samples [sampleBase, sampleBase +

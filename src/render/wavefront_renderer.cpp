@@ -13,7 +13,6 @@
 #include "passes/megakernel_pass.h"
 #include "passes/queue_pass.h"
 #include "passes/raygen_pass.h"
-#include "passes/shade_bins_pass.h"
 #include "passes/shade_pass.h"
 #include "passes/shadow_pass.h"
 #include "render/path_buffers.h"
@@ -25,6 +24,7 @@
 
 namespace wf {
 
+using gpu_types::DispatchArgs;
 using gpu_types::PassConstants;
 using gpu_types::QueueCounters;
 using gpu_types::RenderParams;
@@ -117,9 +117,8 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
             {WF_BINDING_SAMPLER_TABLES, samplerTable_.get(), BufferAccess::Uint1Texels});
     }
     table_ = std::make_unique<DescriptorTable>(context, bindings);
-    // Four passes per depth (with shade bins, one more and a shade pass per bin), plus raygen
-    // and accumulate.
-    const uint32_t passesPerDepth = 4 + (variant_.shadeKinds ? variant_.shadeBins() : 0);
+    // Four passes per depth (with shade bins, a shade pass per bin), plus raygen and accumulate.
+    const uint32_t passesPerDepth = 3 + std::max(variant_.shadeBins(), 1u);
     timer_ = std::make_unique<TimestampTimer>(context, passesPerDepth * settings.maxDepth + 2);
 
     PassResources resources{context, compiler, defines_, *table_, pathBuffers_->counters,
@@ -132,7 +131,6 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
         if (variant_.shadeKinds == 0) {
             shades_.push_back(std::make_unique<ShadePass>(resources));
         } else {
-            shadeBins_ = std::make_unique<ShadeBinsPass>(resources);
             for (uint32_t k = 0; k < kShadeKinds; ++k)
                 if (variant_.shadeKinds & (1u << k))
                     shades_.push_back(std::make_unique<ShadePass>(
@@ -187,6 +185,8 @@ void WavefrontRenderer::recordWave(VkCommandBuffer cmd, const PassConstants& wav
     QueueCounters initial{};
     initial.rayArgs = {groupsFor(wave.pathCount), 1, 1, wave.pathCount};
     initial.depthRays[0] = wave.pathCount;
+    for (DispatchArgs& args : initial.kindArgs)
+        args = {0, 1, 1, 0}; // intersect raises groupsX
     vkCmdUpdateBuffer(cmd, pathBuffers_->counters.handle(), 0, sizeof initial, &initial);
     computeBarrier(cmd);
 
@@ -196,8 +196,6 @@ void WavefrontRenderer::recordWave(VkCommandBuffer cmd, const PassConstants& wav
         raygen_->record(cmd, wave);
         for (uint32_t depth = 0; depth < settings_.maxDepth; ++depth) {
             intersect_->record(cmd, depth);
-            if (shadeBins_)
-                shadeBins_->record(cmd, depth);
             for (const auto& shade : shades_)
                 shade->record(cmd, depth, wave);
             if (depth + 1 == settings_.maxDepth)

@@ -32,7 +32,6 @@ class RaygenPass;
 class IntersectPass;
 class ShadePass;
 class QueuePass;
-class ShadeBinsPass;
 class ShadowPass;
 class AccumulatePass;
 class MegakernelPass;
@@ -224,7 +223,6 @@ private:
     std::unique_ptr<RaygenPass> raygen_;
     std::unique_ptr<IntersectPass> intersect_;
     std::vector<std::unique_ptr<ShadePass>> shades_; // one, or one per shade bin
-    std::unique_ptr<ShadeBinsPass> shadeBins_;        // scenes shaded by kind only
     std::unique_ptr<QueuePass> queue_;
     std::unique_ptr<ShadowPass> shadow_;
     std::unique_ptr<AccumulatePass> accumulate_;

@@ -36,7 +36,7 @@ expect "json has memory and BVH" json_has "$work/a.json" \
 check "bench split by kind" 0 "$wavefront" bench "$scenes/glass_caustic.gltf" "${small[@]}" \
     --json "$work/k.json"
 expect "a shade pass per kind" json_has "$work/k.json" \
-    "all(k in $run['passMilliseconds'] for k in ('shade bins', 'shade diffuse', 'shade specular'))"
+    "all(k in $run['passMilliseconds'] for k in ('shade diffuse', 'shade specular'))"
 check "bench split off" 0 "$wavefront" bench "$scenes/glass_caustic.gltf" "${small[@]}" \
     --shade-split off --json "$work/o.json"
 expect "one shade pass, the same rays" python3 -c "

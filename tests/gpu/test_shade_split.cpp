@@ -127,7 +127,7 @@ TEST(ShadeSplit, SceneOfOneKindKeepsOneShadePass) {
         EXPECT_NE(name, "shade bins");
     renderer.render();
     EXPECT_EQ(renderer.stats().passMilliseconds.count("shade"), 1u);
-    EXPECT_EQ(renderer.stats().passMilliseconds.count("shade bins"), 0u);
+    EXPECT_EQ(renderer.stats().passMilliseconds.count("shade diffuse"), 0u);
     EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
 }
 
