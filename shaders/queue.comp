@@ -1,7 +1,8 @@
 #version 460
 // queue: turns the append counters into indirect-dispatch arguments for the next passes, then
 // zeroes the counters for the next bounce, so the host never reads a count inside a wave.
-// In/out: counters. One invocation; push constant depth: the bounce the shade pass just did.
+// In/out: counters (with WF_SHADE_BINS, the shade bins' counts and group counts are zeroed
+// too). One invocation; push constant depth: the bounce the shade pass just did.
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = 1) in;
 #include "bindings.glsl"
@@ -24,4 +25,11 @@ void main() {
     counters.depthShadowRays[min(pass.depth, WF_TRACKED_DEPTHS - 1u)] += shadows;
     counters.rayCount = 0u;
     counters.shadowCount = 0u;
+#if WF_SHADE_BINS > 1
+    // The next bounce's intersect fills the shade bins afresh (their groupsY, groupsZ stay 1).
+    for (uint b = 0u; b < WF_SHADE_BINS; ++b) {
+        counters.kindCount[b] = 0u;
+        counters.kindArgs[b].groupsX = 0u;
+    }
+#endif
 }

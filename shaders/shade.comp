@@ -6,6 +6,8 @@
 // next-event connection (shadowOrigin/Direction/Radiance at its queue slot) and to
 // rayQueue[(depth + 1) & 1] with its BSDF-sampled continuation (rayOrigin/Direction,
 // throughput and with WF_RAY_CONES rayCone, by path).
+// Shaded by kind (WF_SHADE_BIN defined): only the slots of that bin, kindQueues[WF_SHADE_BIN]
+// (count in counters.kindCount[WF_SHADE_BIN]), with the BSDF of its kind compiled in.
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "bindings.glsl"
@@ -28,8 +30,14 @@ WF_DEFINE_QUEUE_APPEND(appendShadow, counters.shadowCount)
 #endif
 
 void main() {
+#ifdef WF_SHADE_BIN
+    // The queue slot, not the bin's entry, indexes the hits.
+    bool inQueue = gl_GlobalInvocationID.x < counters.kindCount[WF_SHADE_BIN];
+    uint index = inQueue ? kindQueueAt(WF_SHADE_BIN, gl_GlobalInvocationID.x) : 0u;
+#else
     uint index = gl_GlobalInvocationID.x;
     bool inQueue = index < counters.rayArgs.count;
+#endif
     uint path = inQueue ? rayQueueAt(pass.depth, index) : 0u;
     PathVertex v;
     v.continues = false;

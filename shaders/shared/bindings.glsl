@@ -75,6 +75,11 @@ layout(std430, binding = WF_BINDING_HITS) buffer HitBuffer {
 layout(std430, binding = WF_BINDING_RAY_QUEUES) buffer RayQueueBuffer {
     uint rayQueues[]; // two queues of pathCapacity path indices, by depth parity
 };
+#if WF_SHADE_BINS > 1
+layout(std430, binding = WF_BINDING_KIND_QUEUES) buffer KindQueueBuffer {
+    uint kindQueues[]; // per shade bin, pathCapacity slots of the current ray queue
+};
+#endif
 #if WF_HAS_EMITTERS
 // The shadow queue is these three arrays, by slot: the record carries the path it connects, so
 // the pass that appends it stores no separate queue entry (one store loop fewer on lavapipe).

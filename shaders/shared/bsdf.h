@@ -45,6 +45,9 @@
 #ifndef WF_BSDF_DIFFUSE_ONLY
 #define WF_BSDF_DIFFUSE_ONLY 0
 #endif
+#ifndef WF_BSDF_DELTA_ONLY
+#define WF_BSDF_DELTA_ONLY 0
+#endif
 
 #ifdef __cplusplus
 namespace wf::gpu_types {
@@ -294,7 +297,61 @@ WF_INLINE bool diffuseOnlySample(BsdfParams m, vec3 wo, vec2 u, WF_OUT(BsdfSampl
     return bsdfFinite(s.weight);
 }
 
+// The specular kind's shade pass (WF_BSDF_DELTA_ONLY) shades only materials with Dirac lobes
+// and no diffuse lobe whatever their textures (roughness 0; metallic or transmission exactly 1
+// and untextured: src/render/shade_kinds.cpp). bsdfSample becomes this: the general sample with
+// the diffuse lobe's probability 0 and the microfacet normal +z, the same arithmetic; nothing
+// has a density, so bsdfEval and bsdfPdf are 0 and next-event estimation drops out.
+WF_INLINE bool deltaOnlySample(BsdfParams m, vec3 wo, float uLobe, WF_OUT(BsdfSample) s) {
+    s.wi = vec3(0.0f);
+    s.pdf = 0.0f;
+    s.weight = vec3(0.0f);
+    s.isDelta = false;
+    s.eta = 1.0f;
+    if (wo.z == 0.0f) {
+        return false;
+    }
+    m = bsdfSanitize(m);
+    bool inside = wo.z < 0.0f;
+    float side = inside ? -1.0f : 1.0f;
+    wo.z *= side;
+    BsdfLobes l = bsdfLobes(m, inside);
+    float uChoice = min(uLobe, 0.99999994f);
+    vec3 h = vec3(0.0f, 0.0f, 1.0f);
+    float c = dot(wo, h);
+    vec2 choice = microChoice(m, l, c);
+    if (!(c > 0.0f) || choice.x + choice.y <= 0.0f) {
+        return false;
+    }
+    vec3 wi;
+    if (uChoice < choice.x) {
+        wi = 2.0f * c * h - wo;
+        if (!(wi.z > 0.0f)) {
+            return false;
+        }
+        s.isDelta = true;
+        s.pdf = choice.x;
+        s.weight = microReflectance(m, l, c) / s.pdf;
+    } else {
+        if (l.indexMatched) {
+            wi = -wo;
+        } else if (!refractDirection(wo, h, l.etaRel, wi) || !(wi.z < 0.0f)) {
+            return false;
+        } else {
+            s.eta = l.etaRel;
+        }
+        s.isDelta = true;
+        s.pdf = choice.y;
+        s.weight = microTransmittance(m, l, c) / (s.eta * s.eta * s.pdf);
+    }
+    s.wi = vec3(wi.x, wi.y, side * wi.z);
+    return s.pdf > 0.0f && bsdfFinite(s.weight) && bsdfFinite(vec3(s.pdf));
+}
+
 WF_INLINE vec3 bsdfEval(BsdfParams m, vec3 wo, vec3 wi) {
+#if WF_BSDF_DELTA_ONLY
+    return vec3(0.0f);
+#endif
 #if WF_BSDF_DIFFUSE_ONLY
     return diffuseOnlyEval(m, wo, wi);
 #endif
@@ -309,6 +366,9 @@ WF_INLINE vec3 bsdfEval(BsdfParams m, vec3 wo, vec3 wi) {
 }
 
 WF_INLINE float bsdfPdf(BsdfParams m, vec3 wo, vec3 wi) {
+#if WF_BSDF_DELTA_ONLY
+    return 0.0f;
+#endif
 #if WF_BSDF_DIFFUSE_ONLY
     return diffuseOnlyPdf(m, wo, wi);
 #endif
@@ -324,6 +384,9 @@ WF_INLINE float bsdfPdf(BsdfParams m, vec3 wo, vec3 wi) {
 }
 
 WF_INLINE bool bsdfSample(BsdfParams m, vec3 wo, float uLobe, vec2 u, WF_OUT(BsdfSample) s) {
+#if WF_BSDF_DELTA_ONLY
+    return deltaOnlySample(m, wo, uLobe, s);
+#endif
 #if WF_BSDF_DIFFUSE_ONLY
     return diffuseOnlySample(m, wo, u, s);
 #endif
@@ -392,6 +455,9 @@ WF_INLINE bool bsdfSample(BsdfParams m, vec3 wo, float uLobe, vec2 u, WF_OUT(Bsd
 
 // Whether some lobe has a density (NEE and MIS can work at this vertex).
 WF_INLINE bool bsdfHasNonDelta(BsdfParams m) {
+#if WF_BSDF_DELTA_ONLY
+    return false;
+#endif
 #if WF_BSDF_DIFFUSE_ONLY
     return diffuseOnlyHasNonDelta(m);
 #endif

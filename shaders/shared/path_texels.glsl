@@ -35,6 +35,13 @@ vec4 radianceAt(uint path) { return wfFloatTexel(radianceTexels, path); }
 uint rayQueueAt(uint depth, uint index) {
     return imageLoad(rayQueueTexels, int((depth & 1u) * params.pathCapacity + index)).x;
 }
+#if WF_SHADE_BINS > 1
+layout(binding = WF_BINDING_KIND_QUEUE_TEXELS, r32ui) uniform readonly uimageBuffer kindQueueTexels;
+// Entry `index` of shade bin `bin`: a slot of the current ray queue.
+uint kindQueueAt(uint bin, uint index) {
+    return imageLoad(kindQueueTexels, int(bin * params.pathCapacity + index)).x;
+}
+#endif
 uvec4 hitAt(uint path) { return imageLoad(hitTexels, int(path)); }
 #if WF_RAY_CONES
 layout(binding = WF_BINDING_RAY_CONE_TEXELS, rg32ui) uniform readonly uimageBuffer rayConeTexels;

@@ -5,8 +5,12 @@
 // bsdf, lights and surface.
 // Estimator: WF_LIGHT_SAMPLING 0 = BSDF sampling only, 1 = NEE only, 2 = MIS (power heuristic).
 #include "ray_cones.glsl"
-// Scenes with a clear coat or sheen shade with bsdf_layers.h's layered BSDF instead of bsdf.h's.
-#if WF_HAS_CLEARCOAT || WF_HAS_SHEEN
+// Scenes with a clear coat or sheen shade with bsdf_layers.h's layered BSDF instead of bsdf.h's,
+// except in the shade passes of kinds that hold no layered material (WF_BSDF_NO_LAYERS).
+#ifndef WF_BSDF_NO_LAYERS
+#define WF_BSDF_NO_LAYERS 0
+#endif
+#if (WF_HAS_CLEARCOAT || WF_HAS_SHEEN) && !WF_BSDF_NO_LAYERS
 #define WF_BSDF_LAYERS 1
 #include "bsdf_layers.h"
 #else

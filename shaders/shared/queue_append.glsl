@@ -16,3 +16,17 @@
         }                                                                                      \
         return base + subgroupBallotExclusiveBitCount(ballot);                                 \
     }
+
+// The same for one of several queues: `counter` names an array of counters, indexed by queue.
+#define WF_DEFINE_INDEXED_QUEUE_APPEND(functionName, counter)                                  \
+    uint functionName(uint queue, bool wants) {                                                \
+        uvec4 ballot = subgroupBallot(wants);                                                  \
+        uint total = subgroupBallotBitCount(ballot);                                           \
+        uint base = 0u;                                                                        \
+        if (total > 0u) {                                                                      \
+            if (subgroupElect())                                                               \
+                base = atomicAdd(counter[queue], total);                                       \
+            base = subgroupBroadcastFirst(base);                                               \
+        }                                                                                      \
+        return base + subgroupBallotExclusiveBitCount(ballot);                                 \
+    }

@@ -4,6 +4,9 @@
 // Queue protocol of one wave (see docs/ARCHITECTURE.md):
 //   raygen      writes PathState for paths [0, pathCount), rayQueue[0] = identity
 //   intersect   reads rayQueue[depth & 1] (count in rayArgs.count), writes hits by queue slot
+//   (with WF_SHADE_BINS: intersect also appends each queue slot to the shade bin of the
+//   material it hit, kindQueues[bin] (kindCount[bin], group count in kindArgs[bin]); one
+//   shade pass per bin reads its bin's slots; queue zeroes the bins for the next bounce)
 //   shade       reads rayQueue[depth & 1] + hits; appends to rayQueue[(depth+1) & 1] (rayCount)
 //               and to the shadow queue (shadowCount): the connection's shadow* data at its
 //               slot, its path in shadowOrigin.w; adds emission to radiance
@@ -23,6 +26,13 @@ namespace wf::gpu_types {
 
 // Texture filtering by ray cones (ray_cones.glsl): on only in variants with textures, where the
 // path state gains each ray's cone.
+// Shading split by material kind (src/render/shade_kinds.h): 0 or 1, one shade pass for every
+// hit; more, that many bins, each shaded by its own pass. WF_LIGHT_HIT_BIN takes the misses
+// and sphere-light hits.
+#ifndef WF_SHADE_BINS
+#define WF_SHADE_BINS 0
+#endif
+
 #ifndef WF_RAY_CONES
 #define WF_RAY_CONES 0
 #endif
@@ -60,6 +70,8 @@ namespace wf::gpu_types {
 #define WF_BINDING_BVH_PAGE1 56      // pages 1-7 of the BVH entries (56 .. 62)
 #define WF_BINDING_INSTANCE_PAGE1 64 // pages 1-7 of the instances (64 .. 70)
 // 71-98: pages 1-7 of the per-triangle attributes (texture_types.h)
+#define WF_BINDING_KIND_QUEUES 99      // WF_SHADE_BINS: per bin, pathCapacity queue slots
+#define WF_BINDING_KIND_QUEUE_TEXELS 100 // the same, read as R32UI texels
 #define WF_BINDING_LIGHTS 17
 #define WF_BINDING_ENVIRONMENT 18       // vec4 radiance per texel
 #define WF_BINDING_ENVIRONMENT_ALIAS 19 // Emitter-shaped alias table over texels
@@ -112,6 +124,9 @@ struct DispatchArgs {
     uint count;
 };
 
+// Shade bins (material kinds, src/render/shade_kinds.h) the counters have room for.
+#define WF_MAX_SHADE_BINS 4
+
 // Per-depth statistics (queue occupancy per bounce) cover this many depths; deeper bounces are
 // counted in the last entry, so the entries always sum to the totals.
 #define WF_TRACKED_DEPTHS 16
@@ -129,6 +144,10 @@ struct QueueCounters {
     uint pad2;
     uint depthRays[WF_TRACKED_DEPTHS];       // rays intersected at each depth (0: camera rays)
     uint depthShadowRays[WF_TRACKED_DEPTHS]; // NEE connections made at each depth
+    uint kindCount[WF_MAX_SHADE_BINS];       // WF_SHADE_BINS: append counters of the bins
+    // The shade passes' arguments: groupsX raised by intersect's appends (atomicMax), groupsY
+    // and groupsZ 1 from the wave's start; count unused (kindCount has it).
+    DispatchArgs kindArgs[WF_MAX_SHADE_BINS];
 };
 
 // A wave covers pixels [pixelBase, pixelBase + wavePixels) x samples [sampleBase, sampleBase +
@@ -154,7 +173,11 @@ static_assert(offsetof(wf::gpu_types::RenderParams, clampRadiance) == 124);
 static_assert(offsetof(wf::gpu_types::RenderParams, seed) == 44);
 static_assert(offsetof(wf::gpu_types::RenderParams, maxDepth) == 60);
 static_assert(offsetof(wf::gpu_types::RenderParams, pathCapacity) == 84);
-static_assert(sizeof(wf::gpu_types::QueueCounters) == 64 + 8 * WF_TRACKED_DEPTHS);
+static_assert(sizeof(wf::gpu_types::QueueCounters) ==
+              64 + 8 * WF_TRACKED_DEPTHS + 20 * WF_MAX_SHADE_BINS);
+static_assert(offsetof(wf::gpu_types::QueueCounters, kindCount) == 64 + 8 * WF_TRACKED_DEPTHS);
+static_assert(offsetof(wf::gpu_types::QueueCounters, kindArgs) ==
+              64 + 8 * WF_TRACKED_DEPTHS + 4 * WF_MAX_SHADE_BINS);
 static_assert(offsetof(wf::gpu_types::QueueCounters, rayArgs) == 16);
 static_assert(offsetof(wf::gpu_types::QueueCounters, shadowArgs) == 32);
 static_assert(offsetof(wf::gpu_types::QueueCounters, nonFiniteSamples) == 56);

@@ -10,8 +10,9 @@ namespace wf {
 namespace {
 
 // The wavefront's passes in wave order; the megakernel and any other pass follow.
-const std::vector<std::string> kPassOrder = {"raygen", "intersect",  "shade",     "queue",
-                                             "shadow", "megakernel", "accumulate"};
+const std::vector<std::string> kPassOrder = {
+    "raygen", "intersect", "shade diffuse", "shade specular", "shade general", "shade",
+    "queue",  "shadow",    "megakernel",    "accumulate"};
 
 std::vector<std::string> passNames(const BenchRun& run) {
     std::vector<std::string> names;

@@ -49,6 +49,9 @@ std::vector<OptionSpec> samplingOptions() {
                                   "halton, hammersley, sobol (default) or bluenoise"},
         {"--texture-filter", "", "MODE", "cone (mip levels chosen by ray cones; default) or "
                                          "none (full-resolution bilinear lookups)"},
+        {"--shade-split", "", "MODE", "auto (scenes with materials of several kinds shade "
+                                      "each kind in its own pass; default) or off (one shade "
+                                      "pass for every hit)"},
     };
 }
 
@@ -110,6 +113,7 @@ void applyRenderFlags(const ParsedArgs& parsed, uint32_t defaultMaxDepth,
     settings.randomizeSamples = !parsed.has("--no-randomize");
     settings.textureLod =
         parsed.choiceValue("--texture-filter", "cone", {"cone", "none"}) == "cone";
+    settings.shadeSplit = parsed.choiceValue("--shade-split", "auto", {"auto", "off"}) == "auto";
     if (!settings.randomizeSamples && settings.sampler == SamplerKind::Independent)
         throw UsageError("--no-randomize: the independent sampler has no randomization to "
                          "remove (pick another --sampler)");

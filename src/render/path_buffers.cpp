@@ -31,6 +31,9 @@ PathBuffers::PathBuffers(const Context& context, uint32_t pathCapacity, uint32_t
     throughput = Buffer(context, "throughput", uint64_t(pathCapacity) * 16);
     hits = Buffer(context, "hits", uint64_t(pathCapacity) * 16);
     rayQueues = Buffer(context, "ray queues", uint64_t(pathCapacity) * 2 * 4);
+    if (variant.shadeKinds != 0) // at most 3 x 4 bytes x 4 M paths: within 128 MiB
+        kindQueues =
+            Buffer(context, "shade bins", uint64_t(pathCapacity) * variant.shadeBins() * 4);
     if (use != PathStateUse::WavefrontWithShadowRays)
         return;
     shadowOrigin = Buffer(context, "shadow origins", uint64_t(pathCapacity) * 16);
@@ -68,6 +71,8 @@ void PathBuffers::appendBindings(DescriptorBindings& bindings) const {
         {WF_BINDING_RAY_QUEUE_TEXELS, &rayQueues, BufferAccess::Uint1Texels},
         {WF_BINDING_RAY_CONES, &rayCones},
         {WF_BINDING_RAY_CONE_TEXELS, &rayCones, BufferAccess::Uint2Texels},
+        {WF_BINDING_KIND_QUEUES, &kindQueues},
+        {WF_BINDING_KIND_QUEUE_TEXELS, &kindQueues, BufferAccess::Uint1Texels},
     };
     for (const DescriptorBinding& binding : all)
         if (*binding.buffer)
@@ -79,7 +84,7 @@ void PathBuffers::appendMemoryReport(
     for (const Buffer* buffer :
          {&params, &counters, &film, &rayOrigin, &rayDirection, &throughput, &radiance, &hits,
           &shadowOrigin, &shadowDirection, &shadowRadiance, &rayQueues, &aovPaths, &aovFilm,
-          &momentFilm, &activePixels, &rayCones})
+          &momentFilm, &activePixels, &rayCones, &kindQueues})
         if (*buffer)
             report.emplace_back(buffer->name(), buffer->size());
 }

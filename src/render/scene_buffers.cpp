@@ -2,6 +2,7 @@
 
 #include <cstring>
 
+#include "render/shade_kinds.h"
 #include "scene/bvh_tuning.h"
 #include "scene/instance_bvh.h"
 #include "render/table_pages.h"
@@ -94,8 +95,13 @@ Buffer uploadTable(const Context& context, const char* name, const std::vector<T
 }
 
 // The material table as texels; scenes with a sheen get the sheen albedo table in front
-// (scene_tables.glsl reads it there).
-std::vector<glm::vec4> materialTexels(const std::vector<Material>& materials, bool sheen) {
+// (scene_tables.glsl reads it there). Scenes shaded by kind carry each material's shade bin in
+// its flags, for intersect to bin hits by.
+std::vector<glm::vec4> materialTexels(std::vector<Material> materials, bool sheen,
+                                      uint32_t shadeKinds) {
+    if (shadeKinds != 0)
+        for (Material& m : materials)
+            m.flags |= shadeBinOf(shadeKinds, shadeKind(m)) << WF_MATERIAL_SHADE_BIN_SHIFT;
     const size_t front = sheen ? WF_SHEEN_TABLE_TEXELS : 0;
     std::vector<glm::vec4> texels(front + materials.size() * WF_MATERIAL_TEXELS, glm::vec4(0.0f));
     if (sheen)
@@ -112,8 +118,8 @@ SceneBuffers::SceneBuffers(const Context& context, const PreparedScene& scene,
     : defines_(variant.defines()),
       trianglePages_(uploadPages(context, "triangles", scene.triangles, variant.trianglePages)),
       bvhPages_(uploadPages(context, "bvh nodes", scene.bvhPairs, variant.bvhPages)),
-      materials_(
-          uploadTable(context, "materials", materialTexels(scene.materials, variant.sheen))) {
+      materials_(uploadTable(context, "materials",
+                             materialTexels(scene.materials, variant.sheen, variant.shadeKinds))) {
     if (variant.instances)
         instancePages_ = uploadPages(context, "instances", scene.instances, variant.instancePages);
     if (variant.nextEventEstimation)

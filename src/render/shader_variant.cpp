@@ -1,10 +1,12 @@
 #include "render/shader_variant.h"
 
 #include <algorithm>
+#include <bit>
 #include <cstdio>
 
 #include "errors.h"
 #include "render/scene_buffers.h"
+#include "render/shade_kinds.h"
 #include "render/wavefront_renderer.h"
 #include "render/workgroup.h"
 
@@ -34,6 +36,11 @@ ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& se
         scene.materials.begin(), scene.materials.end(), [](const Material& m) {
             return m.metallic <= 0.0f && m.specular <= 0.0f && m.transmission <= 0.0f;
         });
+    // One shade pass per kind only where the scene holds two kinds or more: a scene of one kind
+    // keeps its single shade pass and shaders. Set for the megakernel too, which ignores it, so
+    // that bench's two renderers share one set of scene buffers (the bins ride in them).
+    if (settings.shadeSplit)
+        variant.shadeKinds = shadeKindsFor(shadeKindsPresent(scene.materials));
     // Material extensions compile in only where some material uses them (zero factors stay
     // zero whatever their textures hold; absorption acts only inside transmissive meshes).
     for (const Material& m : scene.materials) {
@@ -60,9 +67,13 @@ ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& se
     return variant;
 }
 
+uint32_t ShaderVariant::shadeBins() const {
+    return static_cast<uint32_t>(std::popcount(shadeKinds));
+}
+
 ShaderDefines ShaderVariant::defines() const {
     auto flag = [](bool on) { return std::string(on ? "1" : "0"); };
-    return {{"WF_WORKGROUP_SIZE", std::to_string(kWorkgroupSize)},
+    ShaderDefines defines = {{"WF_WORKGROUP_SIZE", std::to_string(kWorkgroupSize)},
             {"WF_LIGHT_SAMPLING", std::to_string(static_cast<int>(lightSampling))},
             {"WF_HAS_EMITTERS", flag(nextEventEstimation)},
             {"WF_HAS_TRIANGLE_EMITTERS", flag(triangleEmitters)},
@@ -100,6 +111,11 @@ ShaderDefines ShaderVariant::defines() const {
             {"WF_BVH_PAGE_SHIFT", std::to_string(bvhPages.shift)},
             {"WF_INSTANCE_PAGES", std::to_string(instancePages.count)},
             {"WF_INSTANCE_PAGE_SHIFT", std::to_string(instancePages.shift)}};
+    if (shadeKinds != 0) {
+        defines.push_back({"WF_SHADE_BINS", std::to_string(shadeBins())});
+        defines.push_back({"WF_LIGHT_HIT_BIN", std::to_string(lightHitBin(shadeKinds))});
+    }
+    return defines;
 }
 
 std::string ShaderVariant::describe() const {

@@ -32,6 +32,9 @@ struct ShaderVariant {
     bool triangleSolidAngle = true;
     bool sphereSolidAngle = true;
     bool diffuseOnly = false;         // every material Lambertian: no specular layer code
+    // Shading split by material kind (shade_kinds.h): bit k set for each kind present, in
+    // scenes with two kinds or more (WF_SHADE_BINS); 0: one shade pass for every hit.
+    uint32_t shadeKinds = 0;
     bool clearcoat = false;           // WF_HAS_CLEARCOAT: some material has a clear coat
     bool sheen = false;               // WF_HAS_SHEEN: some material has a sheen
     bool volume = false;              // WF_HAS_VOLUME: some transmissive material absorbs
@@ -51,6 +54,7 @@ struct ShaderVariant {
     TablePages bvhPages;              // WF_BVH_PAGES, _SHIFT: set by the renderer
     TablePages instancePages;         // WF_INSTANCE_PAGES, _SHIFT: set by the renderer
 
+    uint32_t shadeBins() const; // passes shading by kind: 0 (none) or 2-3
     bool lightsBuffer() const { return sphereLights || deltaLights; }
     bool lightTree() const {
         return nextEventEstimation && lightSelection == LightSelection::Tree;

@@ -24,6 +24,7 @@
 
 namespace wf {
 
+using gpu_types::DispatchArgs;
 using gpu_types::PassConstants;
 using gpu_types::QueueCounters;
 using gpu_types::RenderParams;
@@ -118,8 +119,9 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
             {WF_BINDING_SAMPLER_TABLES, samplerTable_.get(), BufferAccess::Uint1Texels});
     }
     table_ = std::make_unique<DescriptorTable>(context, bindings);
-    // Four passes per depth, plus raygen and accumulate.
-    timer_ = std::make_unique<TimestampTimer>(context, 4 * settings.maxDepth + 2);
+    // Four passes per depth (with shade bins, a shade pass per bin), plus raygen and accumulate.
+    const uint32_t passesPerDepth = 3 + std::max(variant_.shadeBins(), 1u);
+    timer_ = std::make_unique<TimestampTimer>(context, passesPerDepth * settings.maxDepth + 2);
 
     PassResources resources{context, compiler, defines_, *table_, pathBuffers_->counters,
                             *timer_};
@@ -128,7 +130,14 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
     } else {
         raygen_ = std::make_unique<RaygenPass>(resources);
         intersect_ = std::make_unique<IntersectPass>(resources);
-        shade_ = std::make_unique<ShadePass>(resources);
+        if (variant_.shadeKinds == 0) {
+            shades_.push_back(std::make_unique<ShadePass>(resources));
+        } else {
+            for (uint32_t k = 0; k < kShadeKinds; ++k)
+                if (variant_.shadeKinds & (1u << k))
+                    shades_.push_back(std::make_unique<ShadePass>(
+                        resources, static_cast<uint32_t>(shades_.size()), ShadeKind(k)));
+        }
         queue_ = std::make_unique<QueuePass>(resources);
         if (variant_.nextEventEstimation)
             shadow_ = std::make_unique<ShadowPass>(resources);
@@ -178,6 +187,8 @@ void WavefrontRenderer::recordWave(VkCommandBuffer cmd, const PassConstants& wav
     QueueCounters initial{};
     initial.rayArgs = {groupsFor(wave.pathCount), 1, 1, wave.pathCount};
     initial.depthRays[0] = wave.pathCount;
+    for (DispatchArgs& args : initial.kindArgs)
+        args = {0, 1, 1, 0}; // intersect raises groupsX
     vkCmdUpdateBuffer(cmd, pathBuffers_->counters.handle(), 0, sizeof initial, &initial);
     computeBarrier(cmd);
 
@@ -187,7 +198,8 @@ void WavefrontRenderer::recordWave(VkCommandBuffer cmd, const PassConstants& wav
         raygen_->record(cmd, wave);
         for (uint32_t depth = 0; depth < settings_.maxDepth; ++depth) {
             intersect_->record(cmd, depth);
-            shade_->record(cmd, depth, wave);
+            for (const auto& shade : shades_)
+                shade->record(cmd, depth, wave);
             if (depth + 1 == settings_.maxDepth)
                 break; // the last bounce queues nothing
             queue_->record(cmd, depth);

@@ -81,6 +81,10 @@ struct RenderSettings {
     // Textured scenes: filter textures by ray cones from their mip chains (WF_RAY_CONES,
     // ray_cones.glsl); off, every lookup reads level 0 bilinearly, as before the chains.
     bool textureLod = true;
+    // Scenes with materials of two or more kinds (shade_kinds.h): bin each bounce's hits by
+    // kind and shade each bin with a pass compiled for its kind (--shade-split off: one pass
+    // for every hit, as single-kind scenes always have). The same image up to float rounding.
+    bool shadeSplit = true;
     // --target-error: waves cover lists of pixels (renderPixelList) and the film keeps each
     // pixel's radiance squared (readMoments); render() and the progressive calls are refused.
     bool pixelList = false;
@@ -218,7 +222,7 @@ private:
     std::unique_ptr<TimestampTimer> timer_;
     std::unique_ptr<RaygenPass> raygen_;
     std::unique_ptr<IntersectPass> intersect_;
-    std::unique_ptr<ShadePass> shade_;
+    std::vector<std::unique_ptr<ShadePass>> shades_; // one, or one per shade bin
     std::unique_ptr<QueuePass> queue_;
     std::unique_ptr<ShadowPass> shadow_;
     std::unique_ptr<AccumulatePass> accumulate_;

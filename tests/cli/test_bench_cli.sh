@@ -12,7 +12,8 @@ expect "top help lists bench" grep -q "bench SCENE" "$work/stdout"
 check "bench help" 0 "$wavefront" bench --help
 for flag in --width --height --frames --warmup --spp --max-depth --seed --megakernel \
     --compare-megakernel --budget-ms --wave-paths --json --device --sampler \
-    --triangle-sampling --sphere-sampling --min-throughput --clamp --no-randomize --camera --env; do
+    --triangle-sampling --sphere-sampling --min-throughput --clamp --no-randomize --camera --env \
+    --shade-split; do
     expect "bench help lists $flag" grep -q -- "$flag" "$work/stdout"
 done
 
@@ -31,6 +32,18 @@ expect "json has min/median/max" json_has "$work/a.json" \
 expect "json has occupancy" json_has "$work/a.json" "$run['occupancy'][0]['rays'] == 32*32*3"
 expect "json has memory and BVH" json_has "$work/a.json" \
     "$run['memoryTotalBytes'] > 0 and d['bvh']['sahCost'] > 0"
+
+check "bench split by kind" 0 "$wavefront" bench "$scenes/glass_caustic.gltf" "${small[@]}" \
+    --json "$work/k.json"
+expect "a shade pass per kind" json_has "$work/k.json" \
+    "all(k in $run['passMilliseconds'] for k in ('shade diffuse', 'shade specular'))"
+check "bench split off" 0 "$wavefront" bench "$scenes/glass_caustic.gltf" "${small[@]}" \
+    --shade-split off --json "$work/o.json"
+expect "one shade pass, the same rays" python3 -c "
+import json, sys
+k, o = (json.load(open(f))['runs']['wavefront'] for f in sys.argv[1:])
+sys.exit(0 if 'shade' in o['passMilliseconds'] and k['rays'] == o['rays'] else 1)" \
+    "$work/k.json" "$work/o.json"
 
 check "bench again" 0 "$wavefront" bench "$scenes/cornell_box.gltf" "${small[@]}" \
     --json "$work/b.json" --budget-ms 1

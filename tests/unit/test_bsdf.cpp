@@ -264,6 +264,40 @@ TEST(Bsdf, DiffuseOnlyMatchesTheGeneralModel) {
     }
 }
 
+// The specular kind's shade pass (WF_BSDF_DELTA_ONLY) samples with deltaOnlySample: for
+// smooth mirrors and glass it must be the general model's sample, and the general model must
+// give such materials no density (their pass compiles next-event estimation out).
+TEST(Bsdf, DeltaOnlyMatchesTheGeneralModel) {
+    std::mt19937 rng(22u);
+    for (int i = 0; i < 4000; ++i) {
+        vec3 color(uniform01(rng), uniform01(rng), uniform01(rng));
+        if (i % 50 == 0)
+            color = vec3(0.0f);
+        const bool metal = i % 2 == 0;
+        const float ior = i % 11 == 0 ? 1.0f : i % 13 == 0 ? 0.0f : 0.5f + 2.0f * uniform01(rng);
+        BsdfParams m = material(color, metal ? 1.0f : 0.0f, 0.0f,
+                                i % 5 == 0 ? 0.0f : uniform01(rng), metal ? 0.0f : 1.0f, ior,
+                                vec3(uniform01(rng), uniform01(rng), uniform01(rng)));
+        ASSERT_FALSE(bsdfHasNonDelta(m)) << i;
+        vec3 wo = direction((i % 3 ? 1.0f : -1.0f) * uniform01(rng), 6.2831853f * uniform01(rng));
+        vec2 u(uniform01(rng), uniform01(rng));
+        const float uLobe = uniform01(rng);
+        BsdfSample general, delta;
+        bool sampled = bsdfSample(m, wo, uLobe, u, general);
+        ASSERT_EQ(deltaOnlySample(m, wo, uLobe, delta), sampled) << i;
+        if (!sampled)
+            continue;
+        for (int k = 0; k < 3; ++k) {
+            ASSERT_FLOAT_EQ(delta.wi[k], general.wi[k]) << i;
+            ASSERT_FLOAT_EQ(delta.weight[k], general.weight[k]) << i;
+        }
+        ASSERT_FLOAT_EQ(delta.pdf, general.pdf) << i;
+        ASSERT_TRUE(delta.isDelta);
+        ASSERT_EQ(delta.isDelta, general.isDelta);
+        ASSERT_EQ(delta.eta, general.eta);
+    }
+}
+
 TEST(Bsdf, MetalWhiteFurnaceLosesLittleEnergy) {
     // Single-scattering GGX loses energy with roughness (1 - ln 2 remains at alpha = 1 and
     // normal incidence); it never gains any. Roughness 0 with F0 = 1 reflects everything.

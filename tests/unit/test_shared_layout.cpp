@@ -55,7 +55,8 @@ void main() {
     counters.pad2 = counters.rayCount + counters.shadowCount + counters.rayArgs.count +
         counters.rayArgs.groupsX + counters.shadowArgs.groupsX + counters.shadowArgs.count +
         counters.extensionRays + counters.shadowRays + counters.nonFiniteSamples +
-        counters.depthRays[3] + counters.depthShadowRays[2];
+        counters.depthRays[3] + counters.depthShadowRays[2] + counters.kindCount[1] +
+        counters.kindArgs[2].count;
     light.emitter = light.type + uint(light.position.x + light.direction.x + light.radius +
         light.intensity.x + light.cosInner + light.cosOuter + light.pad1 + light.pad2);
     tref.levels = tref.page + tref.offset + tref.width + tref.height + tref.flags +
@@ -179,6 +180,11 @@ TEST(SharedLayout, GlslOffsetsMatchCpp) {
     expectOffset("counters.depthRays", countersBase, offsetof(QueueCounters, depthRays));
     expectOffset("counters.depthShadowRays", countersBase,
                  offsetof(QueueCounters, depthShadowRays));
+    expectOffset("counters.kindCount", countersBase, offsetof(QueueCounters, kindCount));
+    expectOffset("counters.kindArgs[0].groupsX", countersBase, offsetof(QueueCounters, kindArgs));
+    expectOffset("counters.kindArgs[2].count", countersBase,
+                 offsetof(QueueCounters, kindArgs) + 2 * sizeof(DispatchArgs) +
+                     offsetof(DispatchArgs, count));
 }
 
 } // namespace
