@@ -49,9 +49,10 @@ std::vector<OptionSpec> samplingOptions() {
                                   "halton, hammersley, sobol (default) or bluenoise"},
         {"--texture-filter", "", "MODE", "cone (mip levels chosen by ray cones; default) or "
                                          "none (full-resolution bilinear lookups)"},
-        {"--shade-split", "", "MODE", "auto (scenes with materials of several kinds shade "
-                                      "each kind in its own pass; default) or off (one shade "
-                                      "pass for every hit)"},
+        {"--shade-split", "", "MODE", "auto (scenes of Lambert and smooth mirror or glass "
+                                      "materials shade each kind in its own pass; default), "
+                                      "on (any scene of several kinds) or off (one shade pass "
+                                      "for every hit)"},
     };
 }
 
@@ -113,7 +114,10 @@ void applyRenderFlags(const ParsedArgs& parsed, uint32_t defaultMaxDepth,
     settings.randomizeSamples = !parsed.has("--no-randomize");
     settings.textureLod =
         parsed.choiceValue("--texture-filter", "cone", {"cone", "none"}) == "cone";
-    settings.shadeSplit = parsed.choiceValue("--shade-split", "auto", {"auto", "off"}) == "auto";
+    const std::string split = parsed.choiceValue("--shade-split", "auto", {"auto", "on", "off"});
+    settings.shadeSplit = split == "on"    ? ShadeSplit::On
+                          : split == "off" ? ShadeSplit::Off
+                                           : ShadeSplit::Auto;
     if (!settings.randomizeSamples && settings.sampler == SamplerKind::Independent)
         throw UsageError("--no-randomize: the independent sampler has no randomization to "
                          "remove (pick another --sampler)");

@@ -31,6 +31,13 @@ uint32_t shadeKindsFor(uint32_t present) {
     return std::popcount(present) > 1 ? present : 0u;
 }
 
+uint32_t shadeKindsFor(uint32_t present, ShadeSplit split) {
+    const bool general = (present & (1u << static_cast<uint32_t>(ShadeKind::General))) != 0;
+    if (split == ShadeSplit::Off || (split == ShadeSplit::Auto && general))
+        return 0u;
+    return shadeKindsFor(present);
+}
+
 uint32_t shadeBinOf(uint32_t kinds, ShadeKind kind) {
     const uint32_t below = (1u << static_cast<uint32_t>(kind)) - 1u;
     return static_cast<uint32_t>(std::popcount(kinds & below));

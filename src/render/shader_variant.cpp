@@ -39,8 +39,7 @@ ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& se
     // One shade pass per kind only where the scene holds two kinds or more: a scene of one kind
     // keeps its single shade pass and shaders. Set for the megakernel too, which ignores it, so
     // that bench's two renderers share one set of scene buffers (the bins ride in them).
-    if (settings.shadeSplit)
-        variant.shadeKinds = shadeKindsFor(shadeKindsPresent(scene.materials));
+    variant.shadeKinds = shadeKindsFor(shadeKindsPresent(scene.materials), settings.shadeSplit);
     // Material extensions compile in only where some material uses them (zero factors stay
     // zero whatever their textures hold; absorption acts only inside transmissive meshes).
     for (const Material& m : scene.materials) {

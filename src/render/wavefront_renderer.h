@@ -16,6 +16,7 @@
 #include <vulkan/vulkan.h>
 
 #include "gpu/shader_compiler.h"
+#include "render/shade_kinds.h"
 #include "render/shader_variant.h"
 #include "scene/scene.h"
 
@@ -82,9 +83,11 @@ struct RenderSettings {
     // ray_cones.glsl); off, every lookup reads level 0 bilinearly, as before the chains.
     bool textureLod = true;
     // Scenes with materials of two or more kinds (shade_kinds.h): bin each bounce's hits by
-    // kind and shade each bin with a pass compiled for its kind (--shade-split off: one pass
-    // for every hit, as single-kind scenes always have). The same image up to float rounding.
-    bool shadeSplit = true;
+    // kind and shade each bin with a pass compiled for its kind. Auto splits only scenes
+    // without the general kind, where it paid; On splits any scene of two kinds or more; Off
+    // keeps one pass for every hit, as single-kind scenes always have. The same image up to
+    // float rounding.
+    ShadeSplit shadeSplit = ShadeSplit::Auto;
     // --target-error: waves cover lists of pixels (renderPixelList) and the film keeps each
     // pixel's radiance squared (readMoments); render() and the progressive calls are refused.
     bool pixelList = false;

@@ -20,7 +20,7 @@ RenderSettings splitSettings(bool split, uint32_t seed) {
     settings.samplesPerPixel = 16;
     settings.maxDepth = 8;
     settings.seed = seed;
-    settings.shadeSplit = split;
+    settings.shadeSplit = split ? ShadeSplit::On : ShadeSplit::Off;
     return settings;
 }
 

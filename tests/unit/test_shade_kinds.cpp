@@ -72,5 +72,15 @@ TEST(ShadeKinds, OneKindGetsNoBinsAndEachKindPresentABin) {
     EXPECT_EQ(lightHitBin(noMirrors), 0u);
 }
 
+TEST(ShadeKinds, AutoSplitsOnlyScenesWithoutTheGeneralKind) {
+    const uint32_t diffuseAndGlass = shadeKindsPresent({lambert(), glass()});
+    const uint32_t withGeneral = 7u;
+    EXPECT_EQ(shadeKindsFor(diffuseAndGlass, ShadeSplit::Auto), 3u);
+    EXPECT_EQ(shadeKindsFor(withGeneral, ShadeSplit::Auto), 0u);
+    EXPECT_EQ(shadeKindsFor(withGeneral, ShadeSplit::On), 7u);
+    EXPECT_EQ(shadeKindsFor(diffuseAndGlass, ShadeSplit::Off), 0u);
+    EXPECT_EQ(shadeKindsFor(shadeKindsPresent({lambert()}), ShadeSplit::On), 0u);
+}
+
 } // namespace
 } // namespace wf
