@@ -92,8 +92,8 @@ TEST(Textures, SceneWithoutTexturesHasNoTextureCodeOrBuffers) {
     for (const char* pass : {"raygen.comp", "shade.comp", "intersect.comp", "shadow.comp",
                              "megakernel.comp"}) {
         const std::vector<uint32_t> spirv = compiler.compile(pass, defines).spirv;
-        for (const char* name : {"texelPage0", "textureRefTexels", "texcoord0Texels",
-                                 "normalTexels", "sampleTexture", "wfAlphaPasses", "rayCone",
+        for (const char* name : {"texelPage0", "textureRefTexels", "texcoord0TexelPage0",
+                                 "normalTexelPage0", "sampleTexture", "wfAlphaPasses", "rayCone",
                                  "mipLevel"}) {
             EXPECT_FALSE(spirvMentions(spirv, name)) << pass << " has " << name;
         }
@@ -111,7 +111,8 @@ TEST(Textures, SceneWithoutTexturesHasNoTextureCodeOrBuffers) {
     }
     const std::vector<uint32_t> shade = compiler.compile("shade.comp", textured).spirv;
     EXPECT_TRUE(spirvMentions(shade, "texelPage1"));
-    EXPECT_TRUE(spirvMentions(shade, "normalTexels"));
+    EXPECT_TRUE(spirvMentions(shade, "normalTexelPage0"));
+    EXPECT_TRUE(spirvMentions(shade, "texcoord0TexelPage0"));
     EXPECT_TRUE(spirvMentions(shade, "rayConeTexels"));
     EXPECT_TRUE(spirvMentions(shade, "mipLevel"));
     EXPECT_TRUE(spirvMentions(compiler.compile("raygen.comp", textured).spirv, "rayCone"));
