@@ -277,12 +277,17 @@ WF_INLINE bool diffuseOnlyHasNonDelta(BsdfParams m) {
     return maxComponent(clamp(m.baseColor, vec3(0.0f), vec3(1.0f))) > 0.0f;
 }
 
-WF_INLINE bool diffuseOnlySample(BsdfParams m, vec3 wo, vec2 u, WF_OUT(BsdfSample) s) {
+// The sample every sampler starts from and returns on failure: no direction, no weight.
+WF_INLINE void bsdfNoSample(WF_OUT(BsdfSample) s) {
     s.wi = vec3(0.0f);
     s.pdf = 0.0f;
     s.weight = vec3(0.0f);
     s.isDelta = false;
     s.eta = 1.0f;
+}
+
+WF_INLINE bool diffuseOnlySample(BsdfParams m, vec3 wo, vec2 u, WF_OUT(BsdfSample) s) {
+    bsdfNoSample(s);
     vec3 albedo = clamp(m.baseColor, vec3(0.0f), vec3(1.0f));
     if (wo.z == 0.0f || !(averageComponent(albedo) > 0.0f)) {
         return false;
@@ -303,11 +308,7 @@ WF_INLINE bool diffuseOnlySample(BsdfParams m, vec3 wo, vec2 u, WF_OUT(BsdfSampl
 // the diffuse lobe's probability 0 and the microfacet normal +z, the same arithmetic; nothing
 // has a density, so bsdfEval and bsdfPdf are 0 and next-event estimation drops out.
 WF_INLINE bool deltaOnlySample(BsdfParams m, vec3 wo, float uLobe, WF_OUT(BsdfSample) s) {
-    s.wi = vec3(0.0f);
-    s.pdf = 0.0f;
-    s.weight = vec3(0.0f);
-    s.isDelta = false;
-    s.eta = 1.0f;
+    bsdfNoSample(s);
     if (wo.z == 0.0f) {
         return false;
     }
@@ -390,11 +391,7 @@ WF_INLINE bool bsdfSample(BsdfParams m, vec3 wo, float uLobe, vec2 u, WF_OUT(Bsd
 #if WF_BSDF_DIFFUSE_ONLY
     return diffuseOnlySample(m, wo, u, s);
 #endif
-    s.wi = vec3(0.0f);
-    s.pdf = 0.0f;
-    s.weight = vec3(0.0f);
-    s.isDelta = false;
-    s.eta = 1.0f;
+    bsdfNoSample(s);
     if (wo.z == 0.0f) {
         return false;
     }

@@ -234,11 +234,7 @@ WF_INLINE float layeredPdf(BsdfParams m, BsdfLayers layers, vec3 wo, vec3 wi) {
 
 WF_INLINE bool layeredSample(BsdfParams m, BsdfLayers layers, vec3 wo, float uLobe, vec2 u,
                              WF_OUT(BsdfSample) s) {
-    s.wi = vec3(0.0f);
-    s.pdf = 0.0f;
-    s.weight = vec3(0.0f);
-    s.isDelta = false;
-    s.eta = 1.0f;
+    bsdfNoSample(s);
     if (wo.z == 0.0f) {
         return false;
     }
