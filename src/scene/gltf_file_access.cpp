@@ -13,19 +13,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// tinygltf asks for "<base dir>/<uri>" and then "./<uri>"; both are taken relative to the
-// scene's folder, never to the working directory.
-std::optional<fs::path> resolveInFolder(FsPolicy& policy, const std::string& requested) {
-    std::string uri = requested;
-    std::string prefix = policy.folder.string();
-    if (prefix.empty() || prefix.back() != '/') {
-        prefix += '/';
-    }
-    if (uri.rfind(prefix, 0) == 0) {
-        uri.erase(0, prefix.size());
-    } else if (uri.rfind("./", 0) == 0) {
-        uri.erase(0, 2);
-    }
+// A URI as the file wrote it, taken relative to the scene's folder.
+std::optional<fs::path> resolveUri(FsPolicy& policy, const std::string& uri) {
     auto refuse = [&](const std::string& why) -> std::optional<fs::path> {
         if (policy.refusal.empty()) {
             policy.refusal = "refused to read '" + uri + "': " + why;
@@ -55,6 +44,22 @@ std::optional<fs::path> resolveInFolder(FsPolicy& policy, const std::string& req
     return resolved;
 }
 
+// tinygltf asks for "<base dir>/<uri>" and then "./<uri>"; both are taken relative to the
+// scene's folder, never to the working directory.
+std::optional<fs::path> resolveInFolder(FsPolicy& policy, const std::string& requested) {
+    std::string uri = requested;
+    std::string prefix = policy.folder.string();
+    if (prefix.empty() || prefix.back() != '/') {
+        prefix += '/';
+    }
+    if (uri.rfind(prefix, 0) == 0) {
+        uri.erase(0, prefix.size());
+    } else if (uri.rfind("./", 0) == 0) {
+        uri.erase(0, 2);
+    }
+    return resolveUri(policy, uri);
+}
+
 bool fileExists(const std::string& path, void* userData) {
     std::optional<fs::path> resolved = resolveInFolder(*static_cast<FsPolicy*>(userData), path);
     std::error_code ec;
@@ -65,18 +70,31 @@ std::string expandFilePath(const std::string& path, void*) {
     return path; // no "~" or environment expansion: URIs are plain relative paths
 }
 
+// Reads a file resolveUri or resolveInFolder accepted, under the size limits.
+bool readResolved(FsPolicy& policy, const std::optional<fs::path>& resolved,
+                  std::vector<unsigned char>& out, std::string& error) {
+    if (!resolved) {
+        error = policy.refusal;
+        return false;
+    }
+    if (!readLimited(*resolved, out, error)) {
+        return false;
+    }
+    policy.bytesRead += out.size();
+    if (policy.bytesRead > MAX_TOTAL_BYTES) {
+        out.clear();
+        error = "the scene's files together exceed 2 GiB";
+        return false;
+    }
+    return true;
+}
+
 bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path,
                    void* userData) {
     FsPolicy& policy = *static_cast<FsPolicy*>(userData);
-    std::optional<fs::path> resolved = resolveInFolder(policy, path);
-    std::string why = "outside the scene's folder";
-    if (resolved && readLimited(*resolved, *out, why)) {
-        policy.bytesRead += out->size();
-        if (policy.bytesRead <= MAX_TOTAL_BYTES) {
-            return true;
-        }
-        out->clear();
-        why = "the scene's files together exceed 2 GiB";
+    std::string why;
+    if (readResolved(policy, resolveInFolder(policy, path), *out, why)) {
+        return true;
     }
     *err += why;
     return false;
@@ -120,6 +138,11 @@ bool readLimited(const fs::path& path, std::vector<unsigned char>& out, std::str
         return false;
     }
     return true;
+}
+
+bool readInFolder(FsPolicy& policy, const std::string& uri, std::vector<unsigned char>& out,
+                  std::string& error) {
+    return readResolved(policy, resolveUri(policy, uri), out, error);
 }
 
 void restrictFileAccess(tinygltf::TinyGLTF& gltf, FsPolicy& policy) {

@@ -37,6 +37,11 @@ struct FsPolicy {
 bool readLimited(const std::filesystem::path& path, std::vector<unsigned char>& out,
                  std::string& error);
 
+// Reads the file a URI (already percent-decoded) names inside policy.folder, under the limits
+// above; `error` says why not otherwise.
+bool readInFolder(FsPolicy& policy, const std::string& uri, std::vector<unsigned char>& out,
+                  std::string& error);
+
 // Installs tinygltf's file-system hooks and image loader: URIs resolve only inside
 // policy.folder (no "..", no absolute paths, no symbolic links out), writing is refused, and
 // images are accepted undecoded (gltf_images checks and decodes them).

@@ -35,9 +35,11 @@ std::size_t estimatedTriangles(const tinygltf::Model& model, const tinygltf::Pri
         if (component <= 0 || components <= 0)
             return 0;
         const std::size_t element = std::size_t(component) * std::size_t(components);
-        return accessor.count <= model.bufferViews[accessor.bufferView].byteLength / element
-                   ? accessor.count
-                   : 0;
+        const tinygltf::BufferView& view = model.bufferViews[accessor.bufferView];
+        if (view.buffer < 0 || std::size_t(view.buffer) >= model.buffers.size() ||
+            view.byteLength > model.buffers[view.buffer].data.size())
+            return 0;
+        return accessor.count <= view.byteLength / element ? accessor.count : 0;
     };
     auto position = primitive.attributes.find("POSITION");
     const std::size_t corners = primitive.indices >= 0 ? countOf(primitive.indices)

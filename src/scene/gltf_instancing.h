@@ -26,7 +26,8 @@ const char* instancingName(Instancing mode);
 namespace gltf {
 
 // Triangles a primitive makes by its accessors' counts alone, before any is read; 0 where an
-// accessor or its buffer view is out of range (the loader's checks name those).
+// accessor, its buffer view or the view's buffer is out of range (the loader's checks name
+// those).
 std::size_t estimatedTriangles(const tinygltf::Model& model, const tinygltf::Primitive& primitive);
 
 // Per mesh, whether to instance it. Emissive meshes never are: each copy is a light of its

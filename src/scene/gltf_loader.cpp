@@ -18,6 +18,7 @@
 
 #include "errors.h"
 #include "scene/gltf_accessors.h"
+#include "scene/gltf_buffer_streaming.h"
 #include "scene/gltf_compression.h"
 #include "scene/gltf_file_access.h"
 #include "scene/gltf_images.h"
@@ -100,7 +101,7 @@ private:
     glm::dmat4 localTransform(int nodeIndex) const;
     void walkNodes(gltf::PrimitiveBuilder& builder);
     std::vector<std::size_t> countPlacements() const;
-    void checkPlacedTriangles(const std::vector<std::size_t>& placements) const;
+    std::size_t checkPlacedTriangles(const std::vector<std::size_t>& placements) const;
     void addDefaultEnvironment();
 
     const tinygltf::Model& model_;
@@ -248,8 +249,8 @@ std::vector<std::size_t> Converter::countPlacements() const {
 
 // Counts the triangles the scene keeps (flattened copies, and instanced meshes once) from the
 // accessors' counts alone, before any is read, so that a small file placing a big mesh at many
-// nodes is refused at once rather than after filling memory.
-void Converter::checkPlacedTriangles(const std::vector<std::size_t>& placements) const {
+// nodes is refused at once rather than after filling memory. Returns the count.
+std::size_t Converter::checkPlacedTriangles(const std::vector<std::size_t>& placements) const {
     double total = 0.0, instances = 0.0;
     for (std::size_t m = 0; m < model_.meshes.size(); ++m) {
         double triangles = 0.0;
@@ -265,6 +266,7 @@ void Converter::checkPlacedTriangles(const std::vector<std::size_t>& placements)
     if (instances > double(gltf::kMaxInstances))
         fail("its nodes place more than " + std::to_string(gltf::kMaxInstances) +
              " instances, the most the renderer keeps");
+    return std::size_t(total);
 }
 
 // Depth-first, children in file order, without recursion so deep trees cannot overflow the
@@ -336,7 +338,7 @@ Scene Converter::run() {
     gltf::PrimitiveBuilder builder(model_, file_, tables, defaultIndex);
     const std::vector<std::size_t> placements = countPlacements();
     instanced_ = gltf::meshesToInstance(model_, placements, tables, options_.instancing);
-    checkPlacedTriangles(placements);
+    builder.reserve(checkPlacedTriangles(placements));
     walkNodes(builder);
     builder.finish(scene_);
     gltf::loadImages(model_, file_, policy_.images, tables, scene_.surface);
@@ -386,18 +388,19 @@ Scene loadModel(std::vector<unsigned char> bytes, const std::string& path,
         throw InputError(path + ": JSON nested more than " + std::to_string(gltf::MAX_JSON_DEPTH) +
                          " levels deep");
     }
-    // May rewrite the JSON into what tinygltf accepts (gltf_compression.h).
-    const gltf::CompressionPlan compression = gltf::planDecompression(bytes, binary, path);
-    const size_t size = bytes.size();
-    // tinygltf 2.7.0's GLB chunk check forgets the 8-byte chunk header, so it may read up to
-    // 8 bytes past the end; zero padding makes that harmless.
-    bytes.resize(size + 16, 0);
-
     std::error_code ec;
     gltf::FsPolicy policy{fs::weakly_canonical(fs::absolute(path).parent_path(), ec), {}};
     if (ec) {
         throw InputError(path + ": cannot resolve the scene's folder: " + ec.message());
     }
+    // May rewrite the JSON into what tinygltf accepts (gltf_compression.h); its stand-ins for
+    // decoded buffers are then taken like any other buffer.
+    const gltf::CompressionPlan compression = gltf::planDecompression(bytes, binary, path);
+    gltf::TakenBuffers taken = gltf::takeBuffers(bytes, binary, policy, path);
+    const size_t size = bytes.size();
+    // tinygltf 2.7.0's GLB chunk check forgets the 8-byte chunk header, so it may read up to
+    // 8 bytes past the end; zero padding makes that harmless.
+    bytes.resize(size + 16, 0);
     tinygltf::TinyGLTF parser;
     gltf::restrictFileAccess(parser, policy);
     tinygltf::Model model;
@@ -425,6 +428,8 @@ Scene loadModel(std::vector<unsigned char> bytes, const std::string& path,
     if (!messages.empty()) {
         gltf::warn(path, messages);
     }
+    std::vector<unsigned char>().swap(bytes); // tinygltf holds no pointer into the document
+    gltf::returnBuffers(model, taken, path);
     gltf::decompress(model, compression, path);
     return Converter(model, path, policy, options).run();
 }

@@ -271,7 +271,13 @@ void PrimitiveBuilder::add(const tinygltf::Primitive& primitive, const std::stri
             n[k] = finite(shading) ? shading : ng; // a zero NORMAL falls back to flat
             smoothNormals_ |= glm::dot(n[k], ng) < 0.9999f;
         }
-        surface_.normals.push_back({octEncode(n[0]), octEncode(n[1]), octEncode(n[2]), 0u});
+        if (!storeNormals_ && (smoothNormals_ || needTangents_)) {
+            surface_.normals.reserve(triangles_.capacity());
+            fillFlatNormals(triangles_.size() - 1);
+            storeNormals_ = true;
+        }
+        if (storeNormals_)
+            surface_.normals.push_back({octEncode(n[0]), octEncode(n[1]), octEncode(n[2]), 0u});
         TriangleUvs uv[2] = {};
         for (int set = 0; set < 2; ++set) {
             glm::vec2* corner[3] = {&uv[set].uv0, &uv[set].uv1, &uv[set].uv2};
@@ -303,6 +309,14 @@ void PrimitiveBuilder::add(const tinygltf::Primitive& primitive, const std::stri
         }
         surface_.tangents.resize(triangles_.size() - 1);
         surface_.tangents.push_back(frame);
+    }
+}
+
+void PrimitiveBuilder::fillFlatNormals(size_t upTo) {
+    for (size_t i = surface_.normals.size(); i < upTo; ++i) {
+        const Triangle& t = triangles_[i];
+        const uint32_t flat = octEncode(glm::normalize(glm::cross(t.p1 - t.p0, t.p2 - t.p0)));
+        surface_.normals.push_back({flat, flat, flat, 0u});
     }
 }
 
@@ -395,6 +409,8 @@ void PrimitiveBuilder::finish(Scene& scene) {
             array.shrink_to_fit();
         }
     };
+    if (smoothNormals_ || needTangents_)
+        fillFlatNormals(n);
     keep(surface_.tangents, needTangents_);
     keep(surface_.normals, smoothNormals_ || needTangents_);
     keep(surface_.uv0, needUv0_);

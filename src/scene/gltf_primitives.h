@@ -58,6 +58,8 @@ public:
     void add(const tinygltf::Primitive& primitive, const std::string& where,
              const glm::dmat4& world, uint32_t mesh = kWorldGeometry);
     uint32_t newMesh() { return meshCount_++; }
+    // Room for the triangles the accessors' counts promise, so the arrays never grow by copying.
+    void reserve(size_t triangles) { triangles_.reserve(triangles); }
     void place(uint32_t mesh, const glm::dmat4& world, const std::string& where);
     // Moves the triangles into `scene` (world geometry first, then mesh by mesh) with the
     // placements of the meshes left with triangles, and keeps only the attributes it needs.
@@ -74,6 +76,9 @@ private:
     uint32_t defaultMaterial_;
     AccessorReader reader_;
     void groupByMesh(Scene& scene);
+    // Per-triangle normals are kept only once some triangle needs them; the triangles before
+    // it get their flat normals then.
+    void fillFlatNormals(size_t upTo);
 
     std::vector<Triangle> triangles_;
     SurfaceData surface_; // every attribute array filled for every triangle
@@ -84,6 +89,7 @@ private:
     size_t flatteningPlacements_ = 0; // dropped: a zero scale
     bool usedDefault_ = false;
     bool smoothNormals_ = false; // some NORMAL differs from the flat normal
+    bool storeNormals_ = false;  // surface_.normals holds one entry per triangle so far
     bool needUv0_ = false, needUv1_ = false, needTangents_ = false;
     size_t skippedPrimitives_ = 0;
     size_t degenerateTriangles_ = 0;
