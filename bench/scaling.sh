@@ -74,15 +74,15 @@ for d in load(label + "_scene_*.json"):
 large = load(label + "_large_*.json")
 if large:
     print()
-    print("| unique triangles | as placed | instances | build s | build M triangles/s | "
+    print("| unique triangles | as placed | instances | load s | build s | build M triangles/s | "
           "paths/s | GPU MiB | peak host MiB | host bytes per unique triangle |")
-    print("|---|---|---|---|---|---|---|---|---|")
+    print("|---|---|---|---|---|---|---|---|---|---|")
     for d in large:
         w = d["runs"]["wavefront"]
         host = d.get("peakHostMemoryBytes", 0)
-        print("| %d | %d | %d | %.2f | %.2f | %.3f M | %.0f | %.0f | %.0f |" % (
+        print("| %d | %d | %d | %s | %.2f | %.2f | %.3f M | %.0f | %.0f | %.0f |" % (
             d["triangles"], d.get("instancedTriangles", d["triangles"]), d.get("instances", 0),
-            d["bvh"]["buildSeconds"], d["triangles"] / d["bvh"]["buildSeconds"] / 1e6,
+            "%.2f" % d["loadSeconds"] if "loadSeconds" in d else "-", d["bvh"]["buildSeconds"], d["triangles"] / d["bvh"]["buildSeconds"] / 1e6,
             w["pathsPerSecond"] / 1e6, w["memoryTotalBytes"] / 2**20, host / 2**20,
             host / d["triangles"]))
 print()

@@ -105,7 +105,8 @@ int runBenchCommand(const std::vector<std::string>& args) {
     const bool quiet = parsed.has("--quiet");
 
     const std::string scenePath = parsed.positional.front();
-    Scene scene = loadSceneWithFlags(parsed, scenePath);
+    SceneSummary summary;
+    Scene scene = loadSceneWithFlags(parsed, scenePath, &summary);
     // Unlike render, --height alone keeps the default width.
     applyImageSize(parsed, scene.camera, {.width = kDefaultWidth, .widthFollowsHeight = false},
                    settings);
@@ -157,6 +158,7 @@ int runBenchCommand(const std::vector<std::string>& args) {
     }
 
     setup.peakHostMemoryBytes = peakHostMemoryBytes();
+    setup.loadSeconds = summary.loadSeconds;
     std::printf("Wavefront bench: %s, %ux%u, %u spp per frame, max depth %u, seed %u; %u frames "
                 "after %u warm-up\n",
                 scenePath.c_str(), settings.width, settings.height, spp, settings.maxDepth,

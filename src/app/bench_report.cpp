@@ -224,7 +224,8 @@ std::string benchJson(const BenchSetup& setup, const std::vector<BenchRun>& runs
         << jsonNumber(setup.submitBudgetSeconds) << ",\n  \"triangles\": " << setup.triangles
         << ",\n  \"instances\": " << setup.instances << ",\n  \"instancedTriangles\": "
         << setup.instancedTriangles << ",\n  \"peakHostMemoryBytes\": "
-        << setup.peakHostMemoryBytes << ",\n  \"materials\": " << setup.materials
+        << setup.peakHostMemoryBytes << ",\n  \"loadSeconds\": " << jsonNumber(setup.loadSeconds)
+        << ",\n  \"materials\": " << setup.materials
         << ",\n  \"bvh\": {\"nodes\": "
         << setup.bvh.nodeCount << ", \"leaves\": " << setup.bvh.leafCount
         << ", \"depth\": " << setup.bvh.maxDepth << ", \"stackNeed\": " << setup.bvh.stackNeed

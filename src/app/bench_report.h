@@ -46,6 +46,7 @@ struct BenchSetup {
     uint64_t instances = 0;          // top-level instances (0: one flat BVH)
     uint64_t instancedTriangles = 0; // triangles as rendered, every placement counted
     uint64_t peakHostMemoryBytes = 0; // VmHWM after the runs
+    double loadSeconds = 0.0;         // reading and converting the glTF file
     std::string lightSelection;      // resolved: uniform, power or tree
     std::string lightSelectionText;  // describeLightSelection
     uint32_t lightTreeLights = 0;    // with the tree: its lights, depth and build time

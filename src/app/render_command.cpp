@@ -81,7 +81,9 @@ const CommandSpec& renderSpec() {
                 cameraOption(),
                 envOption(),
                 instancingOption(),
-                {"--verbose", "-v", "", "print the scene summary, shader variant and GPU memory"},
+                {"--verbose", "-v", "",
+                 "print the scene summary and load time, BVH build, shader variant, GPU and "
+                 "peak host memory"},
             },
         }),
         "Environment:\n"
@@ -231,7 +233,8 @@ void printVerbose(const PreparedScene& scene, const WavefrontRenderer& renderer,
     std::fprintf(stderr, "wavefront: device %s (%s), subgroup size %u\n",
                  context.deviceName().c_str(), context.driverInfo().c_str(),
                  context.subgroupSize());
-    std::fprintf(stderr, "wavefront: scene: %s\n", describe(summary).c_str());
+    std::fprintf(stderr, "wavefront: scene loaded in %.3f s: %s\n", summary.loadSeconds,
+                 describe(summary).c_str());
     const BvhBuildStats& bvh = scene.bvhStats;
     std::fprintf(stderr,
                  "wavefront: %zu triangles, %zu materials, %zu emitters; BVH %u nodes, depth %u, "
@@ -476,6 +479,7 @@ int runRenderCommand(const std::vector<std::string>& args) {
     StatsContext statsContext{scenePath,       context.deviceName(), settings.width,
                               settings.height, settings.maxDepth,    settings.seed, {}};
     statsContext.extraFields = sceneJsonFields(prepared);
+    statsContext.extraFields.push_back({"loadSeconds", jsonNumber(summary.loadSeconds)});
     if (adaptive) {
         renderAdaptively(renderer, settings, targetError, run, verbose,
                          {*output, parsed.value("--json"), aovs, quiet}, statsContext);

@@ -1,6 +1,7 @@
 #include "app/render_options.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 
@@ -156,15 +157,20 @@ Scene loadSceneWithFlags(const ParsedArgs& parsed, const std::string& path,
     GltfOptions options;
     if (auto mode = parsed.value("--instancing"))
         options.instancing = parseInstancing(*mode);
+    const auto start = std::chrono::steady_clock::now();
     Scene scene = loadGltf(path, &warnings, options);
+    const double loadSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (auto name = parsed.value("--camera")) {
         scene.camera = selectCamera(scene, *name, path);
         scene.hasCamera = true;
     }
     if (auto env = parsed.value("--env"))
         scene.environment = loadEnvironmentExr(*env);
-    if (summary)
+    if (summary) {
         *summary = summarize(scene);
+        summary->loadSeconds = loadSeconds;
+    }
     for (const std::string& line : warnings)
         std::fprintf(stderr, "%s\n", line.c_str());
     if (!scene.hasCamera)

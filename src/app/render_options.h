@@ -43,7 +43,7 @@ ContextOptions contextOptionsFrom(const ParsedArgs& parsed);
 // environment map --env names, prints the loader's warnings once those are accepted, then
 // frames the scene when it has no camera and sets its lens from --aperture and
 // --focus-distance. `summary`, when given, describes the scene as loaded
-// (before framing). Throws InputError for a bad file, camera or map.
+// (before framing) and how long loading took. Throws InputError for a bad file, camera or map.
 Scene loadSceneWithFlags(const ParsedArgs& parsed, const std::string& path,
                          SceneSummary* summary = nullptr);
 

@@ -29,6 +29,7 @@ struct SceneSummary {
     bool texcoord1 = false;
     bool normalMaps = false;
     size_t alphaMaskMaterials = 0, alphaBlendMaterials = 0, transmissiveMaterials = 0;
+    double loadSeconds = 0.0; // reading and converting the file; set by whoever timed it
 };
 
 SceneSummary summarize(const Scene& scene);

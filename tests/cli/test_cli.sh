@@ -26,7 +26,7 @@ expect "json has shadow rays/s" grep -q '"shadow"' "$work/stats.json"
 expect "json spp" grep -q '"spp": 4' "$work/stats.json"
 expect "json scene and bvh build" json_has "$work/stats.json" \
     "d['triangles'] > 0 and d['bvh']['nodes'] > 0 and d['bvh']['buildSeconds'] >= 0 and \
-     d['bvh']['threads'] >= 1 and d['peakHostMemoryBytes'] > 0"
+     d['bvh']['threads'] >= 1 and d['peakHostMemoryBytes'] > 0 and d['loadSeconds'] > 0"
 expect "progress on stderr" grep -q "spp" "$work/stderr"
 expect "no temp files left" bash -c "! ls '$work' | grep -q tmp"
 
