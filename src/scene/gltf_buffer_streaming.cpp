@@ -203,29 +203,30 @@ std::string standInJson(std::string_view json, const std::vector<Take>& takes) {
     return out;
 }
 
-void appendWord(std::vector<unsigned char>& out, std::uint32_t value) {
-    const auto* bytes = reinterpret_cast<const unsigned char*>(&value);
-    out.insert(out.end(), bytes, bytes + 4);
-}
-
 // A GLB of the stand-in JSON and, when buffers came from it, a 4-byte BIN chunk.
 std::vector<unsigned char> standInGlb(const std::vector<unsigned char>& original, std::string json,
                                       bool withBin) {
-    json.append((4 - json.size() % 4) % 4, ' ');
-    const std::size_t total = 20 + json.size() + (withBin ? 12 : 0);
-    std::vector<unsigned char> glb(original.begin(), original.begin() + 8); // magic, version
-    appendWord(glb, std::uint32_t(total));
-    appendWord(glb, std::uint32_t(json.size()));
-    glb.insert(glb.end(), {'J', 'S', 'O', 'N'});
-    glb.insert(glb.end(), json.begin(), json.end());
-    if (withBin) {
-        appendWord(glb, 4);
-        glb.insert(glb.end(), {'B', 'I', 'N', '\0', 0, 0, 0, 0});
-    }
-    return glb;
+    const unsigned char bin[12] = {4, 0, 0, 0, 'B', 'I', 'N', '\0', 0, 0, 0, 0};
+    return glbContainer(original.data(), std::move(json), bin, withBin ? sizeof bin : 0);
 }
 
 } // namespace
+
+std::vector<unsigned char> glbContainer(const unsigned char* magicAndVersion, std::string json,
+                                        const unsigned char* rest, std::size_t restSize) {
+    json.append((4 - json.size() % 4) % 4, ' '); // GLB chunks are 4-byte aligned
+    const std::uint32_t total = std::uint32_t(20 + json.size() + restSize);
+    const std::uint32_t jsonChunk = std::uint32_t(json.size());
+    std::vector<unsigned char> glb(total);
+    std::memcpy(glb.data(), magicAndVersion, 8);
+    std::memcpy(glb.data() + 8, &total, 4);
+    std::memcpy(glb.data() + 12, &jsonChunk, 4);
+    std::memcpy(glb.data() + 16, "JSON", 4);
+    std::memcpy(glb.data() + 20, json.data(), json.size());
+    if (restSize > 0)
+        std::memcpy(glb.data() + 20 + json.size(), rest, restSize);
+    return glb;
+}
 
 bool decodeBase64(const char* text, std::size_t length, std::vector<unsigned char>& out) {
     static const std::array<std::int8_t, 256> sextets = [] {

@@ -34,6 +34,11 @@ TakenBuffers takeBuffers(std::vector<unsigned char>& document, bool binary, FsPo
 
 void returnBuffers(tinygltf::Model& model, TakenBuffers& taken, const std::string& file);
 
+// A GLB container: the 8 bytes of magic and version, `json` space-padded as its JSON chunk,
+// then `rest` (the chunks after it, headers included) as they are.
+std::vector<unsigned char> glbContainer(const unsigned char* magicAndVersion, std::string json,
+                                        const unsigned char* rest, std::size_t restSize);
+
 // Strict RFC 4648 base64 (padding only at the end); false on any other character.
 bool decodeBase64(const char* text, std::size_t length, std::vector<unsigned char>& out);
 

@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "scene/gltf_accessors.h"
+#include "scene/gltf_buffer_streaming.h"
 #include "scene/gltf_codecs.h"
 #include "scene/gltf_materials.h"
 
@@ -265,18 +266,9 @@ CompressionPlan planDecompression(std::vector<unsigned char>& bytes, bool binary
         bytes.assign(json.begin(), json.end());
         return out;
     }
-    json.append((4 - json.size() % 4) % 4, ' '); // GLB chunks are 4-byte aligned
-    std::vector<unsigned char> rest(bytes.begin() + long(jsonStart + jsonLength), bytes.end());
-    const std::uint32_t jsonChunk = std::uint32_t(json.size());
-    const std::uint32_t total = std::uint32_t(20 + json.size() + rest.size());
-    std::vector<unsigned char> glb(bytes.begin(), bytes.begin() + 8); // magic and version
-    glb.resize(20);
-    std::memcpy(glb.data() + 8, &total, 4);
-    std::memcpy(glb.data() + 12, &jsonChunk, 4);
-    std::memcpy(glb.data() + 16, "JSON", 4);
-    glb.insert(glb.end(), json.begin(), json.end());
-    glb.insert(glb.end(), rest.begin(), rest.end());
-    bytes = std::move(glb);
+    const std::size_t restStart = jsonStart + jsonLength;
+    bytes = glbContainer(bytes.data(), std::move(json), bytes.data() + restStart,
+                         bytes.size() - restStart);
     return out;
 }
 
