@@ -1,6 +1,5 @@
 #!/usr/bin/env python3
-"""A peer on the same machine: renders one scene (--scene: the project's Cornell box, the box with
-a mirror and a glass sphere, or 300k diffuse triangles in it) with Mitsuba 3 (the --variant
+"""A peer on the same machine: renders one scene (--scene, one of SCENE_KINDS below) with Mitsuba 3 (the --variant
 given, path tracer) and with Wavefront at the same resolution, max depth and samples per pixel,
 and prints paths/s and relMSE x time of both, plus the wavefront/megakernel ratio from a
 `wavefront bench --compare-megakernel` in the same run. A manual benchmark, not a test: it
@@ -8,7 +7,7 @@ needs `pip install mitsuba` (into a virtual environment of your own, not the pro
 
     python3 -m venv /tmp/mi && /tmp/mi/bin/pip install mitsuba==3.9.1 numpy
     /tmp/mi/bin/python bench/mitsuba_peer.py [--variant scalar_rgb|llvm_ad_rgb|cuda_ad_rgb]
-        [--scene cornell|mirror-glass|mesh] [--wavefront build/wavefront] [--width 256]
+        [--scene cornell|mirror-glass|mesh|tiny-light|lamps|instances] [--wavefront build/wavefront] [--width 256]
         [--spp 64] [--max-depth 8] [--reference-spp 512] [--repeats 3] [--sampler NAME]
         [--json bench/results/peer.json]
 
@@ -48,20 +47,106 @@ import gltf_to_mitsuba  # noqa: E402
 import make_scaling_scene as scaling  # noqa: E402
 
 
-SCENES = ("cornell", "mirror-glass", "mesh")
+# One scene of each kind the peer comparison covers, all in the Cornell box.
+SCENE_KINDS = {
+    "cornell": "the project's Cornell box (diffuse, one area light)",
+    "mirror-glass": "a mirror block and a glass sphere in the box (specular chains)",
+    "mesh": "300k diffuse triangles in the box (deep BVH)",
+    "tiny-light": "the box lit by a light 1/100 the area, the same power (NEE carries it)",
+    "lamps": "the box lit by 1,024 small lamps (many emitters)",
+    "instances": "64 placements of one 17,688-triangle sphere (two-level BVH)",
+}
+SCENES = tuple(SCENE_KINDS)
 
 
 def write_scene(name, folder):
-    """The glTF both renderers render: the project's Cornell box; the box with a perfect mirror
-    for the tall block and a smooth glass sphere for the short one (specular chains, the peer's
-    worst case); or about 300,000 diffuse triangles in it (the scaling scene's spheres)."""
+    """The glTF both renderers render (SCENE_KINDS says what each is); the path of the file."""
     if name == "cornell":
         return os.path.join(ROOT, "scenes", "cornell_box.gltf")
     path = os.path.join(folder, name + ".gltf")
     if name == "mesh":
         g, _, _ = scaling.build(300000, 1, False, 0)
-        g.write(path)
-        return path
+    else:
+        g = {"mirror-glass": mirror_glass_box, "tiny-light": tiny_light_box,
+             "lamps": lamps_box, "instances": instances_box}[name]()
+    g.write(path)
+    return path
+
+
+def _replace_light(g, quads, emission):
+    """The box of scenes/make_cornell_box.py with `quads` for its ceiling light."""
+    light = g.material("small light", (0.78, 0.78, 0.78), emission)
+    light_node = next(n for n in g.doc["nodes"] if n.get("name") == "light")
+    g.doc["meshes"][light_node["mesh"]]["primitives"] = [g.primitive(quads, light)]
+    return g
+
+
+def _ceiling_quad(cx, cz, half_x, half_z):
+    return cornell.quad((cx - half_x, cornell.LIGHT_Y, cz - half_z),
+                        (cx + half_x, cornell.LIGHT_Y, cz - half_z),
+                        (cx + half_x, cornell.LIGHT_Y, cz + half_z),
+                        (cx - half_x, cornell.LIGHT_Y, cz + half_z), (0, -1, 0))
+
+
+LIGHT_CENTRE = (2.78, 2.795)  # of the box's light quad, 1.3 x 1.05
+LIGHT_AREA = 1.3 * 1.05
+
+
+def tiny_light_box():
+    """The Cornell box lit by a light a tenth the size each way, 100 times as bright (the same
+    power): next-event estimation carries it, BSDF sampling almost never finds it."""
+    quads = [_ceiling_quad(LIGHT_CENTRE[0], LIGHT_CENTRE[1], 0.065, 0.0525)]
+    return _replace_light(cornell.build(), quads, tuple(100.0 * e for e in cornell.EMISSION))
+
+
+def lamps_box():
+    """The Cornell box lit by 1,024 small lamps (a 32 x 32 grid over the ceiling) of the same
+    total power as its one light: many emitters to choose among."""
+    n, side = 32, 0.05
+    step = (cornell.S - 0.4) / n
+    quads = [_ceiling_quad(0.2 + (i + 0.5) * step, 0.2 + (k + 0.5) * step, side / 2, side / 2)
+             for i in range(n) for k in range(n)]
+    scale = LIGHT_AREA / (n * n * side * side)
+    return _replace_light(cornell.build(), quads, tuple(scale * e for e in cornell.EMISSION))
+
+
+def instances_box():
+    """64 placements (a 4 x 4 x 4 grid) of one 17,688-triangle diffuse sphere in the box with
+    its light: 1.13 M triangles as placed, one mesh in memory (a two-level BVH)."""
+    g = cornell.GltfWriter()
+    white = g.material("white", cornell.WHITE)
+    red = g.material("red", cornell.RED)
+    green = g.material("green", cornell.GREEN)
+    light = g.material("light", (0.78, 0.78, 0.78), cornell.EMISSION)
+    white_q, red_q, green_q = cornell.room_quads()
+    g.node(name="room", mesh=g.mesh("room", [g.primitive(white_q, white),
+                                             g.primitive(red_q, red),
+                                             g.primitive(green_q, green)]))
+    g.node(name="light", mesh=g.mesh("light", [g.primitive(cornell.light_quad(), light)]))
+    points, tris = scaling.uv_sphere(67)
+    sphere = g.mesh("sphere", [scaling.sphere_primitive(g, points, tris, white)])
+    n, lo, hi = 4, 0.5, cornell.S - 0.8
+    spacing = (hi - lo) / n
+    for j in range(n):
+        for i in range(n):
+            for k in range(n):
+                g.node(name="sphere %d" % (16 * j + 4 * i + k), mesh=sphere,
+                       translation=[lo + (i + 0.5) * spacing, lo + (j + 0.5) * spacing,
+                                    lo + (k + 0.5) * spacing], scale=[0.4 * spacing] * 3)
+    _camera(g)
+    return g
+
+
+def _camera(g):
+    g.doc["cameras"].append({"type": "perspective", "name": "camera", "perspective": {
+        "yfov": 2 * math.atan(12.5 / 35.0), "aspectRatio": 1.0, "znear": 0.1, "zfar": 100.0}})
+    g.node(name="camera", camera=0, translation=[2.775, 2.73, -8.0],
+           rotation=cornell.y_rotation(180.0))
+
+
+def mirror_glass_box():
+    """The box with a perfect mirror for the tall block and a smooth glass sphere for the short
+    one: specular chains, the peer's worst case."""
     g = cornell.GltfWriter()
     white = g.material("white", cornell.WHITE)
     red = g.material("red", cornell.RED)
@@ -87,12 +172,8 @@ def write_scene(name, folder):
     points, tris = scaling.uv_sphere(48)
     g.node(name="glass sphere", mesh=g.mesh("sphere", [scaling.sphere_primitive(
         g, points, tris, glass)]), translation=[1.855, 0.9, 1.69], scale=[0.9, 0.9, 0.9])
-    g.doc["cameras"].append({"type": "perspective", "name": "camera", "perspective": {
-        "yfov": 2 * math.atan(12.5 / 35.0), "aspectRatio": 1.0, "znear": 0.1, "zfar": 100.0}})
-    g.node(name="camera", camera=0, translation=[2.775, 2.73, -8.0],
-           rotation=cornell.y_rotation(180.0))
-    g.write(path)
-    return path
+    _camera(g)
+    return g
 
 
 def find_libllvm19():
@@ -161,8 +242,8 @@ def main():
                         help="timed renders of each, alternating (median time, mean relMSE)")
     parser.add_argument("--json", help="write the numbers here")
     parser.add_argument("--scene", default="cornell", choices=SCENES,
-                        help="cornell (default), mirror-glass (a mirror block and a glass "
-                             "sphere in the box) or mesh (300k diffuse triangles in the box)")
+                        help="; ".join("%s: %s" % kind for kind in SCENE_KINDS.items()) +
+                        " (default cornell)")
     parser.add_argument("--variant", default="scalar_rgb",
                         choices=["scalar_rgb", "llvm_ad_rgb", "cuda_ad_rgb"],
                         help="Mitsuba's variant (default scalar_rgb; llvm_ad_rgb is the fast one "
