@@ -92,15 +92,7 @@ def build(triangles, material_count, unique=False, instanced_triangles=0):
     g = cornell.GltfWriter()
     g.doc["asset"]["generator"] = "bench/make_scaling_scene.py"
     g.doc["extensionsUsed"].append("KHR_materials_transmission")
-    white = g.material("white", cornell.WHITE)
-    red = g.material("red", cornell.RED)
-    green = g.material("green", cornell.GREEN)
-    light = g.material("light", (0.78, 0.78, 0.78), cornell.EMISSION)
-    white_quads, red_quads, green_quads = cornell.room_quads()
-    g.node(name="room", mesh=g.mesh("room", [g.primitive(white_quads, white),
-                                             g.primitive(red_quads, red),
-                                             g.primitive(green_quads, green)]))
-    g.node(name="light", mesh=g.mesh("light", [g.primitive(cornell.light_quad(), light)]))
+    white = cornell.lit_room(g)
     fixed = 12  # room and light
 
     # Few spheres for small scenes (the sphere itself needs ~80 triangles), up to a few

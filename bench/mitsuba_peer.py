@@ -114,15 +114,7 @@ def instances_box():
     """64 placements (a 4 x 4 x 4 grid) of one 17,688-triangle diffuse sphere in the box with
     its light: 1.13 M triangles as placed, one mesh in memory (a two-level BVH)."""
     g = cornell.GltfWriter()
-    white = g.material("white", cornell.WHITE)
-    red = g.material("red", cornell.RED)
-    green = g.material("green", cornell.GREEN)
-    light = g.material("light", (0.78, 0.78, 0.78), cornell.EMISSION)
-    white_q, red_q, green_q = cornell.room_quads()
-    g.node(name="room", mesh=g.mesh("room", [g.primitive(white_q, white),
-                                             g.primitive(red_q, red),
-                                             g.primitive(green_q, green)]))
-    g.node(name="light", mesh=g.mesh("light", [g.primitive(cornell.light_quad(), light)]))
+    white = cornell.lit_room(g)
     points, tris = scaling.uv_sphere(67)
     sphere = g.mesh("sphere", [scaling.sphere_primitive(g, points, tris, white)])
     n, lo, hi = 4, 0.5, cornell.S - 0.8
@@ -148,10 +140,7 @@ def mirror_glass_box():
     """The box with a perfect mirror for the tall block and a smooth glass sphere for the short
     one: specular chains, the peer's worst case."""
     g = cornell.GltfWriter()
-    white = g.material("white", cornell.WHITE)
-    red = g.material("red", cornell.RED)
-    green = g.material("green", cornell.GREEN)
-    light = g.material("light", (0.78, 0.78, 0.78), cornell.EMISSION)
+    cornell.lit_room(g)
     g.doc["materials"].append({"name": "mirror", "pbrMetallicRoughness": {
         "baseColorFactor": [1.0, 1.0, 1.0, 1.0], "metallicFactor": 1.0, "roughnessFactor": 0.0}})
     mirror = len(g.doc["materials"]) - 1
@@ -160,11 +149,6 @@ def mirror_glass_box():
         "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1.0}}})
     glass = len(g.doc["materials"]) - 1
     g.doc["extensionsUsed"].append("KHR_materials_transmission")
-    white_q, red_q, green_q = cornell.room_quads()
-    g.node(name="room", mesh=g.mesh("room", [g.primitive(white_q, white),
-                                             g.primitive(red_q, red),
-                                             g.primitive(green_q, green)]))
-    g.node(name="light", mesh=g.mesh("light", [g.primitive(cornell.light_quad(), light)]))
     g.node(name="tall block", mesh=g.mesh("block", [g.primitive(cornell.unit_block_quads(),
                                                                 mirror)]),
            translation=[3.685, 0.0, 3.5125], rotation=cornell.y_rotation(17.0),

@@ -156,8 +156,9 @@ class GltfWriter:
             f.write("\n")
 
 
-def build():
-    g = GltfWriter()
+def lit_room(g):
+    """The room's walls and its ceiling light, with their materials, into writer `g`; the
+    white material's index. The Cornell box and the bench scenes (bench/) start from it."""
     white = g.material("white", WHITE)
     red = g.material("red", RED)
     green = g.material("green", GREEN)
@@ -168,6 +169,12 @@ def build():
                            g.primitive(green_quads, green)])
     g.node(name="room", mesh=room)
     g.node(name="light", mesh=g.mesh("light", [g.primitive(light_quad(), light)]))
+    return white
+
+
+def build():
+    g = GltfWriter()
+    white = lit_room(g)
     block = g.mesh("block", [g.primitive(unit_block_quads(), white)])
     g.node(name="short block", mesh=block, translation=[1.855, 0.0, 1.69],
            rotation=y_rotation(-17.0), scale=[1.65, 1.65, 1.65])
