@@ -91,10 +91,9 @@ def main():
         subprocess.run([args.wavefront, "bench", args.scene, "--width", str(args.width),
                         "--frames", "4", "--warmup", "1", "-q"] + args.bench_options,
                        stdout=bench, stderr=subprocess.STDOUT, check=True)
-    bench = open(os.devnull, "w")
     process = subprocess.Popen([args.wavefront, "bench", args.scene, "--width", str(args.width),
                                 "--frames", "100000", "--warmup", "1", "-q"] + args.bench_options,
-                               stdout=bench, stderr=subprocess.STDOUT)
+                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     try:
         time.sleep(4.0)  # shaders compiled, frames running
         if process.poll() is not None:
