@@ -18,6 +18,7 @@ import argparse
 import collections
 import os
 import re
+import shutil
 import signal
 import subprocess
 import sys
@@ -83,14 +84,23 @@ def main():
     parser.add_argument("--out", default="out/profile")
     parser.add_argument("bench_options", nargs="*", help="after --: passed to wavefront bench")
     args = parser.parse_args()
+    missing = [tool for tool in ("perf", "gdb", "objdump") if shutil.which(tool) is None]
+    if missing:
+        sys.exit("profile_lavapipe.py: needs %s on PATH" % ", ".join(missing))
     os.makedirs(args.out, exist_ok=True)
 
     # First the per-pass times to match the shaders against, then a run that outlasts
     # compilation and the sampling window.
     with open(os.path.join(args.out, "bench.txt"), "w") as bench:
-        subprocess.run([args.wavefront, "bench", args.scene, "--width", str(args.width),
-                        "--frames", "4", "--warmup", "1", "-q"] + args.bench_options,
-                       stdout=bench, stderr=subprocess.STDOUT, check=True)
+        first = subprocess.run([args.wavefront, "bench", args.scene, "--width", str(args.width),
+                                "--frames", "4", "--warmup", "1", "-q"] + args.bench_options,
+                               stdout=bench, stderr=subprocess.STDOUT, check=False)
+    if first.returncode != 0:
+        with open(os.path.join(args.out, "bench.txt")) as bench:
+            lines = bench.read().strip().splitlines()
+        print("profile_lavapipe.py: wavefront bench failed: %s" % (lines[-1] if lines else
+              "exit %d" % first.returncode), file=sys.stderr)
+        sys.exit(first.returncode)
     process = subprocess.Popen([args.wavefront, "bench", args.scene, "--width", str(args.width),
                                 "--frames", "100000", "--warmup", "1", "-q"] + args.bench_options,
                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
