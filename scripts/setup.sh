@@ -40,8 +40,8 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 # WAVEFRONT_MESA=backports: lavapipe from Debian 12's backports suite (Mesa 25.0) instead of
-# the release's Mesa 22.3, whose traversal code misses the cache less: 1.5x on large meshes
-# (docs/performance.md#mesa-250-from-bookworm-backports-2026-12-03).
+# the release's 22.3; the traversal code Mesa 25 builds misses the cache less, 1.44x on a
+# 300k-triangle mesh (docs/performance.md#mesa-250-from-bookworm-backports-2026-12-03).
 [ "${WAVEFRONT_MESA:-}" != "backports" ] || bash scripts/mesa_backports.sh
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DWF_BUILD_TESTS="$tests" >/dev/null
