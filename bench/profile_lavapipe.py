@@ -89,21 +89,23 @@ def main():
         sys.exit("profile_lavapipe.py: needs %s on PATH" % ", ".join(missing))
     os.makedirs(args.out, exist_ok=True)
 
+    def bench_command(frames):
+        return [args.wavefront, "bench", args.scene, "--width", str(args.width), "--frames",
+                str(frames), "--warmup", "1", "-q"] + args.bench_options
+
     # First the per-pass times to match the shaders against, then a run that outlasts
     # compilation and the sampling window.
     with open(os.path.join(args.out, "bench.txt"), "w") as bench:
-        first = subprocess.run([args.wavefront, "bench", args.scene, "--width", str(args.width),
-                                "--frames", "4", "--warmup", "1", "-q"] + args.bench_options,
-                               stdout=bench, stderr=subprocess.STDOUT, check=False)
+        first = subprocess.run(bench_command(4), stdout=bench, stderr=subprocess.STDOUT,
+                               check=False)
     if first.returncode != 0:
         with open(os.path.join(args.out, "bench.txt")) as bench:
             lines = bench.read().strip().splitlines()
         print("profile_lavapipe.py: wavefront bench failed: %s" % (lines[-1] if lines else
               "exit %d" % first.returncode), file=sys.stderr)
         sys.exit(first.returncode)
-    process = subprocess.Popen([args.wavefront, "bench", args.scene, "--width", str(args.width),
-                                "--frames", "100000", "--warmup", "1", "-q"] + args.bench_options,
-                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    process = subprocess.Popen(bench_command(100000), stdout=subprocess.DEVNULL,
+                               stderr=subprocess.DEVNULL)
     try:
         time.sleep(4.0)  # shaders compiled, frames running
         if process.poll() is not None:

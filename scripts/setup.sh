@@ -11,12 +11,16 @@ esac
 
 packages=(
     build-essential cmake ninja-build pkg-config
-    libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers
+    libvulkan-dev vulkan-validationlayers
     glslang-dev glslang-tools libglm-dev libtinygltf-dev libopenexr-dev libstb-dev
     libdraco-dev libmeshoptimizer-dev nlohmann-json3-dev # compressed glTF meshes
     libglfw3-dev libimgui-dev # wavefront view (WF_BUILD_VIEWER)
     python3-matplotlib # wavefront converge's charts (scripts/plot_convergence.py)
 )
+# lavapipe: the release's Mesa 22.3, or with WAVEFRONT_MESA=backports Debian 12's backports
+# suite's Mesa 25.0 (installed below, after the rest), whose traversal code misses the cache
+# less: 1.44x on a 300k-triangle mesh (docs/performance.md#mesa-250-from-bookworm-backports-2026-12-03).
+[ "${WAVEFRONT_MESA:-}" = "backports" ] || packages+=(mesa-vulkan-drivers)
 tests=OFF
 if [ "${1:-}" = "--with-tests" ]; then
     packages+=(googletest libgtest-dev xvfb xauth xdotool) # the viewer test: display, input
@@ -39,9 +43,6 @@ if [ ${#missing[@]} -gt 0 ]; then
         "${missing[@]}" >/dev/null
 fi
 
-# WAVEFRONT_MESA=backports: lavapipe from Debian 12's backports suite (Mesa 25.0) instead of
-# the release's 22.3; the traversal code Mesa 25 builds misses the cache less, 1.44x on a
-# 300k-triangle mesh (docs/performance.md#mesa-250-from-bookworm-backports-2026-12-03).
 [ "${WAVEFRONT_MESA:-}" != "backports" ] || bash scripts/mesa_backports.sh
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DWF_BUILD_TESTS="$tests" >/dev/null
