@@ -102,7 +102,7 @@ std::string defaultShaderDir() {
         return env;
     std::error_code error;
     fs::path exe = fs::read_symlink("/proc/self/exe", error);
-    if (!error && fs::is_directory(exe.parent_path() / "shaders" / "shared"))
+    if (!error && fs::is_regular_file(exe.parent_path() / "shaders" / "raygen.comp"))
         return (exe.parent_path() / "shaders").string();
     return WF_SOURCE_SHADER_DIR;
 }
@@ -121,22 +121,26 @@ ShaderCompiler::ShaderCompiler() : ShaderCompiler(defaultShaderDir(), defaultSha
 
 ShaderCompiler::ShaderCompiler(std::string shaderDir, std::string cacheDir)
     : shaderDir_(fs::weakly_canonical(shaderDir).string()), cacheDir_(std::move(cacheDir)) {
-    if (!fs::is_directory(fs::path(shaderDir_) / "shared"))
+    if (!fs::is_regular_file(fs::path(shaderDir_) / "raygen.comp"))
         throw InternalError("shader folder " + shaderDir_ +
-                            " has no shared/ folder; set WAVEFRONT_SHADER_DIR");
-    std::vector<fs::path> shared;
-    for (const auto& entry : fs::directory_iterator(fs::path(shaderDir_) / "shared"))
+                            " has no raygen.comp; set WAVEFRONT_SHADER_DIR");
+    // Every file under the folder, by its path there, so that a cached SPIR-V is never reused
+    // after any included source changed, wherever it lives.
+    std::vector<fs::path> sources;
+    for (const auto& entry : fs::recursive_directory_iterator(shaderDir_))
         if (entry.is_regular_file())
-            shared.push_back(entry.path());
-    std::sort(shared.begin(), shared.end());
-    sharedSourcesHash_ = fnv1a("wavefront-spirv-cache-v1");
-    for (const auto& path : shared)
-        sharedSourcesHash_ = fnv1a(path.filename().string() + readText(path), sharedSourcesHash_);
+            sources.push_back(entry.path());
+    std::sort(sources.begin(), sources.end());
+    sourcesHash_ = fnv1a("wavefront-spirv-cache-v2");
+    for (const auto& path : sources)
+        sourcesHash_ = fnv1a(path.lexically_relative(shaderDir_).generic_string() +
+                                       readText(path),
+                                   sourcesHash_);
 }
 
 std::string ShaderCompiler::cacheKey(const std::string& source,
                                      const ShaderDefines& defines) const {
-    uint64_t hash = fnv1a(source, sharedSourcesHash_);
+    uint64_t hash = fnv1a(source, sourcesHash_);
     for (const auto& [name, value] : defines)
         hash = fnv1a(name + "=" + value + ";", hash);
     hash = fnv1a(std::to_string(glslang::GetVersion().major) + "." +

@@ -36,7 +36,7 @@ private:
 
     std::string shaderDir_;
     std::string cacheDir_;
-    uint64_t sharedSourcesHash_ = 0; // every file under shaders/shared, read once
+    uint64_t sourcesHash_ = 0; // every file under the shader folder, read once
 };
 
 std::string defaultShaderDir();
