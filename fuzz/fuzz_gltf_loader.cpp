@@ -13,8 +13,8 @@
 #include <string>
 
 #include "errors.h"
-#include "scene/gltf_images.h"
-#include "scene/gltf_loader.h"
+#include "scene/gltf/gltf_images.h"
+#include "scene/gltf/gltf_loader.h"
 
 namespace {
 

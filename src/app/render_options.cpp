@@ -10,7 +10,7 @@
 #include "scene/default_camera.h"
 #include "scene/environment_map.h"
 #include "scene/light_table.h"
-#include "scene/gltf_loader.h"
+#include "scene/gltf/gltf_loader.h"
 
 namespace wf {
 

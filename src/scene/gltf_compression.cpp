@@ -6,9 +6,9 @@
 
 #include <set>
 
-#include "scene/gltf_accessors.h"
+#include "scene/gltf/gltf_accessors.h"
 #include "scene/gltf_codecs.h"
-#include "scene/gltf_file_access.h"
+#include "scene/gltf/gltf_file_access.h"
 
 namespace wf::gltf {
 

@@ -8,10 +8,10 @@
 #include <set>
 #include <string_view>
 
-#include "scene/gltf_accessors.h"
-#include "scene/gltf_buffer_streaming.h"
+#include "scene/gltf/gltf_accessors.h"
+#include "scene/gltf/gltf_buffer_streaming.h"
 #include "scene/gltf_codecs.h"
-#include "scene/gltf_materials.h"
+#include "scene/gltf/gltf_materials.h"
 
 namespace wf::gltf {
 namespace {

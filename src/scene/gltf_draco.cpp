@@ -5,7 +5,7 @@
 #include <tiny_gltf.h>
 
 #include "scene/draco_decoder.h"
-#include "scene/gltf_accessors.h"
+#include "scene/gltf/gltf_accessors.h"
 #include "scene/gltf_codecs.h"
 
 namespace wf::gltf {

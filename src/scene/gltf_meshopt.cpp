@@ -5,7 +5,7 @@
 
 #include <algorithm>
 
-#include "scene/gltf_accessors.h"
+#include "scene/gltf/gltf_accessors.h"
 #include "scene/gltf_codecs.h"
 
 namespace wf::gltf {

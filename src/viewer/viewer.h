@@ -9,7 +9,7 @@
 #include <string>
 
 #include "render/wavefront_renderer.h"
-#include "scene/gltf_instancing.h"
+#include "scene/gltf/gltf_instancing.h"
 #include "viewer/display_pass.h"
 
 namespace wf {

@@ -13,7 +13,7 @@
 #include "image/error_metrics.h"
 #include "render/adaptive_sampling.h"
 #include "render/scene_buffers.h"
-#include "scene/gltf_loader.h"
+#include "scene/gltf/gltf_loader.h"
 
 namespace wf::test {
 namespace {

@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "gpu_test_util.h"
-#include "scene/gltf_loader.h"
+#include "scene/gltf/gltf_loader.h"
 #include "shaders/shared/render_types.h"
 
 namespace wf::test {

@@ -27,7 +27,7 @@
 #include "image/error_metrics.h"
 #include "render/scene_buffers.h"
 #include "render/shader_variant.h"
-#include "scene/gltf_loader.h"
+#include "scene/gltf/gltf_loader.h"
 
 namespace wf::test {
 namespace {

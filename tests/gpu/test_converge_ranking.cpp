@@ -12,7 +12,7 @@
 #include "gpu_test_util.h"
 #include "render/convergence_summary.h"
 #include "render/scene_buffers.h"
-#include "scene/gltf_loader.h"
+#include "scene/gltf/gltf_loader.h"
 
 namespace wf::test {
 namespace {

@@ -9,7 +9,7 @@
 #include "errors.h"
 #include "gpu_test_util.h"
 #include "render/scene_buffers.h"
-#include "scene/gltf_loader.h"
+#include "scene/gltf/gltf_loader.h"
 
 namespace wf::test {
 namespace {

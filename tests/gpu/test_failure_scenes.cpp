@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "gpu_test_util.h"
-#include "scene/gltf_loader.h"
+#include "scene/gltf/gltf_loader.h"
 
 namespace wf::test {
 namespace {

@@ -12,7 +12,7 @@
 #include "render/scene_buffers.h"
 #include "image/png_writer.h"
 #include "render/shader_variant.h"
-#include "scene/gltf_loader.h"
+#include "scene/gltf/gltf_loader.h"
 
 namespace wf::test {
 namespace {

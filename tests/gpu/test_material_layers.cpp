@@ -11,8 +11,8 @@
 #include "analytic_scenes.h"
 #include "gpu_test_util.h"
 #include "render/scene_buffers.h"
-#include "scene/gltf_loader.h"
-#include "scene/gltf_materials.h"
+#include "scene/gltf/gltf_loader.h"
+#include "scene/gltf/gltf_materials.h"
 
 namespace wf::test {
 namespace {

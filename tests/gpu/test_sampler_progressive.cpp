@@ -11,7 +11,7 @@
 #include "gpu_test_util.h"
 #include "image/error_metrics.h"
 #include "render/scene_buffers.h"
-#include "scene/gltf_loader.h"
+#include "scene/gltf/gltf_loader.h"
 
 namespace wf {
 // Test names and failure messages show the sampler's name.

@@ -15,7 +15,7 @@
 #include "gpu_test_util.h"
 #include "instanced_scene.h"
 #include "render/scene_buffers.h"
-#include "scene/gltf_loader.h"
+#include "scene/gltf/gltf_loader.h"
 
 namespace wf::test {
 namespace {

@@ -10,7 +10,7 @@
 #include <cstdio>
 
 #include "gpu_test_util.h"
-#include "scene/gltf_materials.h"
+#include "scene/gltf/gltf_materials.h"
 
 namespace wf::test {
 namespace {

@@ -9,8 +9,8 @@
 
 #include "gpu_test_util.h"
 #include "render/scene_buffers.h"
-#include "scene/gltf_loader.h"
-#include "scene/gltf_materials.h"
+#include "scene/gltf/gltf_loader.h"
+#include "scene/gltf/gltf_materials.h"
 
 namespace wf::test {
 namespace {

@@ -9,7 +9,7 @@
 
 #include "scene/bvh_cpu.h"
 #include "scene/bvh_tuning.h"
-#include "scene/gltf_loader.h"
+#include "scene/gltf/gltf_loader.h"
 #include "shaders/shared/geometry.h"
 
 namespace {

@@ -7,9 +7,9 @@
 #include <random>
 
 #include "errors.h"
-#include "scene/gltf_buffer_streaming.h"
-#include "scene/gltf_json_scan.h"
-#include "scene/gltf_loader.h"
+#include "scene/gltf/gltf_buffer_streaming.h"
+#include "scene/gltf/gltf_json_scan.h"
+#include "scene/gltf/gltf_loader.h"
 #include "mini_gltf.h"
 
 namespace wf {

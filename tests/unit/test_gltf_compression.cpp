@@ -15,7 +15,7 @@
 #include "compressed_gltf.h"
 #include "draco_test_encoder.h"
 #include "errors.h"
-#include "scene/gltf_loader.h"
+#include "scene/gltf/gltf_loader.h"
 
 namespace wf {
 namespace {

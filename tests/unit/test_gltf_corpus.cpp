@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "errors.h"
-#include "scene/gltf_loader.h"
+#include "scene/gltf/gltf_loader.h"
 
 namespace wf {
 namespace {

@@ -6,8 +6,8 @@
 
 #include <glm/gtc/packing.hpp>
 
-#include "scene/gltf_loader.h"
-#include "scene/gltf_primitives.h"
+#include "scene/gltf/gltf_loader.h"
+#include "scene/gltf/gltf_primitives.h"
 
 namespace wf {
 namespace {

@@ -10,8 +10,8 @@
 #include <fstream>
 
 #include "errors.h"
-#include "scene/gltf_loader.h"
-#include "scene/gltf_primitives.h"
+#include "scene/gltf/gltf_loader.h"
+#include "scene/gltf/gltf_primitives.h"
 #include "scene/scene_summary.h"
 #include "mini_gltf.h"
 

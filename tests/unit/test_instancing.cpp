@@ -7,7 +7,7 @@
 #include <random>
 
 #include "instanced_scene.h"
-#include "scene/gltf_loader.h"
+#include "scene/gltf/gltf_loader.h"
 #include "scene/instance_bvh.h"
 #include "shaders/shared/bvh_traverse.h"
 

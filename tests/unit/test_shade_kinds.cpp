@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "render/shade_kinds.h"
-#include "scene/gltf_materials.h"
+#include "scene/gltf/gltf_materials.h"
 
 namespace wf {
 namespace {

@@ -11,8 +11,8 @@
 #include <glm/gtc/packing.hpp>
 #include <glm/mat2x2.hpp>
 
-#include "scene/gltf_loader.h"
-#include "scene/tangent_generation.h"
+#include "scene/gltf/gltf_loader.h"
+#include "scene/gltf/tangent_generation.h"
 
 namespace wf {
 namespace {

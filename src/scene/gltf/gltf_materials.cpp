@@ -1,6 +1,6 @@
 // Materials and their texture references. Values outside glTF's ranges are refused (an albedo
 // above 1 would create energy); extensions the renderer cannot honour are named once.
-#include "scene/gltf_materials.h"
+#include "scene/gltf/gltf_materials.h"
 
 #include <tiny_gltf.h>
 
@@ -8,7 +8,7 @@
 #include <cmath>
 #include <set>
 
-#include "scene/gltf_accessors.h"
+#include "scene/gltf/gltf_accessors.h"
 
 namespace wf::gltf {
 namespace {

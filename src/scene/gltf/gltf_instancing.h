@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/gltf_materials.h"
+#include "scene/gltf/gltf_materials.h"
 
 namespace tinygltf {
 class Model;

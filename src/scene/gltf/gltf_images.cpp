@@ -1,5 +1,5 @@
 // Image bytes to RGBA8 texels with stb_image (Debian's libstb), every size checked first.
-#include "scene/gltf_images.h"
+#include "scene/gltf/gltf_images.h"
 
 #include <stb_image.h>
 #include <tiny_gltf.h>
@@ -7,7 +7,7 @@
 #include <climits>
 #include <cstring>
 
-#include "scene/gltf_accessors.h"
+#include "scene/gltf/gltf_accessors.h"
 
 namespace wf::gltf {
 namespace {

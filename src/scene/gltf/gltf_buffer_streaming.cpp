@@ -1,4 +1,4 @@
-#include "scene/gltf_buffer_streaming.h"
+#include "scene/gltf/gltf_buffer_streaming.h"
 
 #include <tiny_gltf.h>
 
@@ -9,9 +9,9 @@
 #include <optional>
 #include <string_view>
 
-#include "scene/gltf_accessors.h"
-#include "scene/gltf_file_access.h"
-#include "scene/gltf_json_scan.h"
+#include "scene/gltf/gltf_accessors.h"
+#include "scene/gltf/gltf_file_access.h"
+#include "scene/gltf/gltf_json_scan.h"
 
 namespace wf::gltf {
 namespace {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/gltf_instancing.h"
+#include "scene/gltf/gltf_instancing.h"
 #include "scene/scene.h"
 
 namespace wf {

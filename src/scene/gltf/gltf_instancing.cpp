@@ -1,9 +1,9 @@
-#include "scene/gltf_instancing.h"
+#include "scene/gltf/gltf_instancing.h"
 
 #include <tiny_gltf.h>
 
 #include "errors.h"
-#include "scene/gltf_primitives.h"
+#include "scene/gltf/gltf_primitives.h"
 
 namespace wf {
 

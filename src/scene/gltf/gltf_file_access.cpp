@@ -1,6 +1,6 @@
 // tinygltf's default hooks read any path a file names, "../" and absolute ones included, and
 // hand every image to stb_image; these replacements confine it to the scene's folder.
-#include "scene/gltf_file_access.h"
+#include "scene/gltf/gltf_file_access.h"
 
 #include <tiny_gltf.h>
 

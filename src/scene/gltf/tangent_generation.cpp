@@ -5,7 +5,7 @@
 // angle-weighted sum of dP/ds projected into the vertex normal's plane. With the default
 // 180-degree angular threshold a group is never split further (MikkTSpace splits only faces
 // whose projected tangents point exactly opposite), so one frame per group is its answer.
-#include "scene/tangent_generation.h"
+#include "scene/gltf/tangent_generation.h"
 
 #include <algorithm>
 #include <array>

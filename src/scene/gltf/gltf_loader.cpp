@@ -3,7 +3,7 @@
 // decodes the images they use (gltf_images). tinygltf parses the JSON through the hooks in
 // gltf_file_access; nothing in the parsed model is trusted, and the accessor bounds checks live
 // in gltf_accessors (tinygltf 2.7.0 checks few of them).
-#include "scene/gltf_loader.h"
+#include "scene/gltf/gltf_loader.h"
 
 #include <tiny_gltf.h>
 
@@ -17,15 +17,15 @@
 #include <optional>
 
 #include "errors.h"
-#include "scene/gltf_accessors.h"
-#include "scene/gltf_buffer_streaming.h"
+#include "scene/gltf/gltf_accessors.h"
+#include "scene/gltf/gltf_buffer_streaming.h"
 #include "scene/gltf_compression.h"
-#include "scene/gltf_file_access.h"
-#include "scene/gltf_images.h"
-#include "scene/gltf_instancing.h"
-#include "scene/gltf_lights_cameras.h"
-#include "scene/gltf_materials.h"
-#include "scene/gltf_primitives.h"
+#include "scene/gltf/gltf_file_access.h"
+#include "scene/gltf/gltf_images.h"
+#include "scene/gltf/gltf_instancing.h"
+#include "scene/gltf/gltf_lights_cameras.h"
+#include "scene/gltf/gltf_materials.h"
+#include "scene/gltf/gltf_primitives.h"
 
 namespace wf {
 namespace {

@@ -9,8 +9,8 @@
 
 #include <glm/mat4x4.hpp>
 
-#include "scene/gltf_accessors.h"
-#include "scene/gltf_materials.h"
+#include "scene/gltf/gltf_accessors.h"
+#include "scene/gltf/gltf_materials.h"
 #include "scene/scene.h"
 
 namespace tinygltf {

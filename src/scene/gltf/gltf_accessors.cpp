@@ -1,6 +1,6 @@
 // Accessor -> bufferView -> buffer, each hop bounds-checked; element reads use memcpy because
 // glTF allows strides and offsets that leave elements unaligned.
-#include "scene/gltf_accessors.h"
+#include "scene/gltf/gltf_accessors.h"
 
 #include <tiny_gltf.h>
 

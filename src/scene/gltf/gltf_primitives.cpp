@@ -1,6 +1,6 @@
 // Primitive assembly. Attributes are looked up per corner through the same vertex index as the
 // position, so indexed, non-indexed, strip and fan primitives share one loop.
-#include "scene/gltf_primitives.h"
+#include "scene/gltf/gltf_primitives.h"
 
 #include <unistd.h>
 
@@ -13,7 +13,7 @@
 #include <glm/gtc/packing.hpp>
 #include <glm/gtc/matrix_inverse.hpp>
 
-#include "scene/tangent_generation.h"
+#include "scene/gltf/tangent_generation.h"
 
 namespace wf::gltf {
 

@@ -1,10 +1,10 @@
-#include "scene/gltf_lights_cameras.h"
+#include "scene/gltf/gltf_lights_cameras.h"
 
 #include <tiny_gltf.h>
 
 #include <cmath>
 
-#include "scene/gltf_accessors.h"
+#include "scene/gltf/gltf_accessors.h"
 
 namespace wf::gltf {
 namespace {
