@@ -1,5 +1,5 @@
 // Draco's encoder for the compression tests, in a shared library of its own for the reason
-// src/scene/draco_decoder.h gives (libdraco's private tinygltf and stb_image).
+// src/scene/gltf/compression/draco_decoder.h gives (libdraco's private tinygltf and stb_image).
 #pragma once
 #include <cstddef>
 #include <cstdint>

@@ -19,7 +19,7 @@
 #include "errors.h"
 #include "scene/gltf/gltf_accessors.h"
 #include "scene/gltf/gltf_buffer_streaming.h"
-#include "scene/gltf_compression.h"
+#include "scene/gltf/compression/gltf_compression.h"
 #include "scene/gltf/gltf_file_access.h"
 #include "scene/gltf/gltf_images.h"
 #include "scene/gltf/gltf_instancing.h"

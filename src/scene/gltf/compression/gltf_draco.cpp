@@ -4,9 +4,9 @@
 // (KHR_mesh_quantization) accessors then read as usual. Decoding itself: draco_decoder.h.
 #include <tiny_gltf.h>
 
-#include "scene/draco_decoder.h"
+#include "scene/gltf/compression/draco_decoder.h"
 #include "scene/gltf/gltf_accessors.h"
-#include "scene/gltf_codecs.h"
+#include "scene/gltf/compression/gltf_codecs.h"
 
 namespace wf::gltf {
 namespace {

@@ -6,7 +6,7 @@
 #include <algorithm>
 
 #include "scene/gltf/gltf_accessors.h"
-#include "scene/gltf_codecs.h"
+#include "scene/gltf/compression/gltf_codecs.h"
 
 namespace wf::gltf {
 namespace {

@@ -1,7 +1,7 @@
 // Draco's decoder (Debian 12: 1.5.5), and the conversion of its attributes into glTF component
 // types. Draco's ConvertValue checks each value's address against the attribute's buffer and
 // integer values against the target type's range.
-#include "scene/draco_decoder.h"
+#include "scene/gltf/compression/draco_decoder.h"
 
 #include <draco/compression/decode.h>
 

@@ -1,13 +1,13 @@
 // Step 2 of gltf_compression.h: decoding, in an order that lets a Draco bitstream sit in a
 // meshopt-compressed bufferView (meshopt views first).
-#include "scene/gltf_compression.h"
+#include "scene/gltf/compression/gltf_compression.h"
 
 #include <tiny_gltf.h>
 
 #include <set>
 
 #include "scene/gltf/gltf_accessors.h"
-#include "scene/gltf_codecs.h"
+#include "scene/gltf/compression/gltf_codecs.h"
 #include "scene/gltf/gltf_file_access.h"
 
 namespace wf::gltf {

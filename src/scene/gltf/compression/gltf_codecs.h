@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/gltf_compression.h"
+#include "scene/gltf/compression/gltf_compression.h"
 
 namespace tinygltf {
 class Model;

@@ -1,6 +1,6 @@
 // Step 1 of gltf_compression.h: the JSON before tinygltf. nlohmann/json is the parser
 // tinygltf itself is built on, so the plan sees the document as tinygltf will.
-#include "scene/gltf_compression.h"
+#include "scene/gltf/compression/gltf_compression.h"
 
 #include <nlohmann/json.hpp>
 
@@ -10,7 +10,7 @@
 
 #include "scene/gltf/gltf_accessors.h"
 #include "scene/gltf/gltf_buffer_streaming.h"
-#include "scene/gltf_codecs.h"
+#include "scene/gltf/compression/gltf_codecs.h"
 #include "scene/gltf/gltf_materials.h"
 
 namespace wf::gltf {
