@@ -1,7 +1,7 @@
-// BVH traversal shared by the intersect/shadow passes (GLSL) and the CPU (src/scene/bvh_cpu.h),
+// BVH traversal shared by the intersect/shadow passes (GLSL) and the CPU (src/scene/bvh/bvh_cpu.h),
 // so tests compare the GPU's own traversal against brute force.
 //
-// Layout: BvhPair entries (scene_types.h, made by pairBvhNodes in src/scene/bvh_builder.cpp).
+// Layout: BvhPair entries (scene_types.h, made by pairBvhNodes in src/scene/bvh/bvh_builder.cpp).
 // Each step visits one pair entry: tests both child boxes, intersects the triangles of the
 // children that are leaves there and then (nearer leaf first), and descends into an interior
 // child, so the loop and its stack only ever hold pair entries. The walk starts at entry 0.
@@ -21,7 +21,7 @@
 // so cut-outs stop no ray, closest-hit or shadow; the includer may define it (and
 // WF_ALPHA_PASSES_DEFINED), else alpha_mask.glsl's, reading the includer's scene buffers, is used.
 // In C++ the functions become members of BvhTraversal, whose two pointers the default
-// accessors read; use it through src/scene/bvh_cpu.h and leave the macros undefined (a second
+// accessors read; use it through src/scene/bvh/bvh_cpu.h and leave the macros undefined (a second
 // definition in another translation unit would break the one-definition rule).
 #ifndef WF_BVH_TRAVERSE_H
 #define WF_BVH_TRAVERSE_H

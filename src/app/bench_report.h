@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "render/wavefront_renderer.h"
-#include "scene/bvh_builder.h"
+#include "scene/bvh/bvh_builder.h"
 
 namespace wf {
 

@@ -3,8 +3,8 @@
 #include <cstring>
 
 #include "render/shade_kinds.h"
-#include "scene/bvh_tuning.h"
-#include "scene/instance_bvh.h"
+#include "scene/bvh/bvh_tuning.h"
+#include "scene/bvh/instance_bvh.h"
 #include "render/table_pages.h"
 #include "shaders/shared/render_types.h"
 #include "shaders/shared/sheen.h"

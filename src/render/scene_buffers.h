@@ -6,7 +6,7 @@
 
 #include "gpu/buffer.h"
 #include "gpu/compute_program.h"
-#include "scene/bvh_builder.h"
+#include "scene/bvh/bvh_builder.h"
 #include "scene/light_table.h"
 #include "scene/light_tree.h"
 #include "render/shader_variant.h"

@@ -10,8 +10,8 @@
 #include <random>
 #include <vector>
 
-#include "scene/bvh_builder.h"
-#include "scene/bvh_cpu.h"
+#include "scene/bvh/bvh_builder.h"
+#include "scene/bvh/bvh_cpu.h"
 #include "shaders/shared/sampling.h"
 
 namespace {

@@ -8,7 +8,7 @@
 #include <cstring>
 #include <random>
 
-#include "scene/bvh_builder.h"
+#include "scene/bvh/bvh_builder.h"
 
 namespace wf {
 namespace {

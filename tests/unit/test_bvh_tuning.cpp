@@ -7,8 +7,8 @@
 #include <random>
 #include <vector>
 
-#include "scene/bvh_cpu.h"
-#include "scene/bvh_tuning.h"
+#include "scene/bvh/bvh_cpu.h"
+#include "scene/bvh/bvh_tuning.h"
 #include "scene/gltf/gltf_loader.h"
 #include "shaders/shared/geometry.h"
 

@@ -8,7 +8,7 @@
 
 #include "instanced_scene.h"
 #include "scene/gltf/gltf_loader.h"
-#include "scene/instance_bvh.h"
+#include "scene/bvh/instance_bvh.h"
 #include "shaders/shared/bvh_traverse.h"
 
 namespace wf {

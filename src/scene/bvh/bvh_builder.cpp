@@ -3,7 +3,7 @@
 // subtrees run on all cores. Triangles are moved as 32-byte boxes (PrimRef) rather than
 // through an index array, so every pass streams memory; the triangles are permuted once at
 // the end. Nodes are emitted depth-first, which gives "left child = next node" for free.
-#include "scene/bvh_builder.h"
+#include "scene/bvh/bvh_builder.h"
 
 #include <algorithm>
 #include <cassert>
@@ -18,7 +18,7 @@
 #include <atomic>
 
 #include "errors.h"
-#include "scene/bvh_build_boxes.h"
+#include "scene/bvh/bvh_build_boxes.h"
 #include "shaders/shared/bvh_traverse.h"
 
 namespace wf {

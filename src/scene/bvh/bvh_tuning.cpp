@@ -1,4 +1,4 @@
-#include "scene/bvh_tuning.h"
+#include "scene/bvh/bvh_tuning.h"
 
 #include <algorithm>
 #include <chrono>
@@ -6,7 +6,7 @@
 #include <limits>
 #include <random>
 
-#include "scene/bvh_cpu.h"
+#include "scene/bvh/bvh_cpu.h"
 #include "shaders/shared/geometry.h"
 #include "shaders/shared/sampling.h"
 

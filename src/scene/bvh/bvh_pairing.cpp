@@ -5,7 +5,7 @@
 #include <thread>
 
 #include "errors.h"
-#include "scene/bvh_builder.h"
+#include "scene/bvh/bvh_builder.h"
 #include "shaders/shared/bvh_traverse.h"
 
 namespace wf {

@@ -1,4 +1,4 @@
-#include "scene/instance_bvh.h"
+#include "scene/bvh/instance_bvh.h"
 
 #include <algorithm>
 #include <chrono>
@@ -6,7 +6,7 @@
 
 #include <glm/gtc/matrix_inverse.hpp>
 
-#include "scene/bvh_tuning.h"
+#include "scene/bvh/bvh_tuning.h"
 
 namespace wf {
 namespace {

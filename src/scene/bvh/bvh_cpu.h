@@ -6,7 +6,7 @@
 #include <cassert>
 #include <vector>
 
-#include "scene/bvh_builder.h"
+#include "scene/bvh/bvh_builder.h"
 #include "scene/scene.h"
 #include "shaders/shared/bvh_traverse.h"
 

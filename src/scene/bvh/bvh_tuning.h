@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "scene/bvh_builder.h"
+#include "scene/bvh/bvh_builder.h"
 #include "scene/scene.h"
 
 namespace wf {

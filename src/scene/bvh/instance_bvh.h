@@ -4,7 +4,7 @@
 #pragma once
 #include <vector>
 
-#include "scene/bvh_builder.h"
+#include "scene/bvh/bvh_builder.h"
 #include "scene/scene.h"
 
 namespace wf {
