@@ -6,7 +6,7 @@
 // facing a point are chosen most. The pmf of a given light at a point is the product of the
 // choices on its path, which its trail (bit d: second child at depth d) replays, so a BSDF ray
 // that hits a light gets the same pmf its sampling would have had.
-// Shared by the shade pass (GLSL) and the CPU tests and builder (src/scene/light_tree.cpp).
+// Shared by the shade pass (GLSL) and the CPU tests and builder (src/scene/lights/light_tree.cpp).
 //
 // GLSL includers define WF_LIGHT_TREE_NODE(i), an expression yielding LightTreeNode i; in C++
 // the traversal functions are members of LightTreeTraversal, which reads a vector.

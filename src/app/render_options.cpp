@@ -8,8 +8,8 @@
 #include "errors.h"
 #include "render/samplers.h"
 #include "scene/default_camera.h"
-#include "scene/environment_map.h"
-#include "scene/light_table.h"
+#include "scene/lights/environment_map.h"
+#include "scene/lights/light_table.h"
 #include "scene/gltf/gltf_loader.h"
 
 namespace wf {

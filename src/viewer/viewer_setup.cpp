@@ -7,7 +7,7 @@
 
 #include "render/samplers.h"
 #include "scene/default_camera.h"
-#include "scene/environment_map.h"
+#include "scene/lights/environment_map.h"
 #include "scene/gltf/gltf_loader.h"
 
 namespace wf {

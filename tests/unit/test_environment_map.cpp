@@ -10,7 +10,7 @@
 #include "errors.h"
 #include "image/exr_io.h"
 #include "scene/default_camera.h"
-#include "scene/environment_map.h"
+#include "scene/lights/environment_map.h"
 
 namespace wf {
 namespace {

@@ -2,7 +2,7 @@
 // table, equals its power share; zero-area and black triangles are never emitters.
 #include <gtest/gtest.h>
 
-#include "scene/light_table.h"
+#include "scene/lights/light_table.h"
 
 namespace wf {
 namespace {

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "chi_square.h"
-#include "scene/light_tree.h"
+#include "scene/lights/light_tree.h"
 
 namespace wf {
 namespace {

@@ -1,6 +1,6 @@
-#include "scene/light_table.h"
+#include "scene/lights/light_table.h"
 
-#include "scene/emission_mean.h"
+#include "scene/lights/emission_mean.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "scene/emission_mean.h"
+#include "scene/lights/emission_mean.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 #pragma once
 #include <vector>
 
-#include "scene/light_table.h"
+#include "scene/lights/light_table.h"
 #include "shaders/shared/light_tree.h"
 
 namespace wf {

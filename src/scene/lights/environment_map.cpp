@@ -1,4 +1,4 @@
-#include "scene/environment_map.h"
+#include "scene/lights/environment_map.h"
 
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>

@@ -1,4 +1,4 @@
-#include "scene/light_tree.h"
+#include "scene/lights/light_tree.h"
 
 #include <algorithm>
 #include <chrono>
