@@ -1,5 +1,5 @@
 // `bluenoise`: the Sobol (0, 2)-sequence of sampler_sobol.h, digitally shifted per pixel by keys
-// read from a blue-noise mask (a void-and-cluster rank mask, src/render/blue_noise.cpp), in the
+// read from a blue-noise mask (a void-and-cluster rank mask, src/render/samplers/blue_noise.cpp), in the
 // spirit of Heitz et al., "A Low-Discrepancy Sampler that Distributes Monte Carlo Errors as a
 // Blue Noise in Screen Space" (2019): there, optimised per-pixel scrambling keys; here, the
 // mask's ranks as the keys' leading bits.

@@ -1,6 +1,6 @@
 // The sampler table: one read-only array of uints that the table-driven samplers read (the
 // set size of the finite-set samplers, the primes of Halton and Hammersley, the blue-noise
-// mask). The host builds it (src/render/sampler_tables.cpp: a sieve and a void-and-cluster
+// mask). The host builds it (src/render/samplers/sampler_tables.cpp: a sieve and a void-and-cluster
 // generator, both run at start-up, nothing stored) and binds it only for samplers that read
 // it (WF_SAMPLER_TABLES). The C++ side reads the same numbers through samplerTable().
 #ifndef WF_SAMPLER_TABLES_H

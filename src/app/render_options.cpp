@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "errors.h"
-#include "render/samplers.h"
+#include "render/samplers/samplers.h"
 #include "scene/default_camera.h"
 #include "scene/lights/environment_map.h"
 #include "scene/lights/light_table.h"

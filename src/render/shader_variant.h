@@ -4,7 +4,7 @@
 #include <string>
 
 #include "gpu/shader_compiler.h"
-#include "render/samplers.h"
+#include "render/samplers/samplers.h"
 #include "render/surface_buffers.h"
 #include "render/table_pages.h"
 

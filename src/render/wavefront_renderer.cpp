@@ -16,7 +16,7 @@
 #include "passes/shade_pass.h"
 #include "passes/shadow_pass.h"
 #include "render/path_buffers.h"
-#include "render/sampler_tables.h"
+#include "render/samplers/sampler_tables.h"
 #include "render/scene_buffers.h"
 #include "render/workgroup.h"
 #include "shaders/shared/render_types.h"

@@ -11,7 +11,7 @@
 
 #include "gpu/context.h"
 #include "gpu/vk_check.h"
-#include "render/samplers.h"
+#include "render/samplers/samplers.h"
 #include "render/wavefront_renderer.h"
 
 namespace wf {

@@ -10,7 +10,7 @@
 
 #include "errors.h"
 #include "gpu/context.h"
-#include "render/samplers.h"
+#include "render/samplers/samplers.h"
 #include "viewer/camera_controller.h"
 #include "viewer/camera_list.h"
 #include "viewer/frame_presenter.h"

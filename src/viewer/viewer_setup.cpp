@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "render/samplers.h"
+#include "render/samplers/samplers.h"
 #include "scene/default_camera.h"
 #include "scene/lights/environment_map.h"
 #include "scene/gltf/gltf_loader.h"

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "render/samplers.h"
+#include "render/samplers/samplers.h"
 #include "shaders/shared/rng.h"
 
 namespace wf::test {

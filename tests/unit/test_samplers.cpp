@@ -8,8 +8,8 @@
 #include <set>
 #include <vector>
 
-#include "render/blue_noise.h"
-#include "render/sampler_tables.h"
+#include "render/samplers/blue_noise.h"
+#include "render/samplers/sampler_tables.h"
 #include "sampler_test_util.h"
 
 namespace wf::test {

@@ -1,4 +1,4 @@
-#include "render/blue_noise.h"
+#include "render/samplers/blue_noise.h"
 
 #include <cmath>
 #include <cstdint>

@@ -1,8 +1,8 @@
-#include "render/sampler_tables.h"
+#include "render/samplers/sampler_tables.h"
 
 #include <algorithm>
 
-#include "render/blue_noise.h"
+#include "render/samplers/blue_noise.h"
 #include "shaders/shared/sampler_tables.h"
 
 namespace wf {

@@ -1,4 +1,4 @@
-#include "render/samplers.h"
+#include "render/samplers/samplers.h"
 
 #include "errors.h"
 
