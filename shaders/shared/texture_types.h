@@ -1,7 +1,7 @@
 // Per-triangle vertex attributes and textures as the GPU reads them: uint texel buffers that
 // surface_bindings.glsl unpacks into these structs, so each struct is a whole number of texels
 // (WF_*_TEXELS, asserted below). Every buffer here exists only for scenes that use it (see
-// src/render/surface_buffers.cpp): a scene without textures has no texel, texture-reference or
+// src/render/gpu_scene/surface_buffers.cpp): a scene without textures has no texel, texture-reference or
 // UV buffer, one without smooth normals no normal buffer. Included by C++ and GLSL; the C++
 // side asserts the layout.
 #ifndef WF_TEXTURE_TYPES_H

@@ -15,7 +15,7 @@
 #include "errors.h"
 #include "gpu/context.h"
 #include "image/atomic_file.h"
-#include "render/scene_buffers.h"
+#include "render/gpu_scene/scene_buffers.h"
 #include "render/wavefront_renderer.h"
 
 namespace wf {

@@ -16,7 +16,7 @@
 #include "gpu/context.h"
 #include "image/exr_io.h"
 #include "render/convergence_summary.h"
-#include "render/scene_buffers.h"
+#include "render/gpu_scene/scene_buffers.h"
 
 extern char** environ;
 

@@ -17,7 +17,7 @@
 #include "gpu/context.h"
 #include "image/render_parts.h"
 #include "render/adaptive_sampling.h"
-#include "render/scene_buffers.h"
+#include "render/gpu_scene/scene_buffers.h"
 #include "render/wavefront_renderer.h"
 #include "scene/scene_summary.h"
 

@@ -5,7 +5,7 @@
 #include <cstdio>
 
 #include "errors.h"
-#include "render/scene_buffers.h"
+#include "render/gpu_scene/scene_buffers.h"
 #include "render/shade_kinds.h"
 #include "render/wavefront_renderer.h"
 #include "render/workgroup.h"

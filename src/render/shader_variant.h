@@ -5,8 +5,8 @@
 
 #include "gpu/shader_compiler.h"
 #include "render/samplers/samplers.h"
-#include "render/surface_buffers.h"
-#include "render/table_pages.h"
+#include "render/gpu_scene/surface_buffers.h"
+#include "render/gpu_scene/table_pages.h"
 
 namespace wf {
 

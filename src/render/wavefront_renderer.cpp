@@ -17,7 +17,7 @@
 #include "passes/shadow_pass.h"
 #include "render/path_buffers.h"
 #include "render/samplers/sampler_tables.h"
-#include "render/scene_buffers.h"
+#include "render/gpu_scene/scene_buffers.h"
 #include "render/workgroup.h"
 #include "shaders/shared/render_types.h"
 #include "shaders/shared/sampler_tables.h"

@@ -4,7 +4,7 @@
 #include <chrono>
 
 #include "gpu/buffer.h"
-#include "render/scene_buffers.h"
+#include "render/gpu_scene/scene_buffers.h"
 
 namespace wf {
 

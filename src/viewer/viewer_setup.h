@@ -5,7 +5,7 @@
 #include <string>
 
 #include "gpu/context.h"
-#include "render/scene_buffers.h"
+#include "render/gpu_scene/scene_buffers.h"
 #include "viewer/camera_list.h"
 #include "viewer/viewer.h"
 #include "viewer/window.h"

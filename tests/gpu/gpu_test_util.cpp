@@ -5,7 +5,7 @@
 #include <cmath>
 #include <memory>
 
-#include "render/scene_buffers.h"
+#include "render/gpu_scene/scene_buffers.h"
 
 namespace wf::test {
 

@@ -25,7 +25,7 @@
 #include "compressed_copy.h"
 #include "gpu_test_util.h"
 #include "image/error_metrics.h"
-#include "render/scene_buffers.h"
+#include "render/gpu_scene/scene_buffers.h"
 #include "render/shader_variant.h"
 #include "scene/gltf/gltf_loader.h"
 

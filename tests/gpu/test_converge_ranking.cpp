@@ -11,7 +11,7 @@
 
 #include "gpu_test_util.h"
 #include "render/convergence_summary.h"
-#include "render/scene_buffers.h"
+#include "render/gpu_scene/scene_buffers.h"
 #include "scene/gltf/gltf_loader.h"
 
 namespace wf::test {

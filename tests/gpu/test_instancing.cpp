@@ -9,7 +9,7 @@
 
 #include "gpu_test_util.h"
 #include "instanced_scene.h"
-#include "render/scene_buffers.h"
+#include "render/gpu_scene/scene_buffers.h"
 #include "image/png_writer.h"
 #include "render/shader_variant.h"
 #include "scene/gltf/gltf_loader.h"

@@ -10,7 +10,7 @@
 
 #include "gpu_test_util.h"
 #include "image/error_metrics.h"
-#include "render/scene_buffers.h"
+#include "render/gpu_scene/scene_buffers.h"
 #include "scene/gltf/gltf_loader.h"
 
 namespace wf {

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "gpu_test_util.h"
-#include "render/scene_buffers.h"
+#include "render/gpu_scene/scene_buffers.h"
 #include "scene/gltf/gltf_loader.h"
 
 namespace wf::test {

@@ -14,7 +14,7 @@
 #include "analytic_scenes.h"
 #include "gpu_test_util.h"
 #include "instanced_scene.h"
-#include "render/scene_buffers.h"
+#include "render/gpu_scene/scene_buffers.h"
 #include "scene/gltf/gltf_loader.h"
 
 namespace wf::test {

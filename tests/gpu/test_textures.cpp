@@ -8,7 +8,7 @@
 #include <cstring>
 
 #include "gpu_test_util.h"
-#include "render/scene_buffers.h"
+#include "render/gpu_scene/scene_buffers.h"
 #include "scene/gltf/gltf_loader.h"
 #include "scene/gltf/gltf_materials.h"
 

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "gpu_test_util.h"
-#include "render/scene_buffers.h"
+#include "render/gpu_scene/scene_buffers.h"
 
 namespace wf::test {
 namespace {

@@ -1,4 +1,4 @@
-#include "render/table_pages.h"
+#include "render/gpu_scene/table_pages.h"
 
 #include "errors.h"
 #include "shaders/shared/scene_types.h"

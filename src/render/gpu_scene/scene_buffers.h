@@ -10,7 +10,7 @@
 #include "scene/lights/light_table.h"
 #include "scene/lights/light_tree.h"
 #include "render/shader_variant.h"
-#include "render/surface_buffers.h"
+#include "render/gpu_scene/surface_buffers.h"
 #include "scene/scene.h"
 
 namespace wf {

@@ -1,4 +1,4 @@
-#include "render/surface_buffers.h"
+#include "render/gpu_scene/surface_buffers.h"
 
 #include <algorithm>
 #include <cstdio>

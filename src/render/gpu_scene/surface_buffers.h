@@ -11,7 +11,7 @@
 
 #include "gpu/buffer.h"
 #include "gpu/compute_program.h"
-#include "render/table_pages.h"
+#include "render/gpu_scene/table_pages.h"
 #include "scene/scene.h"
 
 namespace wf {

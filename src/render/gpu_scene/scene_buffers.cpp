@@ -1,11 +1,11 @@
-#include "render/scene_buffers.h"
+#include "render/gpu_scene/scene_buffers.h"
 
 #include <cstring>
 
 #include "render/shade_kinds.h"
 #include "scene/bvh/bvh_tuning.h"
 #include "scene/bvh/instance_bvh.h"
-#include "render/table_pages.h"
+#include "render/gpu_scene/table_pages.h"
 #include "shaders/shared/render_types.h"
 #include "shaders/shared/sheen.h"
 
