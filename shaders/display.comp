@@ -6,7 +6,7 @@
 // the host copies into the image the overlay draws on.
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = 64) in;
-#include "display_types.h"
+#include "types/display_types.h"
 
 layout(std430, binding = 0) readonly buffer FilmBuffer {
     vec4 film[];

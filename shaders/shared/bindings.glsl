@@ -13,9 +13,9 @@
 #define WfEntry vec4
 #define WfUintEntry uvec4
 #endif
-#include "scene_types.h"
-#include "render_types.h"
-#include "light_types.h"
+#include "types/scene_types.h"
+#include "types/render_types.h"
+#include "types/light_types.h"
 
 #include "scene_tables.glsl"
 // A uniform buffer: every invocation reads the same words (std140 lays RenderParams out as

@@ -27,7 +27,7 @@
 #define WF_BVH_TRAVERSE_H
 
 #include "geometry.h"
-#include "scene_types.h"
+#include "types/scene_types.h"
 
 #ifndef WF_BVH_STACK_SIZE
 #define WF_BVH_STACK_SIZE 64

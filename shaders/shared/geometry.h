@@ -4,7 +4,7 @@
 #ifndef WF_GEOMETRY_H
 #define WF_GEOMETRY_H
 
-#include "glsl_cpp.h"
+#include "types/glsl_cpp.h"
 
 #ifdef __cplusplus
 namespace wf::gpu_types {

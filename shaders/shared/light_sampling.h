@@ -4,7 +4,7 @@
 #ifndef WF_LIGHT_SAMPLING_H
 #define WF_LIGHT_SAMPLING_H
 
-#include "glsl_cpp.h"
+#include "types/glsl_cpp.h"
 #include "sampling.h"
 
 #ifdef __cplusplus

@@ -13,8 +13,8 @@
 #ifndef WF_LIGHT_TREE_H
 #define WF_LIGHT_TREE_H
 
-#include "glsl_cpp.h"
-#include "light_types.h"
+#include "types/glsl_cpp.h"
+#include "types/light_types.h"
 
 #ifdef __cplusplus
 #include <vector>

@@ -15,7 +15,7 @@
 #ifndef WF_RAY_CONES_H
 #define WF_RAY_CONES_H
 
-#include "glsl_cpp.h"
+#include "types/glsl_cpp.h"
 
 #ifdef __cplusplus
 namespace wf::gpu_types {

@@ -21,7 +21,7 @@
 #ifndef WF_RNG_H
 #define WF_RNG_H
 
-#include "glsl_cpp.h"
+#include "types/glsl_cpp.h"
 #include "sampler_common.h"
 
 // The sampler is chosen at compile time (WF_SAMPLER, shader_variant.cpp); C++ code that does

@@ -6,7 +6,7 @@
 #ifndef WF_SAMPLER_TABLES_H
 #define WF_SAMPLER_TABLES_H
 
-#include "glsl_cpp.h"
+#include "types/glsl_cpp.h"
 
 #define WF_BINDING_SAMPLER_TABLES 32
 

@@ -6,7 +6,7 @@
 // binds no texel, texture-reference or UV buffer. Include after bindings.glsl.
 #ifndef WF_SURFACE_BINDINGS_GLSL
 #define WF_SURFACE_BINDINGS_GLSL
-#include "texture_types.h"
+#include "types/texture_types.h"
 
 // The per-triangle arrays are paged where the triangles are (WF_TRIANGLE_PAGES), so that one
 // page index serves them all.

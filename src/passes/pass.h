@@ -6,7 +6,7 @@
 
 #include "gpu/compute_program.h"
 #include "gpu/shader_compiler.h"
-#include "shaders/shared/render_types.h"
+#include "shaders/types/render_types.h"
 
 namespace wf {
 

@@ -1,6 +1,6 @@
 #include "render/path_buffers.h"
 
-#include "shaders/shared/render_types.h"
+#include "shaders/types/render_types.h"
 
 namespace wf {
 

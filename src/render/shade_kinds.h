@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "shaders/shared/scene_types.h"
+#include "shaders/types/scene_types.h"
 
 namespace wf {
 

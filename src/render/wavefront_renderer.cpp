@@ -19,7 +19,7 @@
 #include "render/samplers/sampler_tables.h"
 #include "render/gpu_scene/scene_buffers.h"
 #include "render/workgroup.h"
-#include "shaders/shared/render_types.h"
+#include "shaders/types/render_types.h"
 #include "shaders/shared/sampler_tables.h"
 
 namespace wf {

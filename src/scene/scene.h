@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "scene/surface_data.h"
-#include "shaders/shared/light_types.h"
-#include "shaders/shared/scene_types.h"
+#include "shaders/types/light_types.h"
+#include "shaders/types/scene_types.h"
 
 namespace wf {
 

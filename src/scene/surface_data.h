@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "shaders/shared/texture_types.h"
+#include "shaders/types/texture_types.h"
 
 namespace wf {
 

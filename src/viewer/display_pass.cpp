@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "gpu/buffer.h"
-#include "shaders/shared/display_types.h"
+#include "shaders/types/display_types.h"
 
 namespace wf {
 

@@ -11,7 +11,7 @@
 
 #include "gpu_test_util.h"
 #include "scene/gltf/gltf_loader.h"
-#include "shaders/shared/render_types.h"
+#include "shaders/types/render_types.h"
 
 namespace wf::test {
 namespace {

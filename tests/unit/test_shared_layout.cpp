@@ -9,10 +9,10 @@
 #include <glslang/Public/ShaderLang.h>
 #include <gtest/gtest.h>
 
-#include "shaders/shared/render_types.h"
-#include "shaders/shared/light_types.h"
-#include "shaders/shared/scene_types.h"
-#include "shaders/shared/texture_types.h"
+#include "shaders/types/render_types.h"
+#include "shaders/types/light_types.h"
+#include "shaders/types/scene_types.h"
+#include "shaders/types/texture_types.h"
 
 namespace wf {
 namespace {
@@ -21,10 +21,10 @@ using namespace gpu_types;
 
 std::map<std::string, int> reflectedOffsets() {
     const char* source = R"(#version 460
-#include "scene_types.h"
-#include "render_types.h"
-#include "light_types.h"
-#include "texture_types.h"
+#include "types/scene_types.h"
+#include "types/render_types.h"
+#include "types/light_types.h"
+#include "types/texture_types.h"
 layout(local_size_x = 1) in;
 layout(std430, binding = 0) buffer B0 {
     Triangle tri; BvhNode node; Material mat; Emitter em; BvhPair pair; };
@@ -76,7 +76,7 @@ void main() {
         shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_5);
         struct Includer : glslang::TShader::Includer {
             IncludeResult* includeLocal(const char* name, const char*, size_t) override {
-                std::string path = std::string(WF_SOURCE_SHADER_DIR) + "/shared/" + name;
+                std::string path = std::string(WF_SOURCE_SHADER_DIR) + "/" + name;
                 FILE* file = std::fopen(path.c_str(), "rb");
                 if (!file)
                     return nullptr;

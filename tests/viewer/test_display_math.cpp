@@ -1,4 +1,4 @@
-// The display pass's tone curves on the CPU (shaders/shared/display_types.h is compiled here
+// The display pass's tone curves on the CPU (shaders/types/display_types.h is compiled here
 // exactly as display.comp uses it): linear at 0 EV is the PNG preview's mapping, ACES is
 // monotonic with a highlight roll-off, and empty or non-finite pixels show black.
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "image/png_writer.h"
-#include "shaders/shared/display_types.h"
+#include "shaders/types/display_types.h"
 
 namespace wf {
 namespace {

@@ -6,7 +6,7 @@
 #include "scene/bvh/bvh_tuning.h"
 #include "scene/bvh/instance_bvh.h"
 #include "render/gpu_scene/table_pages.h"
-#include "shaders/shared/render_types.h"
+#include "shaders/types/render_types.h"
 #include "shaders/shared/sheen.h"
 
 namespace wf {

@@ -1,7 +1,7 @@
 #include "render/gpu_scene/table_pages.h"
 
 #include "errors.h"
-#include "shaders/shared/scene_types.h"
+#include "shaders/types/scene_types.h"
 
 namespace wf {
 

@@ -18,7 +18,7 @@
 #ifndef WF_RENDER_TYPES_H
 #define WF_RENDER_TYPES_H
 
-#include "glsl_cpp.h"
+#include "types/glsl_cpp.h"
 
 #ifdef __cplusplus
 namespace wf::gpu_types {

@@ -7,7 +7,7 @@
 #ifndef WF_TEXTURE_TYPES_H
 #define WF_TEXTURE_TYPES_H
 
-#include "glsl_cpp.h"
+#include "types/glsl_cpp.h"
 
 // Per-scene switches (src/render/shader_variant.cpp); off unless the host turns them on.
 #ifndef WF_HAS_TEXTURES

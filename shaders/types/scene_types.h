@@ -3,7 +3,7 @@
 #ifndef WF_SCENE_TYPES_H
 #define WF_SCENE_TYPES_H
 
-#include "glsl_cpp.h"
+#include "types/glsl_cpp.h"
 
 #ifdef __cplusplus
 namespace wf::gpu_types {

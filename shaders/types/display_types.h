@@ -5,7 +5,7 @@
 #ifndef WF_DISPLAY_TYPES_H
 #define WF_DISPLAY_TYPES_H
 
-#include "glsl_cpp.h"
+#include "types/glsl_cpp.h"
 
 #ifdef __cplusplus
 namespace wf::gpu_types {
