@@ -1,12 +1,12 @@
-// Writes shaders/shared/sheen_albedo_table.h: upper bounds of the sheen lobe's directional
+// Writes shaders/bsdf/sheen_albedo_table.h: upper bounds of the sheen lobe's directional
 // albedo (sheen.h) for sheenAlbedoBound. The albedo is integrated on a grid 8x finer in
 // sqrt(mu) and 4x finer in roughness than the table; each node takes the largest value of the
 // cells that touch it, plus a margin for the quadrature's error, so the bilinear interpolant
 // bounds the albedo everywhere. Build and run from the repository root:
 //   g++ -std=c++17 -O2 -I. scripts/sheen_albedo_table.cpp -o /tmp/sheen_table &&
-//   /tmp/sheen_table > shaders/shared/sheen_albedo_table.h
+//   /tmp/sheen_table > shaders/bsdf/sheen_albedo_table.h
 #define WF_SHEEN_NO_TABLE
-#include "shaders/shared/sheen.h"
+#include "shaders/bsdf/sheen.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -11,7 +11,7 @@ layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "rng.h"
 #include "sampling.h"
 #include "light_sampling.h"
-#include "bsdf.h"
+#include "bsdf/bsdf.h"
 #include "surface.glsl"
 #include "lights.glsl"
 #include "path_vertex.glsl"

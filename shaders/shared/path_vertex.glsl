@@ -12,7 +12,7 @@
 #endif
 #if (WF_HAS_CLEARCOAT || WF_HAS_SHEEN) && !WF_BSDF_NO_LAYERS
 #define WF_BSDF_LAYERS 1
-#include "bsdf_layers.h"
+#include "bsdf/bsdf_layers.h"
 #else
 #define WF_BSDF_LAYERS 0
 #endif

@@ -83,7 +83,7 @@ BvhPair bvhPairAt(uint index) {
 }
 
 #if WF_HAS_SHEEN
-#include "sheen_albedo_table.h"
+#include "bsdf/sheen_albedo_table.h"
 // The sheen albedo table (sheen.h) rides at the front of the material table, four nodes a texel.
 #define WF_MATERIAL_TABLE_START WF_SHEEN_TABLE_TEXELS
 float sheenAlbedoNode(int k) {

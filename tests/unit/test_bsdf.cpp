@@ -1,4 +1,4 @@
-// Tests of the shared glTF BSDF (shaders/shared/bsdf.h) on the CPU, exactly as the shade pass
+// Tests of the shared glTF BSDF (shaders/bsdf/bsdf.h) on the CPU, exactly as the shade pass
 // runs it: sampled directions against bsdfPdf (chi-square over the whole sphere), sample weights
 // against eval / pdf, reciprocity, energy, the Dirac lobes and numerical robustness.
 #include <gtest/gtest.h>
@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "shaders/shared/bsdf.h"
+#include "shaders/bsdf/bsdf.h"
 #include "tests/unit/chi_square.h"
 
 namespace {

@@ -1,4 +1,4 @@
-// Tests of the clearcoat and sheen layers (shaders/shared/bsdf_layers.h, sheen.h) on the CPU,
+// Tests of the clearcoat and sheen layers (shaders/bsdf/bsdf_layers.h, sheen.h) on the CPU,
 // as the shade pass runs them: sampled directions against layeredPdf (chi-square over the
 // sphere), weights against eval / pdf, reciprocity, white furnaces at full strength over white
 // bases, the tabulated sheen albedo bound against quadrature, and no layer = the base exactly.
@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "shaders/shared/bsdf_layers.h"
+#include "shaders/bsdf/bsdf_layers.h"
 #include "tests/unit/chi_square.h"
 
 namespace {

@@ -7,7 +7,7 @@
 #include "scene/bvh/instance_bvh.h"
 #include "render/gpu_scene/table_pages.h"
 #include "shaders/types/render_types.h"
-#include "shaders/shared/sheen.h"
+#include "shaders/bsdf/sheen.h"
 
 namespace wf {
 

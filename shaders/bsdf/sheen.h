@@ -61,7 +61,7 @@ WF_INLINE float sheenLobe(float alpha, vec3 wo, vec3 wi) {
 }
 
 #ifndef WF_SHEEN_NO_TABLE
-#include "sheen_albedo_table.h"
+#include "bsdf/sheen_albedo_table.h"
 
 #ifdef __cplusplus
 WF_INLINE float sheenAlbedoNode(int k) { return WF_SHEEN_ALBEDO[k]; }

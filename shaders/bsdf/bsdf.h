@@ -40,7 +40,7 @@
 #ifndef WF_BSDF_H
 #define WF_BSDF_H
 
-#include "microfacet.h"
+#include "bsdf/microfacet.h"
 
 #ifndef WF_BSDF_DIFFUSE_ONLY
 #define WF_BSDF_DIFFUSE_ONLY 0

@@ -26,7 +26,7 @@
 #ifndef WF_BSDF_LAYERS_H
 #define WF_BSDF_LAYERS_H
 
-#include "bsdf.h"
+#include "bsdf/bsdf.h"
 
 #ifdef __cplusplus
 #ifndef WF_HAS_CLEARCOAT
@@ -37,7 +37,7 @@
 #endif
 #endif
 #if WF_HAS_SHEEN
-#include "sheen.h"
+#include "bsdf/sheen.h"
 #endif
 
 #ifdef __cplusplus
