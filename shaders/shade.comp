@@ -15,10 +15,10 @@ layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "geometry.h"
 #include "rng.h"
 #include "sampling.h"
-#include "light_sampling.h"
+#include "lights/light_sampling.h"
 #include "bsdf/bsdf.h"
 #include "surface.glsl"
-#include "lights.glsl"
+#include "lights/lights.glsl"
 #include "path_vertex.glsl"
 #include "wave_paths.glsl"
 

@@ -4,7 +4,7 @@
 #define WF_BVH_TRIANGLE(i) triangleAt(i)
 #define WF_BVH_INSTANCE(i) instanceAt(i)
 #include "bvh_traverse.h"
-#include "light_sampling.h"
+#include "lights/light_sampling.h"
 
 // (t, b1, b2, triangle) as bits, (t, -, -, WF_SPHERE_HIT | light), or w = WF_MISS. In
 // two-level scenes a triangle hit's x holds its instance instead of t (hitDistance).

@@ -1,4 +1,4 @@
-// The light-sampling warps (shaders/shared/light_sampling.h) against their densities:
+// The light-sampling warps (shaders/lights/light_sampling.h) against their densities:
 // spherical triangles uniform in solid angle, cones uniform in solid angle, the equirectangular
 // density integrating to one, and the solid angle formula against brute force.
 #include <random>
@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "chi_square.h"
-#include "shaders/shared/light_sampling.h"
+#include "shaders/lights/light_sampling.h"
 
 namespace wf {
 namespace {

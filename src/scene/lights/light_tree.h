@@ -1,4 +1,4 @@
-// Builds the light tree of shaders/shared/light_tree.h over the light table's emitters that
+// Builds the light tree of shaders/lights/light_tree.h over the light table's emitters that
 // have a place: emissive triangles, sphere, point and spot lights (directional lights and the
 // environment are chosen beside it). Binned SAOH splits (pbrt-v4's: power x the orientation
 // cone's measure x the box's area), one light per leaf.
@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "scene/lights/light_table.h"
-#include "shaders/shared/light_tree.h"
+#include "shaders/lights/light_tree.h"
 
 namespace wf {
 

@@ -40,7 +40,7 @@ uint chooseEmitter(float u) {
 
 #if WF_LIGHT_TREE
 #define WF_LIGHT_TREE_NODE(i) lightTreeNodeAt(i)
-#include "light_tree.h"
+#include "lights/light_tree.h"
 #endif
 
 // The emitter next-event estimation connects p to, and the probability of choosing it there:
