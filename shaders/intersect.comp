@@ -8,7 +8,7 @@
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "bindings.glsl"
-#include "scene_intersect.glsl"
+#include "traversal/scene_intersect.glsl"
 #if WF_SHADE_BINS > 1
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_ballot : require

@@ -7,7 +7,7 @@
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "bindings.glsl"
-#include "geometry.h"
+#include "traversal/geometry.h"
 #include "rng.h"
 #include "sampling.h"
 #include "lights/light_sampling.h"
@@ -15,7 +15,7 @@ layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "surface.glsl"
 #include "lights/lights.glsl"
 #include "path_vertex.glsl"
-#include "scene_intersect.glsl"
+#include "traversal/scene_intersect.glsl"
 #include "wave_paths.glsl"
 #include "camera_ray.glsl"
 #extension GL_KHR_shader_subgroup_arithmetic : require

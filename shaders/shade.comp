@@ -12,7 +12,7 @@
 layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "bindings.glsl"
 #include "queue_append.glsl"
-#include "geometry.h"
+#include "traversal/geometry.h"
 #include "rng.h"
 #include "sampling.h"
 #include "lights/light_sampling.h"

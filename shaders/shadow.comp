@@ -10,7 +10,7 @@ layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #if !WF_HAS_EMITTERS
 #error "the shadow pass exists only for scenes with emitters"
 #endif
-#include "scene_intersect.glsl"
+#include "traversal/scene_intersect.glsl"
 
 void main() {
     uint index = gl_GlobalInvocationID.x;

@@ -10,7 +10,7 @@
 #include "scene/bvh/bvh_cpu.h"
 #include "scene/bvh/bvh_tuning.h"
 #include "scene/gltf/gltf_loader.h"
-#include "shaders/shared/geometry.h"
+#include "shaders/traversal/geometry.h"
 
 namespace {
 

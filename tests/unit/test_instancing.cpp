@@ -9,7 +9,7 @@
 #include "instanced_scene.h"
 #include "scene/gltf/gltf_loader.h"
 #include "scene/bvh/instance_bvh.h"
-#include "shaders/shared/bvh_traverse.h"
+#include "shaders/traversal/bvh_traverse.h"
 
 namespace wf {
 namespace {

@@ -7,7 +7,7 @@
 #include <limits>
 #include <random>
 
-#include "shaders/shared/geometry.h"
+#include "shaders/traversal/geometry.h"
 #include "shaders/shared/sampling.h"
 
 namespace {

@@ -19,7 +19,7 @@
 
 #include "errors.h"
 #include "scene/bvh/bvh_build_boxes.h"
-#include "shaders/shared/bvh_traverse.h"
+#include "shaders/traversal/bvh_traverse.h"
 
 namespace wf {
 namespace {

@@ -1,5 +1,5 @@
 // Binned-SAH BVH over the scene's triangles, flattened depth-first, then paired into the layout
-// that shaders/shared/bvh_traverse.h walks on the GPU and on the CPU.
+// that shaders/traversal/bvh_traverse.h walks on the GPU and on the CPU.
 #pragma once
 #include <cstdint>
 #include <vector>

@@ -8,7 +8,7 @@
 
 #include "scene/bvh/bvh_builder.h"
 #include "scene/scene.h"
-#include "shaders/shared/bvh_traverse.h"
+#include "shaders/traversal/bvh_traverse.h"
 
 namespace wf {
 

@@ -6,7 +6,7 @@
 
 #include "errors.h"
 #include "scene/bvh/bvh_builder.h"
-#include "shaders/shared/bvh_traverse.h"
+#include "shaders/traversal/bvh_traverse.h"
 
 namespace wf {
 

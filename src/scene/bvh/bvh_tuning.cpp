@@ -7,7 +7,7 @@
 #include <random>
 
 #include "scene/bvh/bvh_cpu.h"
-#include "shaders/shared/geometry.h"
+#include "shaders/traversal/geometry.h"
 #include "shaders/shared/sampling.h"
 
 namespace wf {

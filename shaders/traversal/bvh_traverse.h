@@ -26,7 +26,7 @@
 #ifndef WF_BVH_TRAVERSE_H
 #define WF_BVH_TRAVERSE_H
 
-#include "geometry.h"
+#include "traversal/geometry.h"
 #include "types/scene_types.h"
 
 #ifndef WF_BVH_STACK_SIZE

@@ -3,7 +3,7 @@
 #define WF_BVH_PAIR(i) bvhPairAt(i)
 #define WF_BVH_TRIANGLE(i) triangleAt(i)
 #define WF_BVH_INSTANCE(i) instanceAt(i)
-#include "bvh_traverse.h"
+#include "traversal/bvh_traverse.h"
 #include "lights/light_sampling.h"
 
 // (t, b1, b2, triangle) as bits, (t, -, -, WF_SPHERE_HIT | light), or w = WF_MISS. In
