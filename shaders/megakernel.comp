@@ -8,8 +8,8 @@
 layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "bindings.glsl"
 #include "traversal/geometry.h"
-#include "rng.h"
-#include "sampling.h"
+#include "sampling/rng.h"
+#include "sampling/sampling.h"
 #include "lights/light_sampling.h"
 #include "bsdf/bsdf.h"
 #include "surface.glsl"

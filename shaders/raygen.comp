@@ -7,8 +7,8 @@
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "bindings.glsl"
-#include "rng.h"
-#include "sampling.h"
+#include "sampling/rng.h"
+#include "sampling/sampling.h"
 #include "wave_paths.glsl"
 #include "camera_ray.glsl"
 #include "ray_cones.glsl"

@@ -5,7 +5,7 @@
 #ifndef WF_MICROFACET_H
 #define WF_MICROFACET_H
 
-#include "sampling.h"
+#include "sampling/sampling.h"
 
 #ifdef __cplusplus
 namespace wf::gpu_types {

@@ -10,7 +10,7 @@
 #ifndef WF_SHEEN_H
 #define WF_SHEEN_H
 
-#include "sampling.h"
+#include "sampling/sampling.h"
 
 #ifdef __cplusplus
 namespace wf::gpu_types {

@@ -5,7 +5,7 @@
 #define WF_LIGHT_SAMPLING_H
 
 #include "types/glsl_cpp.h"
-#include "sampling.h"
+#include "sampling/sampling.h"
 
 #ifdef __cplusplus
 namespace wf::gpu_types {

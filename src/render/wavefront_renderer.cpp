@@ -20,7 +20,7 @@
 #include "render/gpu_scene/scene_buffers.h"
 #include "render/workgroup.h"
 #include "shaders/types/render_types.h"
-#include "shaders/shared/sampler_tables.h"
+#include "shaders/sampling/sampler_tables.h"
 
 namespace wf {
 

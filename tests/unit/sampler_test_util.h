@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "render/samplers/samplers.h"
-#include "shaders/shared/rng.h"
+#include "shaders/sampling/rng.h"
 
 namespace wf::test {
 

@@ -12,7 +12,7 @@
 
 #include "scene/bvh/bvh_builder.h"
 #include "scene/bvh/bvh_cpu.h"
-#include "shaders/shared/sampling.h"
+#include "shaders/sampling/sampling.h"
 
 namespace {
 

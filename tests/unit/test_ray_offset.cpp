@@ -8,7 +8,7 @@
 #include <random>
 
 #include "shaders/traversal/geometry.h"
-#include "shaders/shared/sampling.h"
+#include "shaders/sampling/sampling.h"
 
 namespace {
 

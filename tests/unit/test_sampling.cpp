@@ -1,4 +1,4 @@
-// Chi-square goodness-of-fit tests of the shared warps (shaders/shared/sampling.h) against the
+// Chi-square goodness-of-fit tests of the shared warps (shaders/sampling/sampling.h) against the
 // densities the renderer divides by, plus negative controls proving the test can fail.
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "chi_square.h"
-#include "shaders/shared/sampling.h"
+#include "shaders/sampling/sampling.h"
 
 namespace {
 

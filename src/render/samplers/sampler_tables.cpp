@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "render/samplers/blue_noise.h"
-#include "shaders/shared/sampler_tables.h"
+#include "shaders/sampling/sampler_tables.h"
 
 namespace wf {
 

@@ -1,4 +1,4 @@
-// Host side of the sampler table (shaders/shared/sampler_tables.h): its contents, generated at
+// Host side of the sampler table (shaders/sampling/sampler_tables.h): its contents, generated at
 // start-up (a prime sieve and the void-and-cluster mask, about 60 ms, once per
 // process), and the GPU buffer that the table-driven samplers read.
 #pragma once

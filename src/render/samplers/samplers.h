@@ -1,11 +1,11 @@
-// The sample patterns behind sample1D/sample2D (shaders/shared/rng.h and sampler_*.h), as the
+// The sample patterns behind sample1D/sample2D (shaders/sampling/rng.h and sampler_*.h), as the
 // host names and configures them: `--sampler NAME`, `--no-randomize`, finite sets.
 #pragma once
 #include <cstdint>
 #include <string>
 #include <vector>
 
-#include "shaders/shared/sampler_common.h"
+#include "shaders/sampling/sampler_common.h"
 
 namespace wf {
 

@@ -8,7 +8,7 @@
 
 #include "scene/bvh/bvh_cpu.h"
 #include "shaders/traversal/geometry.h"
-#include "shaders/shared/sampling.h"
+#include "shaders/sampling/sampling.h"
 
 namespace wf {
 namespace {

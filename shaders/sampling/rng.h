@@ -22,7 +22,7 @@
 #define WF_RNG_H
 
 #include "types/glsl_cpp.h"
-#include "sampler_common.h"
+#include "sampling/sampler_common.h"
 
 // The sampler is chosen at compile time (WF_SAMPLER, shader_variant.cpp); C++ code that does
 // not choose gets `independent`. The CPU tests call each sampler's functions directly.
@@ -35,12 +35,12 @@
 // Samplers that read the sampler table (set size, primes, blue-noise mask): the host binds it.
 #define WF_SAMPLER_TABLES (WF_SAMPLER != WF_SAMPLER_INDEPENDENT && WF_SAMPLER != WF_SAMPLER_SOBOL)
 
-#include "sampler_sobol.h"
-#include "sampler_stratified.h"
-#include "sampler_tables.h"
+#include "sampling/sampler_sobol.h"
+#include "sampling/sampler_stratified.h"
+#include "sampling/sampler_tables.h"
 #if defined(__cplusplus) || WF_SAMPLER_TABLES
-#include "sampler_radical_inverse.h"
-#include "sampler_blue_noise.h"
+#include "sampling/sampler_radical_inverse.h"
+#include "sampling/sampler_blue_noise.h"
 #endif
 
 #ifdef __cplusplus

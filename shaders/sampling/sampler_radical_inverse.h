@@ -13,8 +13,8 @@
 #ifndef WF_SAMPLER_RADICAL_INVERSE_H
 #define WF_SAMPLER_RADICAL_INVERSE_H
 
-#include "sampler_common.h"
-#include "sampler_tables.h"
+#include "sampling/sampler_common.h"
+#include "sampling/sampler_tables.h"
 
 #ifdef __cplusplus
 namespace wf::gpu_types {

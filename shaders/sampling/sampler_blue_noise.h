@@ -15,8 +15,8 @@
 #ifndef WF_SAMPLER_BLUE_NOISE_H
 #define WF_SAMPLER_BLUE_NOISE_H
 
-#include "sampler_sobol.h"
-#include "sampler_tables.h"
+#include "sampling/sampler_sobol.h"
+#include "sampling/sampler_tables.h"
 
 #ifdef __cplusplus
 namespace wf::gpu_types {

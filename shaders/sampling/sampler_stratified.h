@@ -13,7 +13,7 @@
 #ifndef WF_SAMPLER_STRATIFIED_H
 #define WF_SAMPLER_STRATIFIED_H
 
-#include "sampler_common.h"
+#include "sampling/sampler_common.h"
 
 #ifdef __cplusplus
 namespace wf::gpu_types {

@@ -12,7 +12,7 @@
 #ifndef WF_SAMPLER_SOBOL_H
 #define WF_SAMPLER_SOBOL_H
 
-#include "sampler_common.h"
+#include "sampling/sampler_common.h"
 
 #ifdef __cplusplus
 namespace wf::gpu_types {
