@@ -11,7 +11,7 @@ layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "sampling/sampling.h"
 #include "wave_paths.glsl"
 #include "camera_ray.glsl"
-#include "ray_cones.glsl"
+#include "surface/ray_cones.glsl"
 
 layout(push_constant) uniform Push { PassConstants pass; };
 

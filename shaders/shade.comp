@@ -17,7 +17,7 @@ layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "sampling/sampling.h"
 #include "lights/light_sampling.h"
 #include "bsdf/bsdf.h"
-#include "surface.glsl"
+#include "surface/surface.glsl"
 #include "lights/lights.glsl"
 #include "path_vertex.glsl"
 #include "wave_paths.glsl"

@@ -4,7 +4,7 @@
 // trace the same paths. Includers provide bindings, geometry, rng, sampling, light_sampling,
 // bsdf, lights and surface.
 // Estimator: WF_LIGHT_SAMPLING 0 = BSDF sampling only, 1 = NEE only, 2 = MIS (power heuristic).
-#include "ray_cones.glsl"
+#include "surface/ray_cones.glsl"
 // Scenes with a clear coat or sheen shade with bsdf_layers.h's layered BSDF instead of bsdf.h's,
 // except in the shade passes of kinds that hold no layered material (WF_BSDF_NO_LAYERS).
 #ifndef WF_BSDF_NO_LAYERS

@@ -34,7 +34,7 @@
 #endif
 
 #if !defined(__cplusplus) && WF_HAS_ALPHA_MASK && !defined(WF_ALPHA_PASSES_DEFINED)
-#include "alpha_mask.glsl"
+#include "surface/alpha_mask.glsl"
 #endif
 
 #ifndef WF_BVH_REGISTER_STACK

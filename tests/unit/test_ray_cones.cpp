@@ -1,4 +1,4 @@
-// Ray-cone texture LOD (shaders/shared/ray_cones.h, as the shaders run it) against the level a
+// Ray-cone texture LOD (shaders/surface/ray_cones.h, as the shaders run it) against the level a
 // rasteriser's rule picks from exact screen-space derivatives: a textured plane at a known
 // distance and tilt, seen through the image's centre pixel, gets that level within 0.5.
 #include <gtest/gtest.h>
@@ -7,7 +7,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "shaders/shared/ray_cones.h"
+#include "shaders/surface/ray_cones.h"
 
 namespace wf {
 namespace {

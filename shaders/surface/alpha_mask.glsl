@@ -7,7 +7,7 @@
 // alpha = baseColorFactor.a x baseColorTexture.a; vertex colours are not read.
 #ifndef WF_ALPHA_MASK_GLSL
 #define WF_ALPHA_MASK_GLSL
-#include "textures.glsl"
+#include "surface/textures.glsl"
 
 uint alphaHash(uvec4 v) {
     // Two rounds of a 32-bit integer mix (Jarzynski and Olano's PCG-style hash, folded).

@@ -3,7 +3,7 @@
 #ifndef WF_RAY_CONES_GLSL
 #define WF_RAY_CONES_GLSL
 #if WF_RAY_CONES
-#include "ray_cones.h"
+#include "surface/ray_cones.h"
 
 vec2 cameraCone() { return cameraCone(params.tanHalfFovY, params.height); }
 

@@ -103,7 +103,7 @@ vec4 sampleTriangleTexture(uint refIndex, uint triangle, float b1, float b2) {
 }
 
 #if WF_RAY_CONES
-#include "ray_cones.h"
+#include "surface/ray_cones.h"
 
 // The level below `level`: max(1, width >> 1) x max(1, height >> 1), right after it.
 MipLevel nextLevel(MipLevel level) {

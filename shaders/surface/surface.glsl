@@ -7,7 +7,7 @@
 // metalness, G roughness; colour textures are sRGB-decoded in textures.glsl), and
 // WF_HAS_SPECULAR_TEXTURES the KHR_materials_specular maps. WF_HAS_CLEARCOAT, WF_HAS_SHEEN and
 // WF_HAS_VOLUME carry those extensions' factors (their textures are not supported).
-#include "textures.glsl"
+#include "surface/textures.glsl"
 
 struct SurfaceHit {
     vec3 p;          // hit point from barycentrics
