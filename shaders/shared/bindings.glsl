@@ -17,7 +17,7 @@
 #include "types/render_types.h"
 #include "types/light_types.h"
 
-#include "scene_tables.glsl"
+#include "tables/scene_tables.glsl"
 // A uniform buffer: every invocation reads the same words (std140 lays RenderParams out as
 // std430 does; tests/unit/test_shared_layout.cpp checks it).
 layout(std140, binding = WF_BINDING_PARAMS) uniform ParamsBuffer {

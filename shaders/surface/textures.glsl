@@ -6,7 +6,7 @@
 // light sampling read level 0. Compiled only in variants with WF_HAS_TEXTURES.
 #ifndef WF_TEXTURES_GLSL
 #define WF_TEXTURES_GLSL
-#include "surface_bindings.glsl"
+#include "tables/surface_bindings.glsl"
 
 #if WF_HAS_TEXTURES
 

@@ -13,7 +13,7 @@
 #define WF_PAGED_PAGES WF_TRIANGLE_PAGES
 #define WF_PAGED_SHIFT WF_TRIANGLE_PAGE_SHIFT
 #define WF_PAGED_TEXELS WF_TRIANGLE_TEXELS
-#include "paged_table.glsl"
+#include "tables/paged_table.glsl"
 
 #define WF_PAGED_NAME bvhTexel
 #define WF_PAGED_FORMAT rgba32ui
@@ -22,7 +22,7 @@
 #define WF_PAGED_PAGES WF_BVH_PAGES
 #define WF_PAGED_SHIFT WF_BVH_PAGE_SHIFT
 #define WF_PAGED_TEXELS WF_BVH_PAIR_TEXELS
-#include "paged_table.glsl"
+#include "tables/paged_table.glsl"
 
 layout(binding = WF_BINDING_MATERIALS, rgba32ui) uniform readonly restrict uimageBuffer
     materialTexels;
@@ -34,7 +34,7 @@ layout(binding = WF_BINDING_MATERIALS, rgba32ui) uniform readonly restrict uimag
 #define WF_PAGED_PAGES WF_INSTANCE_PAGES
 #define WF_PAGED_SHIFT WF_INSTANCE_PAGE_SHIFT
 #define WF_PAGED_TEXELS WF_INSTANCE_TEXELS
-#include "paged_table.glsl"
+#include "tables/paged_table.glsl"
 #endif
 #if WF_HAS_EMITTERS
 layout(binding = WF_BINDING_EMITTERS, rgba32ui) uniform readonly restrict uimageBuffer

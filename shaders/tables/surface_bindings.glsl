@@ -18,7 +18,7 @@
 #define WF_PAGED_PAGES WF_TRIANGLE_PAGES
 #define WF_PAGED_SHIFT WF_TRIANGLE_PAGE_SHIFT
 #define WF_PAGED_TEXELS WF_TRIANGLE_NORMALS_TEXELS
-#include "paged_table.glsl"
+#include "tables/paged_table.glsl"
 
 TriangleNormals triangleNormalsAt(uint triangle) {
     uvec4 t = normalTexel(triangle, 0u);
@@ -34,7 +34,7 @@ TriangleNormals triangleNormalsAt(uint triangle) {
 #define WF_PAGED_PAGES WF_TRIANGLE_PAGES
 #define WF_PAGED_SHIFT WF_TRIANGLE_PAGE_SHIFT
 #define WF_PAGED_TEXELS WF_TRIANGLE_TANGENTS_TEXELS
-#include "paged_table.glsl"
+#include "tables/paged_table.glsl"
 
 TriangleTangents triangleTangentsAt(uint triangle) {
     uvec4 t = tangentTexel(triangle, 0u);
@@ -52,7 +52,7 @@ layout(binding = WF_BINDING_TEXTURE_REFS, rgba32ui) uniform readonly restrict ui
 #define WF_PAGED_PAGES WF_TRIANGLE_PAGES
 #define WF_PAGED_SHIFT WF_TRIANGLE_PAGE_SHIFT
 #define WF_PAGED_TEXELS WF_TRIANGLE_UVS_TEXELS
-#include "paged_table.glsl"
+#include "tables/paged_table.glsl"
 #if WF_HAS_TEXCOORD1
 #define WF_PAGED_NAME texcoord1Texel
 #define WF_PAGED_FORMAT rg32ui
@@ -61,7 +61,7 @@ layout(binding = WF_BINDING_TEXTURE_REFS, rgba32ui) uniform readonly restrict ui
 #define WF_PAGED_PAGES WF_TRIANGLE_PAGES
 #define WF_PAGED_SHIFT WF_TRIANGLE_PAGE_SHIFT
 #define WF_PAGED_TEXELS WF_TRIANGLE_UVS_TEXELS
-#include "paged_table.glsl"
+#include "tables/paged_table.glsl"
 #endif
 layout(binding = WF_BINDING_TEXELS0, r32ui) uniform readonly restrict uimageBuffer texelPage0;
 #if WF_TEXEL_PAGES > 1
