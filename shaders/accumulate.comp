@@ -9,8 +9,8 @@
 // counters.nonFiniteSamples.
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = WF_WORKGROUP_SIZE) in;
-#include "bindings.glsl"
-#include "wave_paths.glsl"
+#include "wave/bindings.glsl"
+#include "wave/wave_paths.glsl"
 
 layout(push_constant) uniform Push { PassConstants pass; };
 

@@ -7,7 +7,7 @@
 // bin's group count in counters.kindArgs, which the bin's shade pass dispatches by.
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = WF_WORKGROUP_SIZE) in;
-#include "bindings.glsl"
+#include "wave/bindings.glsl"
 #include "traversal/scene_intersect.glsl"
 #if WF_SHADE_BINS > 1
 #extension GL_KHR_shader_subgroup_basic : require

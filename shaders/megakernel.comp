@@ -6,7 +6,7 @@
 // accumulate pass), counters' ray statistics as the queue pass would have kept them.
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = WF_WORKGROUP_SIZE) in;
-#include "bindings.glsl"
+#include "wave/bindings.glsl"
 #include "traversal/geometry.h"
 #include "sampling/rng.h"
 #include "sampling/sampling.h"
@@ -14,10 +14,10 @@ layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "bsdf/bsdf.h"
 #include "surface/surface.glsl"
 #include "lights/lights.glsl"
-#include "path_vertex.glsl"
+#include "wave/path_vertex.glsl"
 #include "traversal/scene_intersect.glsl"
-#include "wave_paths.glsl"
-#include "camera_ray.glsl"
+#include "wave/wave_paths.glsl"
+#include "wave/camera_ray.glsl"
 #extension GL_KHR_shader_subgroup_arithmetic : require
 
 layout(push_constant) uniform Push { PassConstants pass; };

@@ -5,7 +5,7 @@
 // too). One invocation; push constant depth: the bounce the shade pass just did.
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = 1) in;
-#include "bindings.glsl"
+#include "wave/bindings.glsl"
 
 DispatchArgs argsFor(uint count) {
     return DispatchArgs((count + WF_WORKGROUP_SIZE - 1u) / WF_WORKGROUP_SIZE, 1u, 1u, count);

@@ -6,11 +6,11 @@
 // Path p is sample sampleBase + p / wavePixels of pixel pixelBase + p % wavePixels.
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = WF_WORKGROUP_SIZE) in;
-#include "bindings.glsl"
+#include "wave/bindings.glsl"
 #include "sampling/rng.h"
 #include "sampling/sampling.h"
-#include "wave_paths.glsl"
-#include "camera_ray.glsl"
+#include "wave/wave_paths.glsl"
+#include "wave/camera_ray.glsl"
 #include "surface/ray_cones.glsl"
 
 layout(push_constant) uniform Push { PassConstants pass; };

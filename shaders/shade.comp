@@ -1,5 +1,5 @@
 #version 460
-// shade: one path vertex (shaders/shared/path_vertex.glsl) per ray in the current queue.
+// shade: one path vertex (shaders/wave/path_vertex.glsl) per ray in the current queue.
 // In: rayQueue[depth & 1] (count in counters.rayArgs.count), hits (by queue slot), path state,
 // scene, lights.
 // Out: radiance += emission the ray found; appends the path to the shadow queue with a
@@ -10,8 +10,8 @@
 // (count in counters.kindCount[WF_SHADE_BIN]), with the BSDF of its kind compiled in.
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = WF_WORKGROUP_SIZE) in;
-#include "bindings.glsl"
-#include "queue_append.glsl"
+#include "wave/bindings.glsl"
+#include "wave/queue_append.glsl"
 #include "traversal/geometry.h"
 #include "sampling/rng.h"
 #include "sampling/sampling.h"
@@ -19,8 +19,8 @@ layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "bsdf/bsdf.h"
 #include "surface/surface.glsl"
 #include "lights/lights.glsl"
-#include "path_vertex.glsl"
-#include "wave_paths.glsl"
+#include "wave/path_vertex.glsl"
+#include "wave/wave_paths.glsl"
 
 layout(push_constant) uniform Push { PassConstants pass; };
 

@@ -6,7 +6,7 @@
 // Out: radiance[path] += shadowRadiance[slot] when the segment t in (0, 1) is unoccluded.
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = WF_WORKGROUP_SIZE) in;
-#include "bindings.glsl"
+#include "wave/bindings.glsl"
 #if !WF_HAS_EMITTERS
 #error "the shadow pass exists only for scenes with emitters"
 #endif

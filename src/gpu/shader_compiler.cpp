@@ -37,15 +37,15 @@ uint64_t fnv1a(const std::string& text, uint64_t hash = 1469598103934665603ull) 
     return hash;
 }
 
-// Resolves `#include "x.h"` against the including file's folder, then shaders/shared/, and
-// never outside the shader folder. (DirStackFileIncluder.h is not shipped by Debian.)
+// Resolves `#include "x.h"` against the including file's folder, then the shader folder (so
+// "bsdf/bsdf.h" from anywhere), and never outside it. (DirStackFileIncluder.h is not shipped by Debian.)
 class ShaderIncluder : public glslang::TShader::Includer {
 public:
     explicit ShaderIncluder(fs::path root) : root_(std::move(root)) {}
 
     IncludeResult* includeLocal(const char* header, const char* includer, size_t) override {
         fs::path from = fs::path(includer).parent_path();
-        for (const fs::path& dir : {from, root_ / "shared", root_}) {
+        for (const fs::path& dir : {from, root_}) {
             fs::path candidate = fs::weakly_canonical(dir / header);
             if (!isInsideRoot(candidate) || !fs::is_regular_file(candidate))
                 continue;

@@ -96,7 +96,7 @@ layout(std430, binding = WF_BINDING_SHADOW_RADIANCE) buffer ShadowRadianceBuffer
     WfEntry shadowRadiance[]; // radiance added if the segment is unoccluded
 };
 #endif
-#include "path_texels.glsl"
+#include "wave/path_texels.glsl"
 #if WF_PACKED_STORES
 u64vec2 wfPack(uvec4 v) { return u64vec2(packUint2x32(v.xy), packUint2x32(v.zw)); }
 u64vec2 wfPack(vec4 v) { return wfPack(floatBitsToUint(v)); }
