@@ -3,7 +3,7 @@
 // sqrt(mu) and 4x finer in roughness than the table; each node takes the largest value of the
 // cells that touch it, plus a margin for the quadrature's error, so the bilinear interpolant
 // bounds the albedo everywhere. Build and run from the repository root:
-//   g++ -std=c++17 -O2 -I. scripts/sheen_albedo_table.cpp -o /tmp/sheen_table &&
+//   g++ -std=c++17 -O2 -I. -Ishaders scripts/sheen_albedo_table.cpp -o /tmp/sheen_table &&
 //   /tmp/sheen_table > shaders/bsdf/sheen_albedo_table.h
 #define WF_SHEEN_NO_TABLE
 #include "shaders/bsdf/sheen.h"

@@ -1,5 +1,5 @@
 // Test-side view of the samplers: one call that runs any sampler's shared function
-// (shaders/shared/sampler_*.h, exactly what the shaders run), as rng.h's compile-time dispatch
+// (shaders/sampling/sampler_*.h, exactly what the shaders run), as rng.h's compile-time dispatch
 // would in a shader built for that sampler, plus point-set figures (L2-star discrepancy).
 #ifndef WF_TESTS_SAMPLER_TEST_UTIL_H
 #define WF_TESTS_SAMPLER_TEST_UTIL_H

@@ -1,4 +1,4 @@
-// Structure of the sample patterns (shaders/shared/sampler_*.h): Sobol's (0, 2)-sequence nets
+// Structure of the sample patterns (shaders/sampling/sampler_*.h): Sobol's (0, 2)-sequence nets
 // in every power-of-two block, the stratification of the finite sets, permutations that are
 // permutations, the first points of the radical inverses, and the blue-noise mask.
 #include <gtest/gtest.h>

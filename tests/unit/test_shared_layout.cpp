@@ -1,4 +1,4 @@
-// The structs in shaders/shared/*.h are compiled by both C++ and glslang. This test asks
+// The structs in shaders/types/*.h are compiled by both C++ and glslang. This test asks
 // glslang's reflection for the std430 offset of every member the shaders see and compares it
 // with the C++ offsetof, so a layout drift fails here instead of corrupting a render.
 #include <cstddef>

@@ -1,4 +1,4 @@
-// Ray queries on the CPU through the very traversal the GPU runs (shaders/shared/
+// Ray queries on the CPU through the very traversal the GPU runs (shaders/traversal/
 // bvh_traverse.h), for tests and tools. Pairs the nodes from buildBvh and borrows the
 // triangle array, which must outlive it (in leaf order, as buildBvh leaves it).
 #pragma once
