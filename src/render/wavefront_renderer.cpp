@@ -7,53 +7,19 @@
 #include "errors.h"
 #include "gpu/compute_program.h"
 #include "gpu/context.h"
-#include "gpu/timestamp_timer.h"
-#include "passes/accumulate_pass.h"
-#include "passes/intersect_pass.h"
-#include "passes/megakernel_pass.h"
-#include "passes/queue_pass.h"
-#include "passes/raygen_pass.h"
-#include "passes/shade_pass.h"
-#include "passes/shadow_pass.h"
 #include "render/path_buffers.h"
 #include "render/samplers/sampler_tables.h"
 #include "render/gpu_scene/scene_buffers.h"
+#include "render/wave_recorder.h"
 #include "render/workgroup.h"
 #include "shaders/types/render_types.h"
 #include "shaders/sampling/sampler_tables.h"
 
 namespace wf {
 
-using gpu_types::DispatchArgs;
 using gpu_types::PassConstants;
 using gpu_types::QueueCounters;
 using gpu_types::RenderParams;
-
-double varianceOfMean(double sum, double sumOfSquares, double n) {
-    // (sum x^2 - (sum x)^2 / n) / (n (n - 1)): the sample variance over n.
-    return n > 1.0 ? std::max(0.0, sumOfSquares - sum * sum / n) / (n * (n - 1.0)) : 0.0;
-}
-
-void addRenderStats(RenderStats& total, const RenderStats& more) {
-    total.samplesPerPixel += more.samplesPerPixel;
-    total.seconds += more.seconds;
-    total.paths += more.paths;
-    total.cameraRays += more.cameraRays;
-    total.extensionRays += more.extensionRays;
-    total.shadowRays += more.shadowRays;
-    total.nonFiniteSamples += more.nonFiniteSamples;
-    total.waves += more.waves;
-    total.longestSubmitSeconds = std::max(total.longestSubmitSeconds, more.longestSubmitSeconds);
-    for (const auto& [pass, ms] : more.passMilliseconds)
-        total.passMilliseconds[pass] += ms;
-    total.depthRays.resize(std::max(total.depthRays.size(), more.depthRays.size()), 0);
-    total.depthShadowRays.resize(
-        std::max(total.depthShadowRays.size(), more.depthShadowRays.size()), 0);
-    for (size_t d = 0; d < more.depthRays.size(); ++d)
-        total.depthRays[d] += more.depthRays[d];
-    for (size_t d = 0; d < more.depthShadowRays.size(); ++d)
-        total.depthShadowRays[d] += more.depthShadowRays[d];
-}
 
 gpu_types::vec3 cameraRight(const Camera& camera) {
     return glm::normalize(glm::cross(camera.forward, camera.up));
@@ -119,30 +85,9 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
             {WF_BINDING_SAMPLER_TABLES, samplerTable_.get(), BufferAccess::Uint1Texels});
     }
     table_ = std::make_unique<DescriptorTable>(context, bindings);
-    // Four passes per depth (with shade bins, a shade pass per bin), plus raygen and accumulate.
-    const uint32_t passesPerDepth = 3 + std::max(variant_.shadeBins(), 1u);
-    timer_ = std::make_unique<TimestampTimer>(context, passesPerDepth * settings.maxDepth + 2);
-
-    PassResources resources{context, compiler, defines_, *table_, pathBuffers_->counters,
-                            *timer_};
-    if (settings.megakernel) {
-        megakernel_ = std::make_unique<MegakernelPass>(resources);
-    } else {
-        raygen_ = std::make_unique<RaygenPass>(resources);
-        intersect_ = std::make_unique<IntersectPass>(resources);
-        if (variant_.shadeKinds == 0) {
-            shades_.push_back(std::make_unique<ShadePass>(resources));
-        } else {
-            for (uint32_t k = 0; k < kShadeKinds; ++k)
-                if (variant_.shadeKinds & (1u << k))
-                    shades_.push_back(std::make_unique<ShadePass>(
-                        resources, static_cast<uint32_t>(shades_.size()), ShadeKind(k)));
-        }
-        queue_ = std::make_unique<QueuePass>(resources);
-        if (variant_.nextEventEstimation)
-            shadow_ = std::make_unique<ShadowPass>(resources);
-    }
-    accumulate_ = std::make_unique<AccumulatePass>(resources);
+    waves_ = std::make_unique<WaveRecorder>(context, compiler, defines_, *table_,
+                                            pathBuffers_->counters, variant_,
+                                            settings.megakernel, settings.maxDepth);
 
     camera_ = scene.camera;
     uploadParams();
@@ -182,35 +127,6 @@ void WavefrontRenderer::uploadParams() {
     pathBuffers_->params.upload(&params, sizeof params);
 }
 
-void WavefrontRenderer::recordWave(VkCommandBuffer cmd, const PassConstants& wave) {
-    timer_->reset(cmd);
-    QueueCounters initial{};
-    initial.rayArgs = {groupsFor(wave.pathCount), 1, 1, wave.pathCount};
-    initial.depthRays[0] = wave.pathCount;
-    for (DispatchArgs& args : initial.kindArgs)
-        args = {0, 1, 1, 0}; // intersect raises groupsX
-    vkCmdUpdateBuffer(cmd, pathBuffers_->counters.handle(), 0, sizeof initial, &initial);
-    computeBarrier(cmd);
-
-    if (megakernel_) {
-        megakernel_->record(cmd, wave);
-    } else {
-        raygen_->record(cmd, wave);
-        for (uint32_t depth = 0; depth < settings_.maxDepth; ++depth) {
-            intersect_->record(cmd, depth);
-            for (const auto& shade : shades_)
-                shade->record(cmd, depth, wave);
-            if (depth + 1 == settings_.maxDepth)
-                break; // the last bounce queues nothing
-            queue_->record(cmd, depth);
-            if (shadow_)
-                shadow_->record(cmd, depth);
-        }
-    }
-    accumulate_->record(cmd, wave);
-    timer_->finish(cmd);
-}
-
 void WavefrontRenderer::runWave(uint32_t pixelBase, uint32_t pixels, uint32_t firstSample,
                                 uint32_t samples) {
     const auto start = std::chrono::steady_clock::now();
@@ -218,7 +134,7 @@ void WavefrontRenderer::runWave(uint32_t pixelBase, uint32_t pixels, uint32_t fi
     // Sample indices start at --spp-offset, so that partial renders merge.
     const PassConstants wave{
         0, settings_.sppOffset + firstSample, paths, samples, pixelBase, pixels, 0, 0};
-    context_.submitAndWait([&](VkCommandBuffer cmd) { recordWave(cmd, wave); });
+    context_.submitAndWait([&](VkCommandBuffer cmd) { waves_->record(cmd, wave); });
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -233,7 +149,7 @@ void WavefrontRenderer::runWave(uint32_t pixelBase, uint32_t pixels, uint32_t fi
         stats_.depthRays[d] += counters.depthRays[d];
         stats_.depthShadowRays[d] += counters.depthShadowRays[d];
     }
-    for (const auto& [pass, ms] : timer_->collect())
+    for (const auto& [pass, ms] : waves_->collectTimes())
         stats_.passMilliseconds[pass] += ms;
     ++stats_.waves;
     stats_.seconds += seconds;
@@ -395,60 +311,14 @@ void WavefrontRenderer::setCamera(const Camera& camera) {
 const Buffer& WavefrontRenderer::film() const { return pathBuffers_->film; }
 
 std::vector<float> WavefrontRenderer::readImage() const {
-    std::vector<float> film = pathBuffers_->film.download<float>();
-    std::vector<float> rgb(size_t(pixelCount_) * 3);
-    for (size_t i = 0; i < pixelCount_; ++i) {
-        float count = film[4 * i + 3];
-        for (int c = 0; c < 3; ++c)
-            rgb[3 * i + c] = count > 0.0f ? film[4 * i + c] / count : 0.0f;
-    }
-    return rgb;
+    return readFilmImage(*pathBuffers_, pixelCount_);
 }
 
 FilmMoments WavefrontRenderer::readMoments() const {
-    if (!pathBuffers_->momentFilm)
-        throw InternalError("readMoments: the renderer keeps no second moment");
-    const std::vector<float> film = pathBuffers_->film.download<float>();
-    const std::vector<float> squares = pathBuffers_->momentFilm.download<float>();
-    FilmMoments moments;
-    moments.sum.resize(size_t(pixelCount_) * 3);
-    moments.count.resize(pixelCount_);
-    moments.squares.resize(size_t(pixelCount_) * 3);
-    for (size_t i = 0; i < pixelCount_; ++i) {
-        for (int c = 0; c < 3; ++c) {
-            moments.sum[3 * i + c] = film[4 * i + c];
-            moments.squares[3 * i + c] = squares[4 * i + c];
-        }
-        moments.count[i] = film[4 * i + 3];
-    }
-    return moments;
+    return readFilmMoments(*pathBuffers_, pixelCount_);
 }
 
-AovImages WavefrontRenderer::readAovs() const {
-    if (!pathBuffers_->aovFilm)
-        throw InternalError("readAovs: the renderer was made without RenderSettings.aov");
-    const FilmMoments moments = readMoments();
-    const std::vector<float> aov = pathBuffers_->aovFilm.download<float>();
-    AovImages images;
-    images.albedo.resize(size_t(pixelCount_) * 3);
-    images.normal.resize(size_t(pixelCount_) * 3);
-    images.depth.resize(pixelCount_);
-    images.variance.resize(size_t(pixelCount_) * 3);
-    for (size_t i = 0; i < pixelCount_; ++i) {
-        const double n = moments.count[i];
-        if (!(n > 0.0))
-            continue;
-        const float* sums = &aov[8 * i];
-        for (int c = 0; c < 3; ++c) {
-            images.albedo[3 * i + c] = float(sums[c] / n);
-            images.normal[3 * i + c] = float(sums[4 + c] / n);
-            images.variance[3 * i + c] = float(
-                varianceOfMean(moments.sum[3 * i + c], moments.squares[3 * i + c], n));
-        }
-        images.depth[i] = float(sums[3] / n);
-    }
-    return images;
-}
+AovImages WavefrontRenderer::readAovs() const { return readFilmAovs(*pathBuffers_, pixelCount_); }
 
 std::vector<std::pair<std::string, uint64_t>> WavefrontRenderer::memoryReport() const {
     std::vector<std::pair<std::string, uint64_t>> report;

@@ -1,0 +1,68 @@
+// What a render is asked to do: image size, samples, estimator and sampler choices, and the
+// switches that pick shader variants or buffer layouts (each says whether it changes the image).
+#pragma once
+#include <cstdint>
+
+#include "render/samplers/samplers.h"
+#include "render/shade_kinds.h"
+#include "render/shader_variant.h"
+
+namespace wf {
+
+struct RenderSettings {
+    uint32_t width = 512;
+    uint32_t height = 512;
+    uint32_t samplesPerPixel = 64;
+    // --time-limit: render() stops before a sample pass that its pace so far says would end
+    // past this many seconds of wall time (0: none). The first pass always runs.
+    double timeLimitSeconds = 0.0;
+    uint32_t maxDepth = 16;
+    uint32_t rrDepth = 3;
+    uint32_t seed = 0;
+    uint32_t maxPathsPerWave = 1u << 20; // bounds buffer sizes and the length of one submit
+    // Waves are sized so that one submit takes about this long or less, so that a long render
+    // never trips a GPU watchdog (0: waves of maxPathsPerWave regardless of time).
+    double submitBudgetSeconds = 0.25;
+    // Trace whole paths in one dispatch (shaders/megakernel.comp) instead of the wavefront's
+    // passes: the baseline `wavefront bench` compares against. Same samples, same image.
+    bool megakernel = false;
+    LightSampling lightSampling = LightSampling::Mis;
+    LightSelection lightSelection = LightSelection::Auto; // --light-selection
+    bool triangleSolidAngle = true; // --triangle-sampling solid-angle (else area)
+    bool sphereSolidAngle = true;   // --sphere-sampling solid-angle (else area)
+    float minThroughput = 0.0f;     // --min-throughput: biased termination, 0 = off
+    float clampRadiance = 0.0f;     // --clamp: biased firefly clamp, 0 = off
+    SamplerKind sampler = kDefaultSampler; // --sampler
+    bool randomizeSamples = true;   // --no-randomize turns it off
+    uint32_t sppOffset = 0;         // --spp-offset: index of the first sample per pixel
+    // Finite-set samplers (stratified, multijitter, hammersley): samples in one set, 0 =
+    // sppOffset + samplesPerPixel (--spp-total). Parts of one render must agree on it.
+    uint32_t sampleSetSize = 0;
+    // Store 16-byte path-state entries as two 64-bit words where the device has shaderInt64
+    // (WF_PACKED_STORES, faster on lavapipe); off, the vec4 stores every device has. Same image.
+    bool packedStores = true;
+    // Keep the traversal stack in vectors where the tree's stack need fits in 8 entries, and
+    // any-hit traversal's where it fits in 16 (WF_BVH_REGISTER_STACK, faster on lavapipe);
+    // off, a private array. Same image.
+    bool registerStack = true;
+    // --aov: also accumulate the camera ray's first hit (albedo, shading normal, distance) and
+    // the radiance squared per pixel (readAovs). The wavefront only; the image is unchanged.
+    bool aov = false;
+    // Textured scenes: filter textures by ray cones from their mip chains (WF_RAY_CONES,
+    // ray_cones.glsl); off, every lookup reads level 0 bilinearly, as before the chains.
+    bool textureLod = true;
+    // Scenes with materials of two or more kinds (shade_kinds.h): bin each bounce's hits by
+    // kind and shade each bin with a pass compiled for its kind. Auto splits only scenes
+    // without the general kind, where it paid; On splits any scene of two kinds or more; Off
+    // keeps one pass for every hit, as single-kind scenes always have. The same image up to
+    // float rounding.
+    ShadeSplit shadeSplit = ShadeSplit::Auto;
+    // --target-error: waves cover lists of pixels (renderPixelList) and the film keeps each
+    // pixel's radiance squared (readMoments); render() and the progressive calls are refused.
+    bool pixelList = false;
+    // Most bytes of the triangle or BVH table in one buffer (0: the device's limit); a test
+    // sets it low to spread a small scene over pages as a large one spreads.
+    uint64_t tablePageBytes = 0;
+};
+
+} // namespace wf

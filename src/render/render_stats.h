@@ -1,0 +1,37 @@
+// What a render did: samples, paths and rays by kind, waves, GPU time per pass and queue
+// occupancy per depth, as the --json statistics and `wavefront bench` report them.
+#pragma once
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace wf {
+
+struct RenderStats {
+    uint32_t samplesPerPixel = 0;
+    double seconds = 0.0;
+    uint64_t paths = 0;
+    uint64_t cameraRays = 0;
+    uint64_t extensionRays = 0;
+    uint64_t shadowRays = 0;
+    uint64_t nonFiniteSamples = 0;
+    uint32_t waves = 0;
+    double longestSubmitSeconds = 0.0; // wall time of the longest wave (one submit each)
+    std::map<std::string, double> passMilliseconds; // GPU time per pass, summed over waves
+    // Queue occupancy: rays traced at each depth (0: camera rays) and NEE connections made at
+    // each depth; the last entry also counts every deeper bounce (WF_TRACKED_DEPTHS entries).
+    std::vector<uint64_t> depthRays;
+    std::vector<uint64_t> depthShadowRays;
+};
+
+// Adds `more`'s counts and times to `total`: sums, except the longest submit (the larger).
+void addRenderStats(RenderStats& total, const RenderStats& more);
+
+struct WaveProgress {
+    uint32_t samplesDone;
+    uint32_t samplesTotal;
+    double secondsElapsed;
+};
+
+} // namespace wf

@@ -1,0 +1,87 @@
+#include "render/wave_recorder.h"
+
+#include <algorithm>
+
+#include "gpu/compute_program.h"
+#include "gpu/timestamp_timer.h"
+#include "passes/accumulate_pass.h"
+#include "passes/intersect_pass.h"
+#include "passes/megakernel_pass.h"
+#include "passes/queue_pass.h"
+#include "passes/raygen_pass.h"
+#include "passes/shade_pass.h"
+#include "passes/shadow_pass.h"
+#include "render/shader_variant.h"
+#include "render/workgroup.h"
+#include "shaders/types/render_types.h"
+
+namespace wf {
+
+using gpu_types::DispatchArgs;
+using gpu_types::PassConstants;
+using gpu_types::QueueCounters;
+
+WaveRecorder::WaveRecorder(const Context& context, const ShaderCompiler& compiler,
+                           const ShaderDefines& defines, const DescriptorTable& table,
+                           const Buffer& counters, const ShaderVariant& variant,
+                           bool megakernel, uint32_t maxDepth)
+    : counters_(counters), maxDepth_(maxDepth) {
+    // Four passes per depth (with shade bins, a shade pass per bin), plus raygen and accumulate.
+    const uint32_t passesPerDepth = 3 + std::max(variant.shadeBins(), 1u);
+    timer_ = std::make_unique<TimestampTimer>(context, passesPerDepth * maxDepth + 2);
+
+    PassResources resources{context, compiler, defines, table, counters, *timer_};
+    if (megakernel) {
+        megakernel_ = std::make_unique<MegakernelPass>(resources);
+    } else {
+        raygen_ = std::make_unique<RaygenPass>(resources);
+        intersect_ = std::make_unique<IntersectPass>(resources);
+        if (variant.shadeKinds == 0) {
+            shades_.push_back(std::make_unique<ShadePass>(resources));
+        } else {
+            for (uint32_t k = 0; k < kShadeKinds; ++k)
+                if (variant.shadeKinds & (1u << k))
+                    shades_.push_back(std::make_unique<ShadePass>(
+                        resources, static_cast<uint32_t>(shades_.size()), ShadeKind(k)));
+        }
+        queue_ = std::make_unique<QueuePass>(resources);
+        if (variant.nextEventEstimation)
+            shadow_ = std::make_unique<ShadowPass>(resources);
+    }
+    accumulate_ = std::make_unique<AccumulatePass>(resources);
+}
+
+WaveRecorder::~WaveRecorder() = default;
+
+void WaveRecorder::record(VkCommandBuffer cmd, const PassConstants& wave) const {
+    timer_->reset(cmd);
+    QueueCounters initial{};
+    initial.rayArgs = {groupsFor(wave.pathCount), 1, 1, wave.pathCount};
+    initial.depthRays[0] = wave.pathCount;
+    for (DispatchArgs& args : initial.kindArgs)
+        args = {0, 1, 1, 0}; // intersect raises groupsX
+    vkCmdUpdateBuffer(cmd, counters_.handle(), 0, sizeof initial, &initial);
+    computeBarrier(cmd);
+
+    if (megakernel_) {
+        megakernel_->record(cmd, wave);
+    } else {
+        raygen_->record(cmd, wave);
+        for (uint32_t depth = 0; depth < maxDepth_; ++depth) {
+            intersect_->record(cmd, depth);
+            for (const auto& shade : shades_)
+                shade->record(cmd, depth, wave);
+            if (depth + 1 == maxDepth_)
+                break; // the last bounce queues nothing
+            queue_->record(cmd, depth);
+            if (shadow_)
+                shadow_->record(cmd, depth);
+        }
+    }
+    accumulate_->record(cmd, wave);
+    timer_->finish(cmd);
+}
+
+std::map<std::string, double> WaveRecorder::collectTimes() { return timer_->collect(); }
+
+} // namespace wf

@@ -1,0 +1,60 @@
+// One wave as commands: the queue counters' reset, raygen, then for each depth intersect,
+// shade (one pass per shade bin), queue and shadow, and accumulate; or the megakernel in place
+// of the passes between raygen's and accumulate's places. Owns the passes and the timestamp
+// queries that time them; the renderer owns the buffers and decides what each wave covers.
+#pragma once
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "gpu/shader_compiler.h"
+
+namespace wf {
+
+class Buffer;
+class Context;
+class DescriptorTable;
+class TimestampTimer;
+class RaygenPass;
+class IntersectPass;
+class ShadePass;
+class QueuePass;
+class ShadowPass;
+class AccumulatePass;
+class MegakernelPass;
+struct ShaderVariant;
+namespace gpu_types {
+struct PassConstants;
+}
+
+class WaveRecorder {
+public:
+    // `counters` is the queue counter buffer every pass reads its indirect arguments from.
+    WaveRecorder(const Context& context, const ShaderCompiler& compiler,
+                 const ShaderDefines& defines, const DescriptorTable& table,
+                 const Buffer& counters, const ShaderVariant& variant, bool megakernel,
+                 uint32_t maxDepth);
+    ~WaveRecorder();
+
+    void record(VkCommandBuffer cmd, const gpu_types::PassConstants& wave) const;
+    // GPU milliseconds per pass of the last wave recorded, after its fence.
+    std::map<std::string, double> collectTimes();
+
+private:
+    const Buffer& counters_;
+    uint32_t maxDepth_;
+    std::unique_ptr<TimestampTimer> timer_;
+    std::unique_ptr<RaygenPass> raygen_;
+    std::unique_ptr<IntersectPass> intersect_;
+    std::vector<std::unique_ptr<ShadePass>> shades_; // one, or one per shade bin
+    std::unique_ptr<QueuePass> queue_;
+    std::unique_ptr<ShadowPass> shadow_;
+    std::unique_ptr<AccumulatePass> accumulate_;
+    std::unique_ptr<MegakernelPass> megakernel_;
+};
+
+} // namespace wf
