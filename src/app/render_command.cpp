@@ -1,4 +1,5 @@
 // wavefront render: load, build, trace all samples in waves, write EXR + PNG (+ JSON stats).
+// Its flags and their checks are render_flags.cpp's; this file is the run.
 #include <chrono>
 #include <algorithm>
 #include <cstdio>
@@ -10,6 +11,8 @@
 #include "app/cli.h"
 #include "app/host_memory.h"
 #include "app/commands.h"
+#include "app/progress_line.h"
+#include "app/render_flags.h"
 #include "app/render_options.h"
 #include "app/signal_stop.h"
 #include "app/stats_json.h"
@@ -25,159 +28,6 @@ namespace fs = std::filesystem;
 
 namespace wf {
 namespace {
-
-constexpr uint32_t kDefaultWidth = 512;
-constexpr uint32_t kDefaultMaxDepth = 16;
-
-const CommandSpec& renderSpec() {
-    static const CommandSpec spec{
-        "render",
-        "wavefront render SCENE.gltf -o OUT.exr [options]",
-        "Path traces SCENE (.gltf or .glb) and writes linear radiance to OUT.exr (float32 RGB,\n"
-        "with spp, seed and render time as header attributes) and a tonemapped sRGB preview\n"
-        "beside it (OUT.png).",
-        joinOptions({
-            {
-                {"--output", "-o", "OUT.exr", "output OpenEXR file (required; must end in .exr)"},
-                {"--spp", "", "N", "samples per pixel (default 64); with --target-error, the "
-                                  "most any pixel gets (default 1024)"},
-                {"--time-limit", "", "SECONDS", "stop before the sample pass that would end past "
-                                                "SECONDS of rendering (at least one pass; the EXR's "
-                                                "spp says how many were done; not with the "
-                                                "finite-set samplers)"},
-                {"--target-error", "", "R", "adaptive sampling: a pilot pass, then per-pixel "
-                                            "sample counts that bring the image's estimated "
-                                            "relMSE to R, --spp the most any pixel gets (default "
-                                            "then 1024); unbiased (the pilot is not in the "
-                                            "image); not with --time-limit, --checkpoint, "
-                                            "--resume, --spp-offset or the finite-set samplers"},
-                {"--checkpoint", "", "FILE.exr", "write the image so far there every "
-                                                 "--checkpoint-every seconds and on SIGINT or "
-                                                 "SIGTERM (which then end the render, exit 130 or "
-                                                 "143)"},
-                {"--checkpoint-every", "", "SECONDS", "seconds between checkpoints (default 60)"},
-                {"--aov", "", "LIST", "extra EXR layers, comma-separated: albedo, normal (the "
-                                      "camera ray's first hit, as denoisers want them), depth, "
-                                      "variance (of each pixel's estimate), samples (each "
-                                      "pixel's sample count)"},
-                {"--resume", "", "FILE.exr", "continue that checkpoint of this very render "
-                                             "(scene, size, settings, seed) to --spp: the image "
-                                             "of an uninterrupted run"},
-            },
-            imageSizeOptions(kDefaultWidth),
-            depthOptions(kDefaultMaxDepth),
-            lensOptions(),
-            samplingOptions(),
-            {
-                noRandomizeOption(),
-                {"--spp-offset", "", "N", "first sample index: renders samples N .. N+spp-1, so "
-                                          "partial renders merge (default 0)"},
-                {"--spp-total", "", "N", "stratified, multijitter, hammersley: samples in the "
-                                         "whole set that this part belongs to (default offset + "
-                                         "spp)"},
-                {"--json", "", "STATS.json", "write statistics: spp, seconds, paths/s, rays/s"},
-                deviceOption(),
-                quietOption(),
-                cameraOption(),
-                envOption(),
-                instancingOption(),
-                {"--verbose", "-v", "",
-                 "print the scene summary and load time, BVH build, shader variant, GPU and "
-                 "peak host memory"},
-            },
-        }),
-        "Environment:\n"
-        "  WAVEFRONT_DEVICE=N        Vulkan device index, as --device\n"
-        "  WAVEFRONT_VALIDATION=1    enable the Khronos validation layer (messages to stderr)\n"
-        "  WAVEFRONT_SHADER_DIR=DIR  GLSL sources (default: next to the binary, else the source "
-        "tree)\n"
-        "  WAVEFRONT_CACHE_DIR=DIR   SPIR-V cache (default ~/.cache/wavefront; empty: none)\n"
-        "  LP_NUM_THREADS=N          lavapipe's threads (default here: twice the CPU cores)\n"
-        "\n"
-        "Exit codes: 0 done, 2 bad usage or bad input, 1 internal or device failure; with\n"
-        "--checkpoint, 130 or 143 after SIGINT or SIGTERM (the checkpoint written).\n"};
-    return spec;
-}
-
-// --spp-offset, --spp-total (after settings.samplesPerPixel).
-void applySppRangeFlags(const ParsedArgs& parsed, RenderSettings& settings) {
-    settings.sppOffset = parsed.uintValue("--spp-offset", 0, 0, 1u << 30);
-    const uint32_t total = settings.sppOffset + settings.samplesPerPixel;
-    settings.sampleSetSize = parsed.uintValue("--spp-total", total, 1, 1u << 31);
-    if (settings.sampleSetSize < total)
-        throw UsageError("--spp-total " + std::to_string(settings.sampleSetSize) +
-                         " is less than --spp-offset + --spp = " + std::to_string(total));
-}
-
-class ProgressLine {
-public:
-    ProgressLine(bool enabled, double timeLimit)
-        : enabled_(enabled), tty_(isatty(STDERR_FILENO)), timeLimit_(timeLimit) {}
-    void update(const WaveProgress& progress, bool stopped = false) {
-        if (!enabled_)
-            return;
-        const bool last = progress.samplesDone == progress.samplesTotal || stopped;
-        // On a terminal redraw one line; in a log, at most a line a second.
-        if (!tty_ && !last && progress.secondsElapsed - lastPrinted_ < 1.0)
-            return;
-        lastPrinted_ = progress.secondsElapsed;
-        double eta = progress.secondsElapsed / progress.samplesDone *
-                     (progress.samplesTotal - progress.samplesDone);
-        if (timeLimit_ > 0.0)
-            eta = std::min(eta, std::max(0.0, timeLimit_ - progress.secondsElapsed));
-        char limit[64] = "";
-        if (timeLimit_ > 0.0)
-            std::snprintf(limit, sizeof limit, " of a %g s limit", timeLimit_);
-        std::fprintf(stderr, "%swavefront: %u/%u spp, %.1f s elapsed%s, %s %.1f s%s",
-                     tty_ ? "\r" : "", progress.samplesDone, progress.samplesTotal,
-                     progress.secondsElapsed, limit, stopped ? "stopped at the limit after" : "ETA",
-                     stopped ? progress.secondsElapsed : eta, tty_ && !last ? "   " : "\n");
-        std::fflush(stderr);
-    }
-
-    void update(const AdaptiveProgress& round, double target) {
-        if (!enabled_)
-            return;
-        const bool last = round.stage == "render" && round.round == round.rounds;
-        if (!tty_ && !last && round.seconds - lastPrinted_ < 1.0 && round.stage != "pilot")
-            return;
-        lastPrinted_ = round.seconds;
-        char predicted[64] = "";
-        if (round.predictedRelMse > 0.0)
-            std::snprintf(predicted, sizeof predicted, " (predicted %.3g)",
-                          round.predictedRelMse);
-        std::fprintf(stderr, "%swavefront: target relMSE %g%s: %s round %u/%u, %u pixels to %u "
-                             "spp, %.1f s elapsed%s",
-                     tty_ ? "\r" : "", target, predicted, round.stage.c_str(), round.round,
-                     round.rounds, round.activePixels, round.level, round.seconds,
-                     tty_ && !last && round.stage != "pilot" ? "   " : "\n");
-        std::fflush(stderr);
-    }
-
-private:
-    bool enabled_;
-    bool tty_;
-    double timeLimit_;
-    double lastPrinted_ = -1.0;
-};
-
-// --aov's names, each once, in a fixed set.
-std::vector<std::string> parseAovList(const std::string& list) {
-    std::vector<std::string> names;
-    std::stringstream words(list);
-    for (std::string word; std::getline(words, word, ',');) {
-        if (word != "albedo" && word != "normal" && word != "depth" && word != "variance" &&
-            word != "samples")
-            throw UsageError("--aov: unknown layer '" + word +
-                             "' (layers: albedo, normal, depth, variance, samples)");
-        if (std::find(names.begin(), names.end(), word) != names.end())
-            throw UsageError("--aov names '" + word + "' twice");
-        names.push_back(word);
-    }
-    if (!list.empty() && names.empty())
-        throw UsageError("--aov needs at least one layer");
-    return names;
-}
 
 // The layers as Cycles names its passes, one channel each.
 std::vector<ExrChannel> aovChannels(const std::vector<std::string>& names, const AovImages& aov,
@@ -206,26 +56,6 @@ std::vector<ExrChannel> aovChannels(const std::vector<std::string>& names, const
             add("Sample Count", "Y", sampleCounts, 1);
     }
     return channels;
-}
-
-// Everything that shapes the image but the seed and the sample range (their own attributes):
-// parts merge only when this agrees (image/render_parts.h).
-std::string renderSettingsKey(const RenderSettings& s, const ParsedArgs& parsed) {
-    char numbers[160];
-    std::snprintf(numbers, sizeof numbers,
-                  "%ux%u depth %u rr %u min-throughput %g clamp %g", s.width, s.height,
-                  s.maxDepth, s.rrDepth, s.minThroughput, s.clampRadiance);
-    return std::string(numbers) + " " + lightSamplingName(s.lightSampling) + " " +
-           lightSelectionName(s.lightSelection) + " triangle " +
-           (s.triangleSolidAngle ? "solid-angle" : "area") + " sphere " +
-           (s.sphereSolidAngle ? "solid-angle" : "area") + " " + samplerName(s.sampler) +
-           (s.randomizeSamples ? "" : " no-randomize") +
-           (s.textureLod ? "" : " texture-filter none") + " camera " +
-           parsed.value("--camera").value_or("default") +
-           (parsed.has("--aperture") ? " aperture " + *parsed.value("--aperture") : "") +
-           (parsed.has("--focus-distance") ? " focus " + *parsed.value("--focus-distance") : "") +
-           (parsed.has("--target-error") ? " target-error " + *parsed.value("--target-error")
-                                         : "");
 }
 
 void printVerbose(const PreparedScene& scene, const WavefrontRenderer& renderer,
@@ -293,23 +123,6 @@ int validationExitCode(const Context& context) {
     std::fprintf(stderr, "wavefront: %u validation message(s)\n",
                  context.validationMessageCount());
     return 1;
-}
-
-// --target-error refuses what would need a sample range it does not have.
-void checkAdaptiveFlags(const ParsedArgs& parsed, const RenderSettings& settings) {
-    for (const char* flag : {"--time-limit", "--checkpoint", "--resume", "--spp-offset",
-                             "--spp-total"})
-        if (parsed.has(flag))
-            throw UsageError(std::string("--target-error with ") + flag +
-                             ": adaptive renders are whole renders (their sample counts differ "
-                             "per pixel)");
-    if (samplerIsFiniteSet(settings.sampler))
-        throw UsageError(std::string("--target-error: the ") + samplerName(settings.sampler) +
-                         " sampler's set is no stratification when a pixel takes part of it "
-                         "(pick sobol, halton, independent or bluenoise)");
-    if (settings.samplesPerPixel < 8)
-        throw UsageError("--target-error needs --spp (the most samples a pixel gets) of at "
-                         "least 8");
 }
 
 struct OutputRequest {
@@ -387,8 +200,6 @@ void renderAdaptively(WavefrontRenderer& renderer, const RenderSettings& setting
 
 } // namespace
 
-std::string renderHelp() { return helpText(renderSpec()); }
-
 int runRenderCommand(const std::vector<std::string>& args) {
     std::optional<ParsedArgs> maybeParsed = parseSceneCommand(renderSpec(), args);
     if (!maybeParsed)
@@ -407,7 +218,7 @@ int runRenderCommand(const std::vector<std::string>& args) {
     const bool adaptive = parsed.has("--target-error");
     RenderSettings settings;
     settings.samplesPerPixel = parsed.uintValue("--spp", adaptive ? 1024 : 64, 1, 1u << 20);
-    applyRenderFlags(parsed, kDefaultMaxDepth, settings);
+    applyRenderFlags(parsed, kRenderDefaultMaxDepth, settings);
     applySppRangeFlags(parsed, settings);
     const double targetError = parsed.floatValue("--target-error", 0.0f, 1e-12f, 1e6f);
     if (adaptive) {
@@ -431,7 +242,7 @@ int runRenderCommand(const std::vector<std::string>& args) {
     const std::string scenePath = parsed.positional.front();
     SceneSummary summary;
     Scene scene = loadSceneWithFlags(parsed, scenePath, &summary);
-    applyImageSize(parsed, scene.camera, {.width = kDefaultWidth, .widthFollowsHeight = true},
+    applyImageSize(parsed, scene.camera, {.width = kRenderDefaultWidth, .widthFollowsHeight = true},
                    settings);
 
     // What this render is, as its parts and checkpoints say it (image/render_parts.h).

@@ -1,0 +1,152 @@
+// wavefront render's flags: the table behind --help and parsing, and the checks and keys
+// made from them before anything is loaded.
+#include "app/render_flags.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "app/commands.h"
+#include "app/render_options.h"
+#include "errors.h"
+#include "render/samplers/samplers.h"
+
+namespace wf {
+
+const CommandSpec& renderSpec() {
+    static const CommandSpec spec{
+        "render",
+        "wavefront render SCENE.gltf -o OUT.exr [options]",
+        "Path traces SCENE (.gltf or .glb) and writes linear radiance to OUT.exr (float32 RGB,\n"
+        "with spp, seed and render time as header attributes) and a tonemapped sRGB preview\n"
+        "beside it (OUT.png).",
+        joinOptions({
+            {
+                {"--output", "-o", "OUT.exr", "output OpenEXR file (required; must end in .exr)"},
+                {"--spp", "", "N", "samples per pixel (default 64); with --target-error, the "
+                                  "most any pixel gets (default 1024)"},
+                {"--time-limit", "", "SECONDS", "stop before the sample pass that would end past "
+                                                "SECONDS of rendering (at least one pass; the EXR's "
+                                                "spp says how many were done; not with the "
+                                                "finite-set samplers)"},
+                {"--target-error", "", "R", "adaptive sampling: a pilot pass, then per-pixel "
+                                            "sample counts that bring the image's estimated "
+                                            "relMSE to R, --spp the most any pixel gets (default "
+                                            "then 1024); unbiased (the pilot is not in the "
+                                            "image); not with --time-limit, --checkpoint, "
+                                            "--resume, --spp-offset or the finite-set samplers"},
+                {"--checkpoint", "", "FILE.exr", "write the image so far there every "
+                                                 "--checkpoint-every seconds and on SIGINT or "
+                                                 "SIGTERM (which then end the render, exit 130 or "
+                                                 "143)"},
+                {"--checkpoint-every", "", "SECONDS", "seconds between checkpoints (default 60)"},
+                {"--aov", "", "LIST", "extra EXR layers, comma-separated: albedo, normal (the "
+                                      "camera ray's first hit, as denoisers want them), depth, "
+                                      "variance (of each pixel's estimate), samples (each "
+                                      "pixel's sample count)"},
+                {"--resume", "", "FILE.exr", "continue that checkpoint of this very render "
+                                             "(scene, size, settings, seed) to --spp: the image "
+                                             "of an uninterrupted run"},
+            },
+            imageSizeOptions(kRenderDefaultWidth),
+            depthOptions(kRenderDefaultMaxDepth),
+            lensOptions(),
+            samplingOptions(),
+            {
+                noRandomizeOption(),
+                {"--spp-offset", "", "N", "first sample index: renders samples N .. N+spp-1, so "
+                                          "partial renders merge (default 0)"},
+                {"--spp-total", "", "N", "stratified, multijitter, hammersley: samples in the "
+                                         "whole set that this part belongs to (default offset + "
+                                         "spp)"},
+                {"--json", "", "STATS.json", "write statistics: spp, seconds, paths/s, rays/s"},
+                deviceOption(),
+                quietOption(),
+                cameraOption(),
+                envOption(),
+                instancingOption(),
+                {"--verbose", "-v", "",
+                 "print the scene summary and load time, BVH build, shader variant, GPU and "
+                 "peak host memory"},
+            },
+        }),
+        "Environment:\n"
+        "  WAVEFRONT_DEVICE=N        Vulkan device index, as --device\n"
+        "  WAVEFRONT_VALIDATION=1    enable the Khronos validation layer (messages to stderr)\n"
+        "  WAVEFRONT_SHADER_DIR=DIR  GLSL sources (default: next to the binary, else the source "
+        "tree)\n"
+        "  WAVEFRONT_CACHE_DIR=DIR   SPIR-V cache (default ~/.cache/wavefront; empty: none)\n"
+        "  LP_NUM_THREADS=N          lavapipe's threads (default here: twice the CPU cores)\n"
+        "\n"
+        "Exit codes: 0 done, 2 bad usage or bad input, 1 internal or device failure; with\n"
+        "--checkpoint, 130 or 143 after SIGINT or SIGTERM (the checkpoint written).\n"};
+    return spec;
+}
+
+std::string renderHelp() { return helpText(renderSpec()); }
+
+// --spp-offset, --spp-total (after settings.samplesPerPixel).
+void applySppRangeFlags(const ParsedArgs& parsed, RenderSettings& settings) {
+    settings.sppOffset = parsed.uintValue("--spp-offset", 0, 0, 1u << 30);
+    const uint32_t total = settings.sppOffset + settings.samplesPerPixel;
+    settings.sampleSetSize = parsed.uintValue("--spp-total", total, 1, 1u << 31);
+    if (settings.sampleSetSize < total)
+        throw UsageError("--spp-total " + std::to_string(settings.sampleSetSize) +
+                         " is less than --spp-offset + --spp = " + std::to_string(total));
+}
+
+// --aov's names, each once, in a fixed set.
+std::vector<std::string> parseAovList(const std::string& list) {
+    std::vector<std::string> names;
+    std::stringstream words(list);
+    for (std::string word; std::getline(words, word, ',');) {
+        if (word != "albedo" && word != "normal" && word != "depth" && word != "variance" &&
+            word != "samples")
+            throw UsageError("--aov: unknown layer '" + word +
+                             "' (layers: albedo, normal, depth, variance, samples)");
+        if (std::find(names.begin(), names.end(), word) != names.end())
+            throw UsageError("--aov names '" + word + "' twice");
+        names.push_back(word);
+    }
+    if (!list.empty() && names.empty())
+        throw UsageError("--aov needs at least one layer");
+    return names;
+}
+
+// Everything that shapes the image but the seed and the sample range (their own attributes):
+// parts merge only when this agrees (image/render_parts.h).
+std::string renderSettingsKey(const RenderSettings& s, const ParsedArgs& parsed) {
+    char numbers[160];
+    std::snprintf(numbers, sizeof numbers,
+                  "%ux%u depth %u rr %u min-throughput %g clamp %g", s.width, s.height,
+                  s.maxDepth, s.rrDepth, s.minThroughput, s.clampRadiance);
+    return std::string(numbers) + " " + lightSamplingName(s.lightSampling) + " " +
+           lightSelectionName(s.lightSelection) + " triangle " +
+           (s.triangleSolidAngle ? "solid-angle" : "area") + " sphere " +
+           (s.sphereSolidAngle ? "solid-angle" : "area") + " " + samplerName(s.sampler) +
+           (s.randomizeSamples ? "" : " no-randomize") +
+           (s.textureLod ? "" : " texture-filter none") + " camera " +
+           parsed.value("--camera").value_or("default") +
+           (parsed.has("--aperture") ? " aperture " + *parsed.value("--aperture") : "") +
+           (parsed.has("--focus-distance") ? " focus " + *parsed.value("--focus-distance") : "") +
+           (parsed.has("--target-error") ? " target-error " + *parsed.value("--target-error")
+                                         : "");
+}
+
+// --target-error refuses what would need a sample range it does not have.
+void checkAdaptiveFlags(const ParsedArgs& parsed, const RenderSettings& settings) {
+    for (const char* flag : {"--time-limit", "--checkpoint", "--resume", "--spp-offset",
+                             "--spp-total"})
+        if (parsed.has(flag))
+            throw UsageError(std::string("--target-error with ") + flag +
+                             ": adaptive renders are whole renders (their sample counts differ "
+                             "per pixel)");
+    if (samplerIsFiniteSet(settings.sampler))
+        throw UsageError(std::string("--target-error: the ") + samplerName(settings.sampler) +
+                         " sampler's set is no stratification when a pixel takes part of it "
+                         "(pick sobol, halton, independent or bluenoise)");
+    if (settings.samplesPerPixel < 8)
+        throw UsageError("--target-error needs --spp (the most samples a pixel gets) of at "
+                         "least 8");
+}
+
+} // namespace wf

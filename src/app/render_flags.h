@@ -1,0 +1,27 @@
+// wavefront render's flags (render_flags.cpp): the command's spec, and what is derived from or
+// checked on the parsed flags before the scene is loaded.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "app/cli.h"
+#include "render/wavefront_renderer.h"
+
+namespace wf {
+
+inline constexpr uint32_t kRenderDefaultWidth = 512;
+inline constexpr uint32_t kRenderDefaultMaxDepth = 16;
+
+const CommandSpec& renderSpec();
+// --spp-offset, --spp-total (after settings.samplesPerPixel).
+void applySppRangeFlags(const ParsedArgs& parsed, RenderSettings& settings);
+// --aov's names, each once, in a fixed set.
+std::vector<std::string> parseAovList(const std::string& list);
+// Everything that shapes the image but the seed and the sample range (their own attributes):
+// parts merge only when this agrees (image/render_parts.h).
+std::string renderSettingsKey(const RenderSettings& s, const ParsedArgs& parsed);
+// --target-error refuses what would need a sample range it does not have.
+void checkAdaptiveFlags(const ParsedArgs& parsed, const RenderSettings& settings);
+
+} // namespace wf
