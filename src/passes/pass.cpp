@@ -2,7 +2,7 @@
 
 #include "gpu/buffer.h"
 #include "gpu/timestamp_timer.h"
-#include "render/workgroup.h"
+#include "passes/workgroup.h"
 
 namespace wf {
 

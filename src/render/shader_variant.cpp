@@ -8,7 +8,7 @@
 #include "render/gpu_scene/scene_buffers.h"
 #include "render/shade_kinds.h"
 #include "render/wavefront_renderer.h"
-#include "render/workgroup.h"
+#include "passes/workgroup.h"
 
 namespace wf {
 

@@ -12,7 +12,7 @@
 #include "passes/shade_pass.h"
 #include "passes/shadow_pass.h"
 #include "render/shader_variant.h"
-#include "render/workgroup.h"
+#include "passes/workgroup.h"
 #include "shaders/types/render_types.h"
 
 namespace wf {

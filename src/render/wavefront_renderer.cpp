@@ -11,7 +11,7 @@
 #include "render/samplers/sampler_tables.h"
 #include "render/gpu_scene/scene_buffers.h"
 #include "render/wave_recorder.h"
-#include "render/workgroup.h"
+#include "passes/workgroup.h"
 #include "shaders/types/render_types.h"
 #include "shaders/sampling/sampler_tables.h"
 

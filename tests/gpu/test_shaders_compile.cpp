@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "gpu/shader_compiler.h"
-#include "render/workgroup.h"
+#include "passes/workgroup.h"
 
 namespace wf::test {
 namespace {
