@@ -304,7 +304,7 @@ WF_INLINE bool diffuseOnlySample(BsdfParams m, vec3 wo, vec2 u, WF_OUT(BsdfSampl
 
 // The specular kind's shade pass (WF_BSDF_DELTA_ONLY) shades only materials with Dirac lobes
 // and no diffuse lobe whatever their textures (roughness 0; metallic or transmission exactly 1
-// and untextured: src/render/shade_kinds.cpp). bsdfSample becomes this: the general sample with
+// and untextured: src/passes/shade_kinds.cpp). bsdfSample becomes this: the general sample with
 // the diffuse lobe's probability 0 and the microfacet normal +z, the same arithmetic; nothing
 // has a density, so bsdfEval and bsdfPdf are 0 and next-event estimation drops out.
 WF_INLINE bool deltaOnlySample(BsdfParams m, vec3 wo, float uLobe, WF_OUT(BsdfSample) s) {

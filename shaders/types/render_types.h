@@ -26,7 +26,7 @@ namespace wf::gpu_types {
 
 // Texture filtering by ray cones (ray_cones.glsl): on only in variants with textures, where the
 // path state gains each ray's cone.
-// Shading split by material kind (src/render/shade_kinds.h): 0 or 1, one shade pass for every
+// Shading split by material kind (src/passes/shade_kinds.h): 0 or 1, one shade pass for every
 // hit; more, that many bins, each shaded by its own pass. WF_LIGHT_HIT_BIN takes the misses
 // and sphere-light hits.
 #ifndef WF_SHADE_BINS
@@ -124,7 +124,7 @@ struct DispatchArgs {
     uint count;
 };
 
-// Shade bins (material kinds, src/render/shade_kinds.h) the counters have room for.
+// Shade bins (material kinds, src/passes/shade_kinds.h) the counters have room for.
 #define WF_MAX_SHADE_BINS 4
 
 // Per-depth statistics (queue occupancy per bounce) cover this many depths; deeper bounces are

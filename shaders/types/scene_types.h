@@ -77,7 +77,7 @@ struct Instance {
 #define WF_MATERIAL_ALPHA_MASK 2u  // alpha below alphaCutoff is a hole, for every ray
 #define WF_MATERIAL_ALPHA_BLEND 4u // see the loader for how BLEND is approximated
 // Bits 3-4, set only in the table the GPU reads: the shade bin of the material's kind
-// (WF_SHADE_BINS; src/render/shade_kinds.h).
+// (WF_SHADE_BINS; src/passes/shade_kinds.h).
 #define WF_MATERIAL_SHADE_BIN_SHIFT 3u
 #define WF_MATERIAL_SHADE_BIN_MASK 3u
 #define WF_NO_TEXTURE 0xffffffffu

@@ -5,7 +5,7 @@
 #include <cstddef>
 
 #include "passes/pass.h"
-#include "render/shade_kinds.h"
+#include "passes/shade_kinds.h"
 
 namespace wf {
 

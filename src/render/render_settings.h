@@ -4,7 +4,7 @@
 #include <cstdint>
 
 #include "render/samplers/samplers.h"
-#include "render/shade_kinds.h"
+#include "passes/shade_kinds.h"
 #include "render/shader_variant.h"
 
 namespace wf {

@@ -6,7 +6,7 @@
 
 #include "errors.h"
 #include "render/gpu_scene/scene_buffers.h"
-#include "render/shade_kinds.h"
+#include "passes/shade_kinds.h"
 #include "render/wavefront_renderer.h"
 #include "passes/workgroup.h"
 

@@ -1,4 +1,4 @@
-// Shading split by material kind (src/render/shade_kinds.h): scenes of several kinds shade each
+// Shading split by material kind (src/passes/shade_kinds.h): scenes of several kinds shade each
 // kind in a pass of its own and render what one shade pass renders; scenes of one kind keep
 // the one pass, its shaders and its buffers.
 #include <algorithm>

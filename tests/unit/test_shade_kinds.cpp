@@ -1,7 +1,7 @@
-// Shade kinds (src/render/shade_kinds.h): which pass may shade a material, and the bins.
+// Shade kinds (src/passes/shade_kinds.h): which pass may shade a material, and the bins.
 #include <gtest/gtest.h>
 
-#include "render/shade_kinds.h"
+#include "passes/shade_kinds.h"
 #include "scene/gltf/gltf_materials.h"
 
 namespace wf {

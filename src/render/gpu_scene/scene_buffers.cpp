@@ -2,7 +2,7 @@
 
 #include <cstring>
 
-#include "render/shade_kinds.h"
+#include "passes/shade_kinds.h"
 #include "scene/bvh/bvh_tuning.h"
 #include "scene/bvh/instance_bvh.h"
 #include "render/gpu_scene/table_pages.h"

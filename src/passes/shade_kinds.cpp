@@ -1,4 +1,4 @@
-#include "render/shade_kinds.h"
+#include "passes/shade_kinds.h"
 
 #include <algorithm>
 #include <bit>
