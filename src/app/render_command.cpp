@@ -5,8 +5,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <optional>
-#include <sstream>
-#include <unistd.h>
 
 #include "app/cli.h"
 #include "app/host_memory.h"
