@@ -47,6 +47,16 @@ def error_chart(run, key, xlabel, path, title):
         style = method_style(i, m)
         ax.plot(xs, ys, label="%s (slope %.2f)" % (m["name"], m["slopeSpp"]), **style)
         ax.fill_between(xs, los, his, color=style["color"], alpha=0.15, linewidth=0)
+        # The renders' own estimate beside the measured error: how far their error bars hold
+        # (hollow markers where fewer than half the seeds called it reliable).
+        est = [(a, e, r) for a, e, r in zip(x, m.get("estimatedRelMse", []),
+                                            m.get("estimateReliable", []))
+               if a is not None and e is not None and a > 0 and e > 0]
+        if est:
+            ex, ey, er = zip(*est)
+            ax.plot(ex, ey, color=style["color"], linestyle=":", linewidth=1)
+            ax.scatter(ex, ey, s=12, marker="s", color=style["color"], zorder=3,
+                       facecolors=[style["color"] if r >= 0.5 else "none" for r in er])
     if all_x and run["methods"]:
         # 1/N through the first method's first point, across the whole x range.
         first = run["methods"][0]
@@ -61,7 +71,7 @@ def error_chart(run, key, xlabel, path, title):
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel(xlabel)
-    ax.set_ylabel("relMSE (median, IQR band)")
+    ax.set_ylabel("relMSE (median, IQR band); dotted: own estimate")
     ax.set_title(title, fontsize=10)
     ax.grid(True, which="both", alpha=0.25)
     # Outside the axes: inside, it hides the curves of some scenes.

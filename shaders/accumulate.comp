@@ -5,7 +5,8 @@
 // NaN or Inf component is dropped (zeroed) and counted; the test is on the bit pattern so
 // that no fast-math pass can fold it away.
 // In: radiance of the wave's paths (with --aov, their first hits too). Out: film[pixel]
-// (with --aov, aovFilm[2 pixel ..]; with WF_SECOND_MOMENT, momentFilm[pixel]),
+// (with --aov, aovFilm[2 pixel ..]; with WF_SECOND_MOMENT, momentFilm[pixel]: the sums of
+// squares and the largest component of any sample, which render/error_estimate.h reads),
 // counters.nonFiniteSamples.
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = WF_WORKGROUP_SIZE) in;
@@ -40,6 +41,7 @@ void main() {
             sum.rgb += value;
 #if WF_SECOND_MOMENT
             squares.rgb += value * value;
+            squares.a = max(squares.a, max(value.r, max(value.g, value.b)));
 #endif
         } else {
             ++dropped;

@@ -53,7 +53,7 @@ layout(std430, binding = WF_BINDING_AOV_FILM) buffer AovFilmBuffer {
 #endif
 #if WF_SECOND_MOMENT
 layout(std430, binding = WF_BINDING_MOMENT_FILM) buffer MomentFilmBuffer {
-    vec4 momentFilm[]; // rgb: sum of radiance squared, beside the film's sum (a: unused)
+    vec4 momentFilm[]; // rgb: sum of radiance squared, beside the film's sum; a: largest sample
 };
 #endif
 #if WF_ADAPTIVE

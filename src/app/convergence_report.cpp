@@ -44,7 +44,7 @@ std::string jsonArray(const std::vector<double>& values) {
 void writeConvergenceCsv(const std::string& path, const std::vector<MethodRun>& runs) {
     std::ostringstream csv;
     csv << "method,sampler,light_sampling,seed_index,spp,gpu_seconds,wall_seconds,relmse,mse,"
-           "bias\n";
+           "bias,estimated_relmse,estimate_reliable\n";
     for (const MethodRun& run : runs) {
         for (size_t s = 0; s < run.perSeed.size(); ++s) {
             for (const Checkpoint& c : run.perSeed[s]) {
@@ -52,7 +52,9 @@ void writeConvergenceCsv(const std::string& path, const std::vector<MethodRun>& 
                     << lightSamplingName(run.method.lightSampling) << ',' << s << ',' << c.spp
                     << ',' << format("%.6g", c.gpuSeconds) << ',' << format("%.6g", c.wallSeconds)
                     << ',' << format("%.6g", c.error.relMse) << ',' << format("%.6g", c.error.mse)
-                    << ',' << format("%.6g", c.error.bias) << '\n';
+                    << ',' << format("%.6g", c.error.bias) << ','
+                    << format("%.6g", c.estimate.relMse) << ','
+                    << (c.estimate.reliable ? 1 : 0) << '\n';
             }
         }
     }
@@ -117,11 +119,12 @@ void writeConvergenceJson(const std::string& path, const ConvergenceInfo& info,
       << ",\n  \"target\": " << jsonNumber(info.target) << ",\n  \"methods\": [\n";
     for (size_t m = 0; m < summaries.size(); ++m) {
         const MethodSummary& s = summaries[m];
-        std::vector<double> spp, gpu, wall, rel, low, high, mse, bias;
+        std::vector<double> spp, gpu, wall, rel, low, high, mse, bias, estimated, reliable;
         for (const CheckpointSummary& p : s.points) {
             spp.push_back(p.spp), gpu.push_back(p.gpuSeconds), wall.push_back(p.wallSeconds);
             rel.push_back(p.relMse), low.push_back(p.relMseLow), high.push_back(p.relMseHigh);
             mse.push_back(p.mse), bias.push_back(p.bias);
+            estimated.push_back(p.estimatedRelMse), reliable.push_back(p.estimateReliable);
         }
         j << "    {\"name\": " << jsonQuoted(s.name) << ", \"sampler\": "
           << jsonQuoted(samplerName(runs[m].method.sampler)) << ", \"lightSampling\": "
@@ -130,7 +133,9 @@ void writeConvergenceJson(const std::string& path, const ConvergenceInfo& info,
           << ",\n     \"wallSeconds\": " << jsonArray(wall) << ",\n     \"relMse\": "
           << jsonArray(rel) << ",\n     \"relMseQ1\": " << jsonArray(low)
           << ",\n     \"relMseQ3\": " << jsonArray(high) << ",\n     \"mse\": " << jsonArray(mse)
-          << ",\n     \"bias\": " << jsonArray(bias) << ",\n     \"slopeSpp\": "
+          << ",\n     \"bias\": " << jsonArray(bias) << ",\n     \"estimatedRelMse\": "
+          << jsonArray(estimated) << ",\n     \"estimateReliable\": " << jsonArray(reliable)
+          << ",\n     \"slopeSpp\": "
           << jsonNumber(s.slopeSpp) << ", \"slopeTime\": " << jsonNumber(s.slopeTime)
           << ", \"timeToTarget\": " << jsonNumber(s.timeToTarget) << ", \"extrapolated\": "
           << (s.extrapolated ? "true" : "false") << "}" << (m + 1 < summaries.size() ? "," : "")

@@ -5,7 +5,10 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <functional>
+#include <string>
 
+#include "image/error_estimate.h"
 #include "render/adaptive_sampling.h"
 #include "render/wavefront_renderer.h"
 
@@ -15,6 +18,10 @@ class ProgressLine {
 public:
     ProgressLine(bool enabled, double timeLimit)
         : enabled_(enabled), tty_(isatty(STDERR_FILENO)), timeLimit_(timeLimit) {}
+    // The line shows the image's error estimate too, refreshed at most once a second (it reads
+    // the film back).
+    void showEstimate(std::function<ErrorEstimate()> estimate) { estimate_ = std::move(estimate); }
+
     void update(const WaveProgress& progress, bool stopped = false) {
         if (!enabled_)
             return;
@@ -30,16 +37,22 @@ public:
         char limit[64] = "";
         if (timeLimit_ > 0.0)
             std::snprintf(limit, sizeof limit, " of a %g s limit", timeLimit_);
-        std::fprintf(stderr, "%swavefront: %u/%u spp, %.1f s elapsed%s, %s %.1f s%s",
+        if (estimate_ && (last || progress.secondsElapsed - lastEstimated_ >= 1.0)) {
+            estimateText_ = ", relMSE ~" + describeErrorEstimate(estimate_());
+            lastEstimated_ = progress.secondsElapsed;
+        }
+        std::fprintf(stderr, "%swavefront: %u/%u spp, %.1f s elapsed%s, %s %.1f s%s%s",
                      tty_ ? "\r" : "", progress.samplesDone, progress.samplesTotal,
                      progress.secondsElapsed, limit, stopped ? "stopped at the limit after" : "ETA",
-                     stopped ? progress.secondsElapsed : eta, tty_ && !last ? "   " : "\n");
+                     stopped ? progress.secondsElapsed : eta, estimateText_.c_str(),
+                     tty_ && !last ? "   " : "\n");
         std::fflush(stderr);
     }
 
     void update(const AdaptiveProgress& round, double target) {
         if (!enabled_)
             return;
+        // A later image round may follow; each image's last level ends its line.
         const bool last = round.stage == "render" && round.round == round.rounds;
         if (!tty_ && !last && round.seconds - lastPrinted_ < 1.0 && round.stage != "pilot")
             return;
@@ -48,10 +61,13 @@ public:
         if (round.predictedRelMse > 0.0)
             std::snprintf(predicted, sizeof predicted, " (predicted %.3g)",
                           round.predictedRelMse);
-        std::fprintf(stderr, "%swavefront: target relMSE %g%s: %s round %u/%u, %u pixels to %u "
+        char image[32] = "";
+        if (round.stage == "render")
+            std::snprintf(image, sizeof image, " %u", round.imageRound);
+        std::fprintf(stderr, "%swavefront: target relMSE %g%s: %s%s level %u/%u, %u pixels to %u "
                              "spp, %.1f s elapsed%s",
-                     tty_ ? "\r" : "", target, predicted, round.stage.c_str(), round.round,
-                     round.rounds, round.activePixels, round.level, round.seconds,
+                     tty_ ? "\r" : "", target, predicted, round.stage.c_str(), image,
+                     round.round, round.rounds, round.activePixels, round.level, round.seconds,
                      tty_ && !last && round.stage != "pilot" ? "   " : "\n");
         std::fflush(stderr);
     }
@@ -61,6 +77,9 @@ private:
     bool tty_;
     double timeLimit_;
     double lastPrinted_ = -1.0;
+    std::function<ErrorEstimate()> estimate_;
+    std::string estimateText_;
+    double lastEstimated_ = -1.0;
 };
 
 } // namespace wf

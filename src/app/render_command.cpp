@@ -18,6 +18,7 @@
 #include "gpu/context.h"
 #include "image/render_parts.h"
 #include "render/adaptive_sampling.h"
+#include "render/film_error.h"
 #include "render/gpu_scene/scene_buffers.h"
 #include "render/wavefront_renderer.h"
 #include "scene/scene_summary.h"
@@ -137,26 +138,28 @@ void renderAdaptively(WavefrontRenderer& renderer, const RenderSettings& setting
     AdaptiveSettings adaptive;
     adaptive.targetError = targetError;
     adaptive.maxSpp = settings.samplesPerPixel;
-    ProgressLine progress(!output.quiet, 0.0);
+    adaptive.timeLimitSeconds = settings.timeLimitSeconds;
+    ProgressLine progress(!output.quiet, settings.timeLimitSeconds);
     const AdaptiveResult result = renderAdaptive(
         renderer, settings.seed, adaptive, settings.width, settings.height,
         [&](const AdaptiveProgress& round) { progress.update(round, targetError); });
     const SampleAllocation& allocation = result.allocation;
     run.path = "this render";
-    run.spp = static_cast<uint32_t>(std::lround(allocation.meanSpp));
+    run.spp = static_cast<uint32_t>(std::lround(result.meanSpp));
     run.rgb = result.rgb;
     run.renderSeconds = result.stats.seconds;
-    char numbers[6][32];
+    run.errorEstimate = result.estimate;
+    char numbers[4][32];
     std::snprintf(numbers[0], sizeof numbers[0], "%g", targetError);
-    std::snprintf(numbers[1], sizeof numbers[1], "%.6g", result.estimatedRelMse);
-    std::snprintf(numbers[2], sizeof numbers[2], "%.6g", allocation.predictedRelMse);
-    std::snprintf(numbers[3], sizeof numbers[3], "%.6g", allocation.meanSpp);
-    std::snprintf(numbers[4], sizeof numbers[4], "%u", result.pilotSpp);
-    std::snprintf(numbers[5], sizeof numbers[5], "%u", allocation.levels.front());
+    std::snprintf(numbers[1], sizeof numbers[1], "%.6g", allocation.predictedRelMse);
+    std::snprintf(numbers[2], sizeof numbers[2], "%.6g", result.meanSpp);
+    std::snprintf(numbers[3], sizeof numbers[3], "%u", result.pilotSpp);
     writeRenderPart(output.exr, run,
-                    {{"targetError", numbers[0]}, {"estimatedRelMse", numbers[1]},
-                     {"predictedRelMse", numbers[2]}, {"meanSpp", numbers[3]},
-                     {"pilotSpp", numbers[4]}, {"minSpp", numbers[5]},
+                    {{"targetError", numbers[0]}, {"targetMet", result.targetMet ? "true" : "false"},
+                     {"stoppedBy", result.stoppedBy}, {"predictedRelMse", numbers[1]},
+                     {"meanSpp", numbers[2]}, {"pilotSpp", numbers[3]},
+                     {"imageRounds", std::to_string(result.imageRounds)},
+                     {"minSpp", std::to_string(allocation.levels.front())},
                      {"maxSpp", std::to_string(settings.samplesPerPixel)}},
                     true,
                     output.aovs.empty()
@@ -167,33 +170,49 @@ void renderAdaptively(WavefrontRenderer& renderer, const RenderSettings& setting
     reportPeakHostMemory(verbose, statsContext);
     if (output.json) {
         StatsContext& context = statsContext;
+        context.extraFields.push_back({"errorEstimate", errorEstimateJson(result.estimate)});
         context.extraFields.push_back(
             {"adaptive",
              std::string("{\"targetError\": ") + jsonNumber(targetError) +
-                 ", \"estimatedRelMse\": " + jsonNumber(result.estimatedRelMse) +
+                 ", \"targetMet\": " + (result.targetMet ? "true" : "false") +
+                 ", \"stoppedBy\": " + jsonQuoted(result.stoppedBy) +
+                 ", \"estimatedRelMse\": " + jsonNumber(result.estimate.relMse) +
                  ", \"predictedRelMse\": " + jsonNumber(allocation.predictedRelMse) +
-                 ", \"targetMet\": " + (allocation.targetMet ? "true" : "false") +
-                 ", \"meanSpp\": " + jsonNumber(allocation.meanSpp) +
+                 ", \"meanSpp\": " + jsonNumber(result.meanSpp) +
                  ", \"pilotSpp\": " + std::to_string(result.pilotSpp) +
+                 ", \"imageRounds\": " + std::to_string(result.imageRounds) +
                  ", \"minSpp\": " + std::to_string(allocation.levels.front()) +
                  ", \"maxSpp\": " + std::to_string(settings.samplesPerPixel) +
-                 ", \"rounds\": " + std::to_string(allocation.levels.size()) + "}"});
+                 ", \"levels\": " + std::to_string(allocation.levels.size()) + "}"});
         RenderStats stats = result.stats;
         stats.samplesPerPixel = run.spp;
         writeStatsJson(*output.json, stats, context);
     }
-    if (!allocation.targetMet)
-        std::fprintf(stderr, "wavefront: warning: target relMSE %g is out of reach within "
-                             "--spp %u (predicted %.3g with every pixel at the cap)\n",
-                     targetError, settings.samplesPerPixel, allocation.predictedRelMse);
+    if (!result.targetMet) {
+        const std::string why =
+            result.stoppedBy == "time-limit" ? "the time limit came"
+            : result.stoppedBy == "rounds"   ? "the rounds ran out"
+                                             : "every pixel reached --spp " +
+                                                 std::to_string(settings.samplesPerPixel);
+        std::fprintf(stderr,
+                     "wavefront: warning: target relMSE %g not met: %s after %u image round%s "
+                     "(%.1f spp on average in the image, %llu paths in all); the image's "
+                     "estimated relMSE is %s%s\n",
+                     targetError, why.c_str(), result.imageRounds,
+                     result.imageRounds == 1 ? "" : "s", result.meanSpp,
+                     static_cast<unsigned long long>(result.stats.paths),
+                     describeErrorEstimate(result.estimate).c_str(),
+                     result.estimate.reliable ? "" : (": " + result.estimate.reason).c_str());
+    }
     if (!output.quiet)
         std::fprintf(stderr, "wavefront: wrote %s and %s (adaptive: %.1f spp on average, %u to "
-                             "%u; estimated relMSE %.3g for a target of %g; %.0f paths/s with "
-                             "the %u-spp pilot)\n",
-                     output.exr.c_str(), previewPathFor(output.exr).c_str(), allocation.meanSpp,
-                     allocation.levels.front(), settings.samplesPerPixel,
-                     result.estimatedRelMse, targetError,
-                     result.stats.paths / std::max(result.stats.seconds, 1e-9), result.pilotSpp);
+                             "%u, %u image round%s; estimated relMSE %s for a target of %g; "
+                             "%.0f paths/s)\n",
+                     output.exr.c_str(), previewPathFor(output.exr).c_str(), result.meanSpp,
+                     allocation.levels.front(), settings.samplesPerPixel, result.imageRounds,
+                     result.imageRounds == 1 ? "" : "s",
+                     describeErrorEstimate(result.estimate).c_str(), targetError,
+                     result.stats.paths / std::max(result.stats.seconds, 1e-9));
 }
 
 } // namespace
@@ -303,6 +322,8 @@ int runRenderCommand(const std::vector<std::string>& args) {
         part.spp = renderer.samplesDone();
         part.rgb = renderer.readImage();
         part.renderSeconds = renderer.stats().seconds;
+        if (part.spp > 0)
+            part.errorEstimate = estimateFilmError(renderer.readMoments(), settings.sampler);
         if (!resumed)
             return part;
         if (part.spp == 0)
@@ -321,6 +342,8 @@ int runRenderCommand(const std::vector<std::string>& args) {
     };
 
     ProgressLine progress(!quiet, settings.timeLimitSeconds);
+    progress.showEstimate(
+        [&]() { return estimateFilmError(renderer.readMoments(), settings.sampler); });
     WaveProgress last{};
     double lastCheckpoint = 0.0;
     renderer.render(
@@ -359,12 +382,19 @@ int runRenderCommand(const std::vector<std::string>& args) {
     if (checkpointPath)
         writeCheckpoint();
     reportPeakHostMemory(verbose, statsContext);
-    if (auto json = parsed.value("--json"))
+    const ErrorEstimate estimate = finished.errorEstimate.value_or(ErrorEstimate{
+        0.0, 0.0, 0.0, 0, 0, false, "the checkpoint resumed carries no error estimate"});
+    if (auto json = parsed.value("--json")) {
+        statsContext.extraFields.push_back({"errorEstimate", errorEstimateJson(estimate)});
         writeStatsJson(*json, stats, statsContext);
+    }
     if (!quiet)
-        std::fprintf(stderr, "wavefront: wrote %s and %s (%u spp, %.0f paths/s)\n",
+        std::fprintf(stderr, "wavefront: wrote %s and %s (%u spp, %.0f paths/s, estimated "
+                             "relMSE %s%s)\n",
                      output->c_str(), previewPathFor(*output).c_str(), finished.spp,
-                     stats.paths / std::max(stats.seconds, 1e-9));
+                     stats.paths / std::max(stats.seconds, 1e-9),
+                     describeErrorEstimate(estimate).c_str(),
+                     estimate.reliable ? "" : (": " + estimate.reason).c_str());
     return validationExitCode(context);
 }
 

@@ -28,12 +28,17 @@ const CommandSpec& renderSpec() {
                 {"--time-limit", "", "SECONDS", "stop before the sample pass that would end past "
                                                 "SECONDS of rendering (at least one pass; the EXR's "
                                                 "spp says how many were done; not with the "
-                                                "finite-set samplers)"},
+                                                "finite-set samplers); with --target-error, "
+                                                "whichever comes first"},
                 {"--target-error", "", "R", "adaptive sampling: a pilot pass, then per-pixel "
                                             "sample counts that bring the image's estimated "
-                                            "relMSE to R, --spp the most any pixel gets (default "
-                                            "then 1024); unbiased (the pilot is not in the "
-                                            "image); not with --time-limit, --checkpoint, "
+                                            "relMSE to R, in rounds (each image the next one's "
+                                            "pilot) until the image's own error estimate is "
+                                            "reliable and at most R, --spp caps every pixel or "
+                                            "the time limit comes; --spp the most any pixel gets "
+                                            "(default then 1024); unbiased (only the last round "
+                                            "is in the image); the EXR and JSON say targetMet "
+                                            "and why it stopped; not with --checkpoint, "
                                             "--resume, --spp-offset or the finite-set samplers"},
                 {"--checkpoint", "", "FILE.exr", "write the image so far there every "
                                                  "--checkpoint-every seconds and on SIGINT or "
@@ -135,8 +140,7 @@ std::string renderSettingsKey(const RenderSettings& s, const ParsedArgs& parsed)
 
 // --target-error refuses what would need a sample range it does not have.
 void checkAdaptiveFlags(const ParsedArgs& parsed, const RenderSettings& settings) {
-    for (const char* flag : {"--time-limit", "--checkpoint", "--resume", "--spp-offset",
-                             "--spp-total"})
+    for (const char* flag : {"--checkpoint", "--resume", "--spp-offset", "--spp-total"})
         if (parsed.has(flag))
             throw UsageError(std::string("--target-error with ") + flag +
                              ": adaptive renders are whole renders (their sample counts differ "

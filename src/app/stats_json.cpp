@@ -42,6 +42,14 @@ std::string number(double value) { return jsonNumber(value); }
 
 } // namespace
 
+std::string errorEstimateJson(const ErrorEstimate& e) {
+    return "{\"relMse\": " + jsonNumber(e.relMse) + ", \"standardError\": " +
+           jsonNumber(e.standardError) + ", \"fromSingleSamples\": " +
+           jsonNumber(e.singleSampleShare) + ", \"reliable\": " +
+           (e.reliable ? "true" : "false") + ", \"reason\": " + jsonQuoted(e.reason) +
+           ", \"upperBound\": " + (e.upperBound ? "true" : "false") + "}";
+}
+
 std::string statsToJson(const RenderStats& stats, const StatsContext& context) {
     const double seconds = stats.seconds > 0.0 ? stats.seconds : 1e-9;
     const uint64_t totalRays = stats.cameraRays + stats.extensionRays + stats.shadowRays;

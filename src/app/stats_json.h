@@ -4,6 +4,7 @@
 #include <utility>
 #include <vector>
 
+#include "image/error_estimate.h"
 #include "render/wavefront_renderer.h"
 
 namespace wf {
@@ -23,6 +24,9 @@ struct StatsContext {
 // not finite).
 std::string jsonQuoted(const std::string& text);
 std::string jsonNumber(double value);
+
+// {"relMse", "standardError", "fromSingleSamples", "reliable", "reason", "upperBound"}
+std::string errorEstimateJson(const ErrorEstimate& estimate);
 
 std::string statsToJson(const RenderStats& stats, const StatsContext& context);
 void writeStatsJson(const std::string& path, const RenderStats& stats,

@@ -77,6 +77,25 @@ RenderPart readRenderPart(const std::string& path) {
     part.sppOffset = count(path, "sppOffset");
     part.sppTotal = count(path, "sppTotal");
     part.renderSeconds = std::stod(attribute(path, "renderSeconds"));
+    if (auto relMse = readExrAttribute(path, "estimatedRelMse")) {
+        ErrorEstimate estimate;
+        auto number = [&](const char* name) {
+            auto text = readExrAttribute(path, name);
+            try {
+                return text ? std::stod(*text) : 0.0;
+            } catch (const std::exception&) {
+                throw InputError(path + ": attribute '" + name + "' is not a number: " + *text);
+            }
+        };
+        estimate.relMse = number("estimatedRelMse");
+        estimate.standardError = number("estimatedRelMseError");
+        estimate.singleSampleShare = number("estimatedRelMseFromSingleSamples");
+        estimate.pixels = estimate.pixelsTotal = uint32_t(part.width) * uint32_t(part.height);
+        estimate.reliable = readExrAttribute(path, "errorEstimateReliable") == "true";
+        estimate.reason = readExrAttribute(path, "errorEstimateReason").value_or("");
+        estimate.upperBound = readExrAttribute(path, "errorEstimateIsUpperBound") == "true";
+        part.errorEstimate = estimate;
+    }
     if (part.spp == 0)
         throw InputError(path + ": a part of no samples");
     return part;
@@ -92,6 +111,21 @@ void writeRenderPart(const std::string& path, const RenderPart& part,
     std::vector<std::pair<std::string, std::string>> strings = {
         {"software", "Wavefront"}, {"scene", part.scene}, {"sampler", part.sampler},
         {"sceneHash", part.sceneHash}, {"renderSettings", part.renderSettings}};
+    if (const auto& estimate = part.errorEstimate) {
+        char numbers[3][32];
+        std::snprintf(numbers[0], sizeof numbers[0], "%.6g", estimate->relMse);
+        std::snprintf(numbers[1], sizeof numbers[1], "%.6g", estimate->standardError);
+        std::snprintf(numbers[2], sizeof numbers[2], "%.6g", estimate->singleSampleShare);
+        strings.insert(strings.end(), {{"estimatedRelMse", numbers[0]},
+                                       {"estimatedRelMseError", numbers[1]},
+                                       {"estimatedRelMseFromSingleSamples", numbers[2]},
+                                       {"errorEstimateReliable",
+                                        estimate->reliable ? "true" : "false"},
+                                       {"errorEstimateIsUpperBound",
+                                        estimate->upperBound ? "true" : "false"}});
+        if (!estimate->reliable)
+            strings.push_back({"errorEstimateReason", estimate->reason});
+    }
     strings.insert(strings.end(), extra.begin(), extra.end());
     writeExr(path, part.width, part.height, part.rgb, strings,
              {{"renderSeconds", static_cast<float>(part.renderSeconds)}},
@@ -153,6 +187,8 @@ MergedRender mergeRenderParts(const std::vector<RenderPart>& parts) {
     merged.image.path.clear();
     merged.image.spp = 0;
     merged.image.renderSeconds = 0.0;
+    merged.image.errorEstimate.reset();
+    std::vector<ErrorEstimate> estimates;
     for (const RenderPart* part : order) {
         const uint32_t end = part->sppOffset + part->spp;
         if (part->sppOffset < runEnd)
@@ -168,7 +204,11 @@ MergedRender mergeRenderParts(const std::vector<RenderPart>& parts) {
         weights.push_back(part->spp);
         merged.image.spp += part->spp;
         merged.image.renderSeconds += part->renderSeconds;
+        if (part->errorEstimate)
+            estimates.push_back(*part->errorEstimate);
     }
+    if (estimates.size() == order.size())
+        merged.image.errorEstimate = mergeErrorEstimates(estimates, weights);
     appendRange(merged.ranges, runStart, runEnd);
     merged.image.rgb = mergeBySampleCount(images, weights);
     return merged;

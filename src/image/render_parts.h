@@ -5,9 +5,11 @@
 // float rounding.
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "image/error_estimate.h"
 #include "image/exr_io.h"
 
 namespace wf {
@@ -30,6 +32,12 @@ struct RenderPart {
     uint32_t spp = 0;
     uint32_t sppTotal = 0;
     double renderSeconds = 0.0;
+    // The render's estimate of its own relMSE (attributes estimatedRelMse, estimatedRelMseError,
+    // estimatedRelMseFromSingleSamples, errorEstimateReliable, errorEstimateReason,
+    // errorEstimateIsUpperBound); absent in
+    // files of versions before it. A merge carries the parts' merged estimate when every part
+    // has one.
+    std::optional<ErrorEstimate> errorEstimate;
 };
 
 // Reads a part; InputError naming the file and the attribute when one is missing.

@@ -7,6 +7,7 @@
 
 #include "errors.h"
 #include "image/error_metrics.h"
+#include "render/film_error.h"
 
 namespace wf {
 
@@ -162,51 +163,152 @@ SampleAllocation allocateSamples(const std::vector<double>& relVariance,
     return allocation;
 }
 
+namespace {
+
+// The seed of image round r (1-based): round 1 uses the render's own seed, later rounds
+// streams of their own, apart from the pilot's.
+uint32_t roundSeed(uint32_t seed, uint32_t round) {
+    return round == 1 ? seed : pilotSeedFor(seed + 0x68E31DA4u * round) ^ 0x40000000u;
+}
+
+// The evidence of several independent renders of the same pixels: their moments summed.
+void addMoments(FilmMoments& into, const FilmMoments& more) {
+    for (size_t i = 0; i < into.sum.size(); ++i) {
+        into.sum[i] += more.sum[i];
+        into.squares[i] += more.squares[i];
+    }
+    for (size_t i = 0; i < into.count.size(); ++i) {
+        into.count[i] += more.count[i];
+        into.largest[i] = std::max(into.largest[i], more.largest[i]);
+    }
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+} // namespace
+
 AdaptiveResult renderAdaptive(WavefrontRenderer& renderer, uint32_t seed,
                               const AdaptiveSettings& settings, uint32_t width, uint32_t height,
                               const std::function<void(const AdaptiveProgress&)>& onRound) {
     if (size_t(width) * height != renderer.pixelCount())
         throw InternalError("renderAdaptive: image size differs from the renderer's");
+    const auto start = std::chrono::steady_clock::now();
+    const bool target = settings.targetError > 0.0;
     AdaptiveResult result;
     result.pilotSpp = settings.pilotSpp ? settings.pilotSpp : pilotSppFor(settings.maxSpp);
     std::vector<uint32_t> everyPixel(renderer.pixelCount());
     std::iota(everyPixel.begin(), everyPixel.end(), 0u);
+    auto addStats = [&](bool first) {
+        if (first)
+            result.stats = renderer.stats();
+        else
+            addRenderStats(result.stats, renderer.stats());
+    };
+    auto overTime = [&](double more) {
+        return settings.timeLimitSeconds > 0.0 &&
+               secondsSince(start) + more > settings.timeLimitSeconds;
+    };
 
     renderer.restart(pilotSeedFor(seed), 0);
     renderer.renderPixelList(everyPixel, 0, result.pilotSpp);
-    result.stats = renderer.stats();
+    addStats(true);
     if (onRound)
-        onRound({"pilot", 1, 1, renderer.pixelCount(), result.pilotSpp, result.stats.seconds,
-                 0.0});
-    const std::vector<double> relVariance = relativeSampleVariance(renderer.readMoments());
-    result.allocation = allocateSamples(relVariance, defensiveShape(relVariance, width, height),
-                                        settings);
-    const SampleAllocation& allocation = result.allocation;
+        onRound({"pilot", 1, 1, 1, renderer.pixelCount(), result.pilotSpp,
+                 result.stats.seconds, 0.0});
+    FilmMoments evidence = renderer.readMoments();
+    double previousMean = 0.0;
+    for (uint32_t round = 1;; ++round) {
+        const std::vector<double> relVariance = relativeSampleVariance(evidence);
+        const std::vector<double> shape = defensiveShape(relVariance, width, height);
+        SampleAllocation allocation = allocateSamples(relVariance, shape, settings);
+        // A later round exists because the last image was not evidence enough: it at least
+        // doubles the samples, so that rounds end and rare paths get their chance.
+        if (round > 1 && allocation.meanSpp < 2.0 * previousMean) {
+            AdaptiveSettings doubled = settings;
+            doubled.targetError = 0.0;
+            doubled.meanSpp = 2.0 * previousMean;
+            const bool reachable = allocation.targetMet;
+            allocation = allocateSamples(relVariance, shape, doubled);
+            allocation.targetMet = reachable;
+        }
+        const uint32_t most = *std::max_element(allocation.spp.begin(), allocation.spp.end());
+        const auto levels = static_cast<uint32_t>(
+            std::find(allocation.levels.begin(), allocation.levels.end(), most) -
+            allocation.levels.begin() + 1);
+        // A round after the first starts only if the pace so far says it ends in time.
+        const double secondsPerPath =
+            result.stats.seconds / std::max<double>(result.stats.paths, 1);
+        if (round > 1 &&
+            overTime(allocation.meanSpp * renderer.pixelCount() * secondsPerPath)) {
+            result.stoppedBy = "time-limit";
+            break;
+        }
 
-    renderer.restart(seed, 0);
-    const uint32_t most = *std::max_element(allocation.spp.begin(), allocation.spp.end());
-    const auto rounds = static_cast<uint32_t>(
-        std::find(allocation.levels.begin(), allocation.levels.end(), most) -
-        allocation.levels.begin() + 1);
-    uint32_t previous = 0;
-    for (uint32_t k = 0; k < rounds; ++k) {
-        const uint32_t level = allocation.levels[k];
-        std::vector<uint32_t> active;
-        for (uint32_t i = 0; i < renderer.pixelCount(); ++i)
-            if (allocation.spp[i] >= level)
-                active.push_back(i);
-        renderer.renderPixelList(active, previous, level - previous);
-        previous = level;
-        if (onRound)
-            onRound({"render", k + 1, rounds, uint32_t(active.size()), level,
-                     result.stats.seconds + renderer.stats().seconds,
-                     allocation.predictedRelMse});
+        renderer.restart(roundSeed(seed, round), 0);
+        uint32_t previous = 0;
+        bool cut = false;
+        for (uint32_t k = 0; k < levels; ++k) {
+            const uint32_t level = allocation.levels[k];
+            std::vector<uint32_t> active;
+            for (uint32_t i = 0; i < renderer.pixelCount(); ++i)
+                if (allocation.spp[i] >= level)
+                    active.push_back(i);
+            // Whole levels only, while the pace so far says they end in time (the first level
+            // always runs, as a time-limited render's first pass does).
+            const double pace = (result.stats.seconds + renderer.stats().seconds) /
+                                std::max<double>(result.stats.paths + renderer.stats().paths, 1);
+            if (k > 0 && overTime(double(active.size()) * (level - previous) * pace)) {
+                cut = true;
+                break;
+            }
+            renderer.renderPixelList(active, previous, level - previous);
+            previous = level;
+            if (onRound)
+                onRound({"render", round, k + 1, levels, uint32_t(active.size()), level,
+                         result.stats.seconds + renderer.stats().seconds,
+                         allocation.predictedRelMse});
+        }
+        addStats(false);
+        const FilmMoments film = renderer.readMoments();
+        result.allocation = std::move(allocation);
+        result.imageRounds = round;
+        result.estimate = estimateFilmError(film, renderer.variant().sampler);
+        result.rgb = renderer.readImage();
+        result.sampleCounts = film.count;
+        result.meanSpp = 0.0;
+        for (float n : film.count)
+            result.meanSpp += n;
+        result.meanSpp /= std::max<size_t>(film.count.size(), 1);
+        result.targetMet = target && result.estimate.reliable &&
+                           result.estimate.relMse <= settings.targetError;
+        if (!target) {
+            result.stoppedBy = "budget";
+            break;
+        }
+        if (result.targetMet) {
+            result.stoppedBy = "target";
+            break;
+        }
+        if (cut) {
+            result.stoppedBy = "time-limit";
+            break;
+        }
+        // No round can add samples once every pixel had the cap.
+        if (result.allocation.levels.front() == settings.maxSpp ||
+            std::all_of(result.allocation.spp.begin(), result.allocation.spp.end(),
+                        [&](uint32_t n) { return n == settings.maxSpp; })) {
+            result.stoppedBy = "spp";
+            break;
+        }
+        if (round == settings.maxRounds) {
+            result.stoppedBy = "rounds";
+            break;
+        }
+        previousMean = result.meanSpp;
+        addMoments(evidence, film); // independent of the next round's samples
     }
-    addRenderStats(result.stats, renderer.stats());
-    const FilmMoments film = renderer.readMoments();
-    result.estimatedRelMse = meanOf(relativeErrorOfMean(film));
-    result.rgb = renderer.readImage();
-    result.sampleCounts = film.count;
     return result;
 }
 

@@ -6,13 +6,21 @@
 // counts and the pilot thrown away. The counts depend only on the pilot, whose samples are
 // independent of the image's, so each pixel's mean stays unbiased; a rule that stops a pixel
 // on its own samples would not be (it stops early where its samples happen to agree, which
-// is where a rare bright path has not been found yet). docs/architecture.md says more.
+// is where a rare bright path has not been found yet).
+// With a target, the image's own error estimate (image/error_estimate.h) then decides whether
+// it is done: the target is met only when that estimate is at most the target and reliable.
+// Otherwise the image becomes the pilot of another round, rendered afresh with at least twice
+// the samples, until the target is met, --spp caps every pixel, or the time limit comes. Only
+// the last round's samples make the image (each round's counts come from earlier rounds only,
+// so it stays unbiased); the earlier rounds' cost is in the timings. docs/architecture.md says
+// more.
 #pragma once
 #include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
 
+#include "image/error_estimate.h"
 #include "render/wavefront_renderer.h"
 
 namespace wf {
@@ -22,6 +30,8 @@ struct AdaptiveSettings {
     double meanSpp = 0.0;     // the budget, samples per pixel on average (targetError 0)
     uint32_t maxSpp = 64;     // no pixel gets more (--spp)
     uint32_t pilotSpp = 0;    // 0: pilotSppFor(maxSpp)
+    double timeLimitSeconds = 0.0; // --time-limit with a target: no round starts past it (0: none)
+    uint32_t maxRounds = 8;   // image rounds at most (with a target)
 };
 
 uint32_t pilotSppFor(uint32_t maxSpp); // maxSpp / 16, within 4 .. 16 (and at most maxSpp)
@@ -68,6 +78,7 @@ SampleAllocation allocateSamples(const std::vector<double>& relVariance,
 
 struct AdaptiveProgress {
     std::string stage;      // "pilot" or "render"
+    uint32_t imageRound = 1; // with a target, the image round this stage belongs to
     uint32_t round = 0;     // 1-based within the stage
     uint32_t rounds = 0;
     uint32_t activePixels = 0;
@@ -81,8 +92,14 @@ struct AdaptiveResult {
     std::vector<float> sampleCounts; // per pixel
     SampleAllocation allocation;
     uint32_t pilotSpp = 0;
-    double estimatedRelMse = 0.0;    // from the image's own second moments
-    RenderStats stats;               // both stages: paths, rays and seconds
+    ErrorEstimate estimate;          // the image's own (image/error_estimate.h)
+    bool targetMet = false;          // a target: the estimate reliable and at most it
+    // Why the rounds stopped: "target" (met), "spp" (every pixel at --spp, or no round could
+    // add samples), "time-limit", "rounds" (maxRounds), "budget" (meanSpp mode: one round).
+    std::string stoppedBy;
+    uint32_t imageRounds = 0;        // images rendered; all but the last were pilots
+    double meanSpp = 0.0;            // of the image
+    RenderStats stats;               // every round and the pilot: paths, rays and seconds
 };
 
 // Renders with `renderer` (made with RenderSettings.pixelList and samplesPerPixel >= maxSpp):

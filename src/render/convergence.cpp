@@ -6,6 +6,7 @@
 
 #include "errors.h"
 #include "render/adaptive_sampling.h"
+#include "render/film_error.h"
 
 namespace wf {
 
@@ -112,8 +113,10 @@ std::vector<ConvergenceMethod> defaultMethods() {
 namespace {
 
 Checkpoint measure(uint32_t spp, const RenderStats& stats, std::vector<float> image,
-                   const std::vector<float>& reference, std::vector<float>* keep) {
+                   ErrorEstimate estimate, const std::vector<float>& reference,
+                   std::vector<float>* keep) {
     Checkpoint checkpoint;
+    checkpoint.estimate = std::move(estimate);
     checkpoint.spp = spp;
     for (const auto& [pass, ms] : stats.passMilliseconds)
         checkpoint.gpuSeconds += ms / 1000.0;
@@ -169,13 +172,15 @@ MethodRun runConvergence(const Context& context, const PreparedScene& scene,
                 AdaptiveResult result = renderAdaptive(renderer, seed, adaptive, settings.width,
                                                        settings.height);
                 points.push_back(
-                    measure(spp, result.stats, std::move(result.rgb), reference, keep));
+                    measure(spp, result.stats, std::move(result.rgb),
+                            std::move(result.estimate), reference, keep));
             } else {
                 if (finiteSet)
                     renderer.restart(seed, 0, spp);
                 renderer.renderSamples(spp - renderer.samplesDone());
-                points.push_back(measure(renderer.samplesDone(), renderer.stats(),
-                                         renderer.readImage(), reference, keep));
+                points.push_back(measure(
+                    renderer.samplesDone(), renderer.stats(), renderer.readImage(),
+                    estimateFilmError(renderer.readMoments(), settings.sampler), reference, keep));
             }
             if (onCheckpoint)
                 onCheckpoint(seed, points.back());

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "image/error_estimate.h"
 #include "image/error_metrics.h"
 #include "render/wavefront_renderer.h"
 
@@ -46,7 +47,8 @@ struct Checkpoint {
     uint32_t spp = 0;
     double gpuSeconds = 0.0;  // sum of the passes' timestamp intervals
     double wallSeconds = 0.0; // submit to fence, summed over waves
-    ImageError error;
+    ImageError error;       // measured against the reference
+    ErrorEstimate estimate; // the render's own estimate of error.relMse, from its film
 };
 
 struct ConvergenceOptions {

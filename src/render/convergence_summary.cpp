@@ -34,13 +34,16 @@ MethodSummary summarize(const MethodRun& run) {
     MethodSummary summary;
     summary.name = run.method.name;
     for (size_t c = 0; c < run.checkpoints.size(); ++c) {
-        std::vector<double> gpu, wall, rel, mse, bias;
+        std::vector<double> gpu, wall, rel, mse, bias, estimated;
+        double reliable = 0.0;
         for (const auto& seed : run.perSeed) {
             gpu.push_back(seed[c].gpuSeconds);
             wall.push_back(seed[c].wallSeconds);
             rel.push_back(seed[c].error.relMse);
             mse.push_back(seed[c].error.mse);
             bias.push_back(seed[c].error.bias);
+            estimated.push_back(seed[c].estimate.relMse);
+            reliable += seed[c].estimate.reliable ? 1.0 / run.perSeed.size() : 0.0;
         }
         CheckpointSummary point;
         point.spp = run.checkpoints[c];
@@ -51,6 +54,8 @@ MethodSummary summarize(const MethodRun& run) {
         point.relMseHigh = quantile(rel, 0.75);
         point.mse = quantile(mse, 0.5);
         point.bias = quantile(bias, 0.5);
+        point.estimatedRelMse = quantile(estimated, 0.5);
+        point.estimateReliable = reliable;
         summary.points.push_back(point);
     }
     std::vector<double> spp, time, error;

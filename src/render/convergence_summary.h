@@ -19,6 +19,8 @@ struct CheckpointSummary {
     double relMseHigh = 0.0;
     double mse = 0.0;
     double bias = 0.0;        // median of the signed mean error
+    double estimatedRelMse = 0.0; // median of the renders' own estimates
+    double estimateReliable = 0.0; // share of the seeds whose estimate says it is reliable
 };
 
 struct MethodSummary {

@@ -32,12 +32,14 @@ FilmMoments readFilmMoments(const PathBuffers& buffers, uint32_t pixelCount) {
     moments.sum.resize(size_t(pixelCount) * 3);
     moments.count.resize(pixelCount);
     moments.squares.resize(size_t(pixelCount) * 3);
+    moments.largest.resize(pixelCount);
     for (size_t i = 0; i < pixelCount; ++i) {
         for (int c = 0; c < 3; ++c) {
             moments.sum[3 * i + c] = film[4 * i + c];
             moments.squares[3 * i + c] = squares[4 * i + c];
         }
         moments.count[i] = film[4 * i + 3];
+        moments.largest[i] = squares[4 * i + 3];
     }
     return moments;
 }

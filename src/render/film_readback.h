@@ -13,6 +13,7 @@ struct FilmMoments {
     std::vector<float> sum;     // rgb per pixel
     std::vector<float> count;   // samples per pixel
     std::vector<float> squares; // rgb per pixel
+    std::vector<float> largest; // per pixel, the largest component of any one sample
 };
 
 // Per pixel, the mean over its samples of the camera ray's first hit (zero where it found no

@@ -57,6 +57,10 @@ struct RenderSettings {
     // keeps one pass for every hit, as single-kind scenes always have. The same image up to
     // float rounding.
     ShadeSplit shadeSplit = ShadeSplit::Auto;
+    // Keep each pixel's sum of squares and largest sample (the moment film), from which every
+    // render estimates its own error (error_estimate.h). The viewer, which shows none, saves
+    // the writes. The image is the same either way.
+    bool errorEstimate = true;
     // --target-error: waves cover lists of pixels (renderPixelList) and the film keeps each
     // pixel's radiance squared (readMoments); render() and the progressive calls are refused.
     bool pixelList = false;

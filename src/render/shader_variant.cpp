@@ -57,7 +57,7 @@ ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& se
                             : need <= WF_BVH_REGISTER_STACK_SIZE ? WF_BVH_REGISTER_STACK_SIZE
                                                                   : 0u;
     variant.aov = settings.aov && !settings.megakernel;
-    variant.secondMoment = settings.aov || settings.pixelList;
+    variant.secondMoment = settings.aov || settings.pixelList || settings.errorEstimate;
     variant.adaptive = settings.pixelList;
     variant.thinLens = scene.camera.aperture > 0.0f;
     variant.instances = !scene.instances.empty();

@@ -25,6 +25,7 @@ void RenderTargets::rebuild(VkExtent2D size, const RenderSettings& settings,
     settings_.width = size.width;
     settings_.height = size.height;
     settings_.samplesPerPixel = 1u << 30; // the viewer asks for samples frame by frame
+    settings_.errorEstimate = false;      // it shows no error estimate: no moment film
     displayBuffer_ = &displayBuffer;
     full_ = makeTarget(1);
     if (sameSize)

@@ -1,0 +1,63 @@
+// Every render's estimate of its own error (made from the film's moments by
+// render/film_error.h), as EXR headers, JSON and progress lines carry it: made from the film's moments (the sums, the sums of
+// squares and the largest sample of each pixel), on the scale `wavefront converge` measures
+// against a reference: relMSE = mean over pixels and channels of (x - r)^2 / (r^2 + epsilon).
+//
+// Per pixel and channel, the expected squared error of the mean is the variance of one sample
+// over n, estimated from the same samples; r^2 is estimated by mean^2 - that variance (an
+// unbiased estimate of r^2, where mean^2 alone is too large by exactly it). The image's
+// estimate is their mean.
+//
+// How far to trust it: a variance estimate is only as good as the samples that show the
+// variance. Where one bright sample carries most of a pixel's sum of squares (a caustic path
+// found once, a tiny light hit once), the pixel's variance is known only to within its own
+// size, and where no sample has found such a path yet, not at all. The estimate carries its
+// own standard error, from a bound on each pixel's fourth moment (sum x^4 <= largest^2 sum x^2,
+// so the relative variance of the variance estimate is at most largest^2 / sum x^2 and at
+// least the 2 / (n - 1) of a normal), and the share of it that rests on pixels whose largest
+// sample holds over half their sum of squares. It is `reliable` when both are small; when not,
+// the reason says which and by how much. docs/architecture.md ("Error estimates") has the
+// measured calibration.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+
+namespace wf {
+
+struct ErrorEstimate {
+    double relMse = 0.0;            // the image's estimated relMSE
+    double standardError = 0.0;     // of relMse itself
+    double singleSampleShare = 0.0; // of relMse, in pixels one sample dominates
+    uint32_t pixels = 0;            // pixels with at least two samples (the estimate's base)
+    uint32_t pixelsTotal = 0;
+    bool reliable = false;
+    std::string reason; // why not reliable (empty when it is)
+    // The variance of a pixel's mean is that of independent samples. With every sampler but
+    // `independent` the samples are correlated by design (stratified, low-discrepancy) and
+    // their mean's error is lower: the estimate is then an upper bound, 1.5x to over 100x
+    // above the measured error on the laboratory's scenes (docs/architecture.md). A target
+    // met by the bound is met.
+    bool upperBound = false;
+};
+
+// The thresholds of `reliable`: the estimate's relative standard error, and the share of it
+// that single samples carry. Measured on the laboratory's scenes (tests/gpu/test_error_targets):
+// within them the estimate lay within a factor of 2 of the measured relMSE.
+inline constexpr double kReliableRelativeError = 0.2;
+inline constexpr double kReliableSingleSampleShare = 0.2;
+
+// Sets `reliable` and `reason` from the other fields and the thresholds above.
+void judgeErrorEstimate(ErrorEstimate& estimate);
+
+// The estimate of a sample-weighted merge of independent renders (checkpoint + rest, merge's
+// parts): sum of (n_k / N)^2 relMse_k, with N the total. Not reliable where any part is not.
+ErrorEstimate mergeErrorEstimates(const std::vector<ErrorEstimate>& parts,
+                                  const std::vector<double>& samplesPerPixel);
+
+// "0.0123 (+-0.0011)", "<= 0.0123 (+-0.0011)" (an upper bound) or "0.0123 (unreliable)", for
+// progress lines and warnings.
+std::string describeErrorEstimate(const ErrorEstimate& estimate);
+
+} // namespace wf
