@@ -84,10 +84,34 @@ expect "target in the progress line" grep -q "target relMSE 0.02" "$work/stderr"
 expect "adaptive json" json_has "$work/adaptive.json" \
     "d['adaptive']['targetError'] == 0.02 and 8 <= d['adaptive']['meanSpp'] < 256 and \
      d['adaptive']['pilotSpp'] == 16 and d['adaptive']['predictedRelMse'] <= 0.02"
-for attr in targetError estimatedRelMse meanSpp pilotSpp "Sample Count.Y"; do
+expect "adaptive json: the estimate decides targetMet" json_has "$work/adaptive.json" \
+    "d['adaptive']['targetMet'] == (d['errorEstimate']['reliable'] and \
+     d['errorEstimate']['relMse'] <= 0.02) and d['adaptive']['stoppedBy'] in \
+     ('target', 'spp', 'rounds') and d['adaptive']['imageRounds'] >= 1"
+for attr in targetError targetMet stoppedBy estimatedRelMse errorEstimateReliable meanSpp \
+    pilotSpp "Sample Count.Y"; do
     expect "adaptive header: $attr" grep -a -q "$attr" "$work/adaptive.exr"
 done
-for flag in "--time-limit 5" "--spp-offset 8" "--sampler stratified" "--spp 4" \
+# A target beyond reach: targetMet false, with a warning naming why and what was spent.
+check "unreachable target" 0 "$wavefront" render "$box" -o "$work/far.exr" --target-error 1e-9 \
+    --spp 32 --width 16 --max-depth 4 --json "$work/far.json"
+expect "unreachable target: not met" json_has "$work/far.json" \
+    "d['adaptive']['targetMet'] is False and d['adaptive']['stoppedBy'] == 'spp'"
+expect "unreachable target: a warning" grep -q "warning: target relMSE 1e-09 not met" "$work/stderr"
+# With a time limit, whichever comes first; the JSON says which.
+check "target error with a time limit" 0 "$wavefront" render "$box" -o "$work/timed.exr" \
+    --target-error 1e-9 --time-limit 1 --spp 100000 --width 16 --max-depth 4 \
+    --json "$work/timed.json"
+expect "time limit: stopped by it" json_has "$work/timed.json" \
+    "d['adaptive']['stoppedBy'] == 'time-limit' and d['adaptive']['targetMet'] is False"
+# Every render estimates its own error: JSON, header and the progress line.
+check "plain render estimates its error" 0 "$wavefront" render "$box" -o "$work/plain.exr" \
+    --spp 16 --width 16 --max-depth 4 --json "$work/plain.json"
+expect "plain json: errorEstimate" json_has "$work/plain.json" \
+    "d['errorEstimate']['relMse'] > 0 and d['errorEstimate']['upperBound'] is True"
+expect "plain header: estimatedRelMse" grep -a -q "estimatedRelMse" "$work/plain.exr"
+expect "plain progress line: the estimate" grep -q "relMSE ~" "$work/stderr"
+for flag in "--spp-offset 8" "--sampler stratified" "--spp 4" \
             "--checkpoint $work/x.exr"; do
     # shellcheck disable=SC2086
     check "target error with $flag" 2 "$wavefront" render "$box" -o "$work/x.exr" \

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <memory>
 
+#include "render/film_error.h"
 #include "render/gpu_scene/scene_buffers.h"
 
 namespace wf::test {
@@ -55,7 +56,10 @@ RenderResult renderScene(const Scene& scene, const RenderSettings& settings) {
     WavefrontRenderer renderer(gpuContext(), prepared, settings, compiler);
     renderer.render();
     return {renderer.readImage(), renderer.stats(),
-            settings.aov ? renderer.readAovs() : AovImages{}};
+            settings.aov ? renderer.readAovs() : AovImages{},
+            settings.errorEstimate || settings.aov || settings.pixelList
+                ? estimateFilmError(renderer.readMoments(), settings.sampler)
+                : ErrorEstimate{}};
 }
 
 MeanAndError imageMean(const std::vector<float>& rgb) {

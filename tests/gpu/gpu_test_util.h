@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "gpu/context.h"
+#include "image/error_estimate.h"
 #include "render/wavefront_renderer.h"
 #include "scene/scene.h"
 
@@ -20,6 +21,7 @@ struct RenderResult {
     std::vector<float> rgb; // mean radiance per pixel
     RenderStats stats;
     AovImages aov;          // with RenderSettings.aov only
+    ErrorEstimate estimate; // the render's own (with RenderSettings.errorEstimate)
 };
 
 RenderResult renderScene(const Scene& scene, const RenderSettings& settings);
