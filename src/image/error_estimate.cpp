@@ -31,7 +31,8 @@ void judgeErrorEstimate(ErrorEstimate& e) {
     }
     if (e.relMse > 0.0 && e.singleSampleShare > kReliableSingleSampleShare * e.relMse) {
         e.reason = percent(e.singleSampleShare / e.relMse) +
-                   " of it comes from pixels where one sample holds most of the light";
+                   " of it comes from pixels where one sample holds most of the light: their "
+                   "neighbours may not have found it yet";
         return;
     }
     e.reliable = true;

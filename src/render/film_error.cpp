@@ -44,7 +44,10 @@ ErrorEstimate estimateFilmError(const FilmMoments& film, SamplerKind sampler) {
             const double sum = film.sum[3 * i + c], squares = film.squares[3 * i + c];
             const double mean = sum / n;
             const double ofMean = varianceOfMean(sum, squares, n);
-            const double reference2 = std::max(mean * mean - ofMean, 0.0);
+            // mean^2 - ofMean estimates r^2 without bias, but where a pixel's error is of its
+            // own size (a firefly in few samples) it nears zero and the ratio explodes: the
+            // correction stops at halving mean^2.
+            const double reference2 = std::max(mean * mean - ofMean, 0.5 * mean * mean);
             error += ofMean / (reference2 + kRelMseEpsilon) / 3.0;
         }
         const double spread = error * uncertainty;
