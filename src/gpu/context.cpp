@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <string>
 #include <thread>
 #include <vector>
@@ -93,10 +94,40 @@ void defaultLavapipeThreads() {
     setenv("LP_NUM_THREADS", std::to_string(2 * cores).c_str(), /*overwrite=*/0);
 }
 
+// Mesa 24-25's llvmpipe compiles the image loads of lavapipe's shaders as functions of their
+// own (one per format, shared by all shaders) and keeps them in its on-disk shader cache under
+// a key without the vector width, in a cache named without LP_NATIVE_VECTOR_WIDTH too. A run at
+// LP_NATIVE_VECTOR_WIDTH=512 (16 lanes) then calls the 8-lane function a run at the default
+// width stored, and lanes 8-15 of every subgroup read zeros: half the paths are lost (issue
+// 33; tests/lavapipe_cache_repro/). So a width the user sets gets a cache folder of its own,
+// under MESA_SHADER_CACHE_DIR where the user set one. Only Mesa reads these variables.
+void separateLavapipeShaderCache() {
+    static bool done = false; // a second Context must not nest the folder again
+    const char* width = std::getenv("LP_NATIVE_VECTOR_WIDTH");
+    if (done || !width || !*width || std::strspn(width, "0123456789") != std::strlen(width))
+        return;
+    done = true;
+    std::string dir;
+    if (const char* base = std::getenv("MESA_SHADER_CACHE_DIR"); base && *base)
+        dir = std::string(base) + "/lp_native_vector_width_" + width;
+    else if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
+        dir = std::string(xdg) + "/mesa_shader_cache_lp_width_" + width;
+    else if (const char* home = std::getenv("HOME"); home && *home)
+        dir = std::string(home) + "/.cache/mesa_shader_cache_lp_width_" + width;
+    std::error_code error;
+    if (!dir.empty())
+        std::filesystem::create_directories(dir, error);
+    if (dir.empty() || error)
+        setenv("MESA_SHADER_CACHE_DISABLE", "true", /*overwrite=*/1); // no folder: no cache
+    else
+        setenv("MESA_SHADER_CACHE_DIR", dir.c_str(), /*overwrite=*/1);
+}
+
 } // namespace
 
 void Context::createInstance(bool validation, const std::vector<const char*>& extraExtensions) {
-    defaultLavapipeThreads(); // before the driver reads it, at instance creation
+    defaultLavapipeThreads(); // before the driver reads them, at instance creation
+    separateLavapipeShaderCache();
     VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
     app.pApplicationName = "wavefront";
     app.apiVersion = VK_API_VERSION_1_2;
