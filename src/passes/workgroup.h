@@ -1,5 +1,6 @@
 // Workgroup size of every 1D pass, passed to the shaders as WF_WORKGROUP_SIZE. 64 is a
-// multiple of every subgroup size in use (8 on lavapipe, 32 on NVIDIA, 64 on AMD).
+// multiple of the usual subgroup sizes (4-16 on lavapipe, 32 on NVIDIA, 32 or 64 on AMD), so
+// no subgroup runs partly empty; the shaders do not need it (docs/architecture.md, Subgroups).
 #pragma once
 #include <cstdint>
 
