@@ -94,7 +94,7 @@ void defaultLavapipeThreads() {
     setenv("LP_NUM_THREADS", std::to_string(2 * cores).c_str(), /*overwrite=*/0);
 }
 
-// Mesa 24-25's llvmpipe compiles the image loads of lavapipe's shaders as functions of their
+// Mesa 25's llvmpipe compiles the image loads of lavapipe's shaders as functions of their
 // own (one per format, shared by all shaders) and keeps them in its on-disk shader cache under
 // a key without the vector width, in a cache named without LP_NATIVE_VECTOR_WIDTH too. A run at
 // LP_NATIVE_VECTOR_WIDTH=512 (16 lanes) then calls the 8-lane function a run at the default

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Mesa 24-25 llvmpipe/lavapipe: an image load compiled at one LP_NATIVE_VECTOR_WIDTH is taken
+# Mesa 25 llvmpipe/lavapipe (25.0.7): an image load compiled at one LP_NATIVE_VECTOR_WIDTH is taken
 # from the on-disk shader cache at another. Runs image_load.comp at 256 bits (8 lanes), then at
 # 512 bits (16 lanes) with the same fresh cache, then at 512 with the cache off; prints which
 # invocations read a wrong value. Needs cc, glslangValidator and libvulkan (VK_ICD_FILENAMES
