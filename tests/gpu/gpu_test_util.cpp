@@ -5,6 +5,8 @@
 #include <cmath>
 #include <memory>
 
+#include <gtest/gtest.h>
+
 #include "render/film_error.h"
 #include "render/gpu_scene/scene_buffers.h"
 
@@ -73,6 +75,39 @@ MeanAndError imageMean(const std::vector<float>& rgb) {
     double mean = sum / n;
     double variance = std::max(0.0, sumSq / n - mean * mean) * n / (n - 1);
     return {mean, std::sqrt(variance / n)};
+}
+
+int expectRegionsUnbiased(const std::vector<std::vector<float>>& images,
+                          const std::vector<float>& reference,
+                          const std::vector<float>& referenceVariance, uint32_t width,
+                          uint32_t height, uint32_t block, const std::string& what) {
+    auto regionSum = [&](const std::vector<float>& rgb, uint32_t bx, uint32_t by) {
+        double sum = 0.0;
+        for (uint32_t y = by * block; y < (by + 1) * block; ++y)
+            for (uint32_t x = bx * block; x < (bx + 1) * block; ++x)
+                for (int c = 0; c < 3; ++c)
+                    sum += rgb[3 * (size_t(y) * width + x) + c];
+        return sum;
+    };
+    const double values = 3.0 * block * block, n = double(images.size());
+    int checked = 0;
+    for (uint32_t by = 0; by < height / block; ++by)
+        for (uint32_t bx = 0; bx < width / block; ++bx) {
+            double mean = 0.0, meanSq = 0.0;
+            for (const auto& image : images) {
+                const double m = regionSum(image, bx, by) / values;
+                mean += m / n;
+                meanSq += m * m / n;
+            }
+            const double seedError = std::sqrt(std::max(0.0, meanSq - mean * mean) / (n - 1.0));
+            const double referenceError = std::sqrt(regionSum(referenceVariance, bx, by)) / values;
+            const double expected = regionSum(reference, bx, by) / values;
+            EXPECT_NEAR(mean, expected,
+                        5.0 * std::hypot(seedError, referenceError) + 2e-3 * expected)
+                << what << " region " << bx << "," << by;
+            ++checked;
+        }
+    return checked;
 }
 
 } // namespace wf::test

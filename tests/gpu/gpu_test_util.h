@@ -1,6 +1,7 @@
 // Helpers for GPU tests: a validation-enabled context shared by a test binary, analytic scenes
 // built in code, and a one-call render.
 #pragma once
+#include <string>
 #include <vector>
 
 #include "gpu/context.h"
@@ -34,5 +35,14 @@ struct MeanAndError {
 // Mean of the image (channels averaged) and its standard error from the spread of the
 // pixels, which are independent estimates (disjoint sample streams).
 MeanAndError imageMean(const std::vector<float>& rgb);
+
+// Each block x block region's mean over `images` (independent renders of `width` x `height`
+// pixels, rgb) against the reference's, within 5 standard errors (the images' spread and the
+// reference's variance layer, rgb per pixel) plus 0.2%: a gtest failure per region that is
+// not, named by `what`. Returns the regions checked.
+int expectRegionsUnbiased(const std::vector<std::vector<float>>& images,
+                          const std::vector<float>& reference,
+                          const std::vector<float>& referenceVariance, uint32_t width,
+                          uint32_t height, uint32_t block, const std::string& what);
 
 } // namespace wf::test

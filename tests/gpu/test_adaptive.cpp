@@ -68,16 +68,6 @@ protected:
 Scene* Adaptive::scene_ = nullptr;
 Reference* Adaptive::reference_ = nullptr;
 
-// The mean over an 8x8 region, channels averaged.
-double blockMean(const std::vector<float>& rgb, uint32_t bx, uint32_t by) {
-    double sum = 0.0;
-    for (uint32_t y = by * kBlock; y < (by + 1) * kBlock; ++y)
-        for (uint32_t x = bx * kBlock; x < (bx + 1) * kBlock; ++x)
-            for (int c = 0; c < 3; ++c)
-                sum += rgb[3 * (size_t(y) * kWidth + x) + c];
-    return sum / (3.0 * kBlock * kBlock);
-}
-
 TEST_F(Adaptive, EachRegionUnbiasedOverSeeds) {
     constexpr int kSeeds = 20;
     std::vector<std::vector<float>> images;
@@ -86,30 +76,8 @@ TEST_F(Adaptive, EachRegionUnbiasedOverSeeds) {
         EXPECT_EQ(result.stats.nonFiniteSamples, 0u);
         images.push_back(std::move(result.rgb));
     }
-    int checked = 0;
-    for (uint32_t by = 0; by < kHeight / kBlock; ++by)
-        for (uint32_t bx = 0; bx < kWidth / kBlock; ++bx) {
-            double mean = 0.0, meanSq = 0.0;
-            for (const auto& image : images) {
-                const double m = blockMean(image, bx, by);
-                mean += m / kSeeds;
-                meanSq += m * m / kSeeds;
-            }
-            const double seedError =
-                std::sqrt(std::max(0.0, meanSq - mean * mean) / (kSeeds - 1));
-            // The reference region's error from its pixels' variance layer.
-            double referenceVariance = 0.0;
-            for (uint32_t y = by * kBlock; y < (by + 1) * kBlock; ++y)
-                for (uint32_t x = bx * kBlock; x < (bx + 1) * kBlock; ++x)
-                    for (int c = 0; c < 3; ++c)
-                        referenceVariance +=
-                            reference_->variance[3 * (size_t(y) * kWidth + x) + c];
-            const double referenceError = std::sqrt(referenceVariance) / (3.0 * kBlock * kBlock);
-            const double expected = blockMean(reference_->rgb, bx, by);
-            const double bound = 5.0 * std::hypot(seedError, referenceError) + 2e-3 * expected;
-            EXPECT_NEAR(mean, expected, bound) << "region " << bx << "," << by;
-            ++checked;
-        }
+    const int checked = expectRegionsUnbiased(images, reference_->rgb, reference_->variance,
+                                              kWidth, kHeight, kBlock, "veach_mis");
     EXPECT_EQ(checked, 24);
     EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
 }
