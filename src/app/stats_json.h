@@ -7,6 +7,10 @@
 #include "render/wavefront_renderer.h"
 
 namespace wf {
+struct AdaptiveResult;
+}
+
+namespace wf {
 
 struct StatsContext {
     std::string scene;
@@ -23,6 +27,13 @@ struct StatsContext {
 // not finite).
 std::string jsonQuoted(const std::string& text);
 std::string jsonNumber(double value);
+
+// The scene's size and its BVH build: the fields --json adds about the scene.
+std::vector<std::pair<std::string, std::string>> sceneStatsFields(const PreparedScene& scene);
+
+// The "adaptive" field of a --target-error render (maxSpp: --spp, the most a pixel gets).
+std::pair<std::string, std::string> adaptiveStatsField(const AdaptiveResult& result,
+                                                       double targetError, uint32_t maxSpp);
 
 std::string statsToJson(const RenderStats& stats, const StatsContext& context);
 void writeStatsJson(const std::string& path, const RenderStats& stats,
