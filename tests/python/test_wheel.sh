@@ -12,10 +12,11 @@ work=$(mktemp -d)
 cache_value() { sed -n "s/^$1:[A-Z]*=//p" "$build/CMakeCache.txt"; }
 tests=$(cache_value WF_BUILD_TESTS)
 viewer=$(cache_value WF_BUILD_VIEWER)
-python_exe=$(cache_value Python3_EXECUTABLE)
+python_exe=$(cache_value WF_PYTHON_EXECUTABLE) # the Python the module was built for
 restore() {
-    # scikit-build-core configured the tree with its own Python hints: put the cache back.
-    cmake -S "$src" -B "$build" -DPython3_EXECUTABLE="$python_exe" >/dev/null || true
+    # scikit-build-core configured the tree with its own variables: put the cache back.
+    cmake -S "$src" -B "$build" -U "SKBUILD*" -DCMAKE_INSTALL_PREFIX=/usr/local \
+        -DPython3_EXECUTABLE="$python_exe" >/dev/null || true
     rm -rf "$work"
 }
 trap restore EXIT
@@ -29,9 +30,10 @@ then
     rm -rf "$work"
     exit 77
 fi
-"${pip[@]}" wheel --no-deps -w "$work/wheels" "$src" -C build-dir="$build" \
-    -C cmake.define.WF_BUILD_TESTS="$tests" -C cmake.define.WF_BUILD_VIEWER="$viewer" \
-    -C cmake.define.Python3_EXECUTABLE="$python_exe"
+"${pip[@]}" wheel --no-deps -w "$work/wheels" "$src" --config-settings=build-dir="$build" \
+    --config-settings=cmake.define.WF_BUILD_TESTS="$tests" \
+    --config-settings=cmake.define.WF_BUILD_VIEWER="$viewer" \
+    --config-settings=cmake.define.Python3_EXECUTABLE="$python_exe"
 wheel=$(ls "$work"/wheels/wavefront-*.whl)
 echo "python_wheel: built $(basename "$wheel")"
 "${pip[@]}" install --no-deps --no-index "$wheel"
