@@ -16,6 +16,7 @@ packages=(
     libdraco-dev libmeshoptimizer-dev nlohmann-json3-dev # compressed glTF meshes
     libglfw3-dev libimgui-dev # wavefront view (WF_BUILD_VIEWER)
     python3-matplotlib # wavefront converge's charts (scripts/plot_convergence.py)
+    python3-dev pybind11-dev python3-numpy # the Python module (python/, WF_BUILD_PYTHON)
 )
 # lavapipe: the release's Mesa 22.3, or with WAVEFRONT_MESA=backports Debian 12's backports
 # suite's Mesa 25.0 (installed below, after the rest), whose traversal code misses the cache
@@ -26,6 +27,7 @@ if [ "${1:-}" = "--with-tests" ]; then
     packages+=(googletest libgtest-dev xvfb xauth xdotool) # the viewer test: display, input
     packages+=(clang libclang-rt-14-dev) # the loader's libFuzzer and ASan+UBSan build (fuzz/)
     packages+=(gltfpack) # a meshopt-compressed scene to render (tests/gpu/test_compressed_scenes)
+    packages+=(python3-pytest python3-venv) # the Python module's tests and its wheel's venv
     tests=ON
 fi
 

@@ -91,22 +91,6 @@ void printVerbose(const PreparedScene& scene, const WavefrontRenderer& renderer,
                  total / (1024.0 * 1024.0));
 }
 
-// The scene's size and its BVH build, for --json.
-std::vector<std::pair<std::string, std::string>> sceneJsonFields(const PreparedScene& scene) {
-    const BvhBuildStats& bvh = scene.bvhStats;
-    const double perSecond = scene.triangles.size() / std::max(bvh.buildSeconds, 1e-9);
-    return {{"triangles", std::to_string(scene.triangles.size())},
-            {"instances", std::to_string(scene.instances.size())},
-            {"instancedTriangles", std::to_string(scene.instancedTriangles)},
-            {"bvh", "{\"nodes\": " + std::to_string(bvh.nodeCount) +
-                        ", \"depth\": " + std::to_string(bvh.maxDepth) +
-                        ", \"sahCost\": " + jsonNumber(bvh.sahCost) +
-                        ", \"traversalCost\": " + jsonNumber(bvh.traversalCost) +
-                        ", \"buildSeconds\": " + jsonNumber(bvh.buildSeconds) +
-                        ", \"trianglesPerSecond\": " + jsonNumber(perSecond) +
-                        ", \"threads\": " + std::to_string(bvh.threads) + "}"}};
-}
-
 // Peak host memory, once the render is done: --verbose prints it, --json records it.
 void reportPeakHostMemory(bool verbose, StatsContext& statsContext) {
     const uint64_t peak = peakHostMemoryBytes();
@@ -172,18 +156,7 @@ void renderAdaptively(WavefrontRenderer& renderer, const RenderSettings& setting
         StatsContext& context = statsContext;
         context.extraFields.push_back({"errorEstimate", errorEstimateJson(result.estimate)});
         context.extraFields.push_back(
-            {"adaptive",
-             std::string("{\"targetError\": ") + jsonNumber(targetError) +
-                 ", \"targetMet\": " + (result.targetMet ? "true" : "false") +
-                 ", \"stoppedBy\": " + jsonQuoted(result.stoppedBy) +
-                 ", \"estimatedRelMse\": " + jsonNumber(result.estimate.relMse) +
-                 ", \"predictedRelMse\": " + jsonNumber(allocation.predictedRelMse) +
-                 ", \"meanSpp\": " + jsonNumber(result.meanSpp) +
-                 ", \"pilotSpp\": " + std::to_string(result.pilotSpp) +
-                 ", \"imageRounds\": " + std::to_string(result.imageRounds) +
-                 ", \"minSpp\": " + std::to_string(allocation.levels.front()) +
-                 ", \"maxSpp\": " + std::to_string(settings.samplesPerPixel) +
-                 ", \"levels\": " + std::to_string(allocation.levels.size()) + "}"});
+            adaptiveStatsField(result, targetError, settings.samplesPerPixel));
         RenderStats stats = result.stats;
         stats.samplesPerPixel = run.spp;
         writeStatsJson(*output.json, stats, context);
@@ -232,27 +205,11 @@ int runRenderCommand(const std::vector<std::string>& args) {
         throw InputError("cannot write " + *output + ": folder " + outputDir.string() +
                          " does not exist");
 
-    const bool adaptive = parsed.has("--target-error");
-    RenderSettings settings;
-    settings.samplesPerPixel = parsed.uintValue("--spp", adaptive ? 1024 : 64, 1, 1u << 20);
-    applyRenderFlags(parsed, kRenderDefaultMaxDepth, settings);
-    applySppRangeFlags(parsed, settings);
-    const double targetError = parsed.floatValue("--target-error", 0.0f, 1e-12f, 1e6f);
-    if (adaptive) {
-        checkAdaptiveFlags(parsed, settings);
-        settings.pixelList = true;
-    }
-    settings.timeLimitSeconds = parsed.floatValue("--time-limit", 0.0f, 1e-3f, 1e9f);
-    if (settings.timeLimitSeconds > 0.0 && samplerIsFiniteSet(settings.sampler))
-        throw UsageError(std::string("--time-limit: the ") + samplerName(settings.sampler) +
-                         " sampler's set is no stratification when cut short (pick sobol, "
-                         "halton, independent or bluenoise)");
-    const std::vector<std::string> aovs = parseAovList(parsed.value("--aov").value_or(""));
-    // "samples" alone needs no first hits.
-    settings.aov = std::any_of(aovs.begin(), aovs.end(),
-                               [](const std::string& name) { return name != "samples"; });
-    if (settings.aov && parsed.has("--resume"))
-        throw UsageError("--aov with --resume: the layers would cover this run's samples only");
+    RenderRequest request = renderRequestFrom(parsed);
+    RenderSettings& settings = request.settings;
+    const bool adaptive = request.targetError > 0.0;
+    const double targetError = request.targetError;
+    const std::vector<std::string>& aovs = request.aovs;
     const bool quiet = parsed.has("--quiet");
     const bool verbose = parsed.has("--verbose");
 
@@ -306,7 +263,7 @@ int runRenderCommand(const std::vector<std::string>& args) {
         printVerbose(prepared, renderer, context, summary);
     StatsContext statsContext{scenePath,       context.deviceName(), settings.width,
                               settings.height, settings.maxDepth,    settings.seed, {}};
-    statsContext.extraFields = sceneJsonFields(prepared);
+    statsContext.extraFields = sceneStatsFields(prepared);
     statsContext.extraFields.push_back({"loadSeconds", jsonNumber(summary.loadSeconds)});
     if (adaptive) {
         renderAdaptively(renderer, settings, targetError, run, verbose,

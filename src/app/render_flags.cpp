@@ -154,4 +154,30 @@ void checkAdaptiveFlags(const ParsedArgs& parsed, const RenderSettings& settings
                          "least 8");
 }
 
+RenderRequest renderRequestFrom(const ParsedArgs& parsed) {
+    RenderRequest request;
+    RenderSettings& settings = request.settings;
+    const bool adaptive = parsed.has("--target-error");
+    settings.samplesPerPixel = parsed.uintValue("--spp", adaptive ? 1024 : 64, 1, 1u << 20);
+    applyRenderFlags(parsed, kRenderDefaultMaxDepth, settings);
+    applySppRangeFlags(parsed, settings);
+    request.targetError = parsed.floatValue("--target-error", 0.0f, 1e-12f, 1e6f);
+    if (adaptive) {
+        checkAdaptiveFlags(parsed, settings);
+        settings.pixelList = true;
+    }
+    settings.timeLimitSeconds = parsed.floatValue("--time-limit", 0.0f, 1e-3f, 1e9f);
+    if (settings.timeLimitSeconds > 0.0 && samplerIsFiniteSet(settings.sampler))
+        throw UsageError(std::string("--time-limit: the ") + samplerName(settings.sampler) +
+                         " sampler's set is no stratification when cut short (pick sobol, "
+                         "halton, independent or bluenoise)");
+    request.aovs = parseAovList(parsed.value("--aov").value_or(""));
+    // "samples" alone needs no first hits.
+    settings.aov = std::any_of(request.aovs.begin(), request.aovs.end(),
+                               [](const std::string& name) { return name != "samples"; });
+    if (settings.aov && parsed.has("--resume"))
+        throw UsageError("--aov with --resume: the layers would cover this run's samples only");
+    return request;
+}
+
 } // namespace wf

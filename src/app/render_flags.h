@@ -24,4 +24,14 @@ std::string renderSettingsKey(const RenderSettings& s, const ParsedArgs& parsed)
 // --target-error refuses what would need a sample range it does not have.
 void checkAdaptiveFlags(const ParsedArgs& parsed, const RenderSettings& settings);
 
+// What render's flags ask for before the scene is loaded (the size comes with the scene:
+// applyImageSize), every refusal of a bad combination made. The CLI and the Python module
+// (python/) both read the flags through here, so they refuse alike and render alike.
+struct RenderRequest {
+    RenderSettings settings;
+    double targetError = 0.0;      // --target-error; 0: none
+    std::vector<std::string> aovs; // --aov, in the order given
+};
+RenderRequest renderRequestFrom(const ParsedArgs& parsed);
+
 } // namespace wf

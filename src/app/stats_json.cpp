@@ -1,5 +1,6 @@
 #include "app/stats_json.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -7,6 +8,8 @@
 
 #include "errors.h"
 #include "image/atomic_file.h"
+#include "render/adaptive_sampling.h"
+#include "render/gpu_scene/scene_buffers.h"
 
 namespace wf {
 
@@ -95,6 +98,39 @@ void writeStatsJson(const std::string& path, const RenderStats& stats,
         if (!out)
             throw InputError("cannot write " + path);
     });
+}
+
+// The scene's size and its BVH build, for --json.
+std::vector<std::pair<std::string, std::string>> sceneStatsFields(const PreparedScene& scene) {
+    const BvhBuildStats& bvh = scene.bvhStats;
+    const double perSecond = scene.triangles.size() / std::max(bvh.buildSeconds, 1e-9);
+    return {{"triangles", std::to_string(scene.triangles.size())},
+            {"instances", std::to_string(scene.instances.size())},
+            {"instancedTriangles", std::to_string(scene.instancedTriangles)},
+            {"bvh", "{\"nodes\": " + std::to_string(bvh.nodeCount) +
+                        ", \"depth\": " + std::to_string(bvh.maxDepth) +
+                        ", \"sahCost\": " + jsonNumber(bvh.sahCost) +
+                        ", \"traversalCost\": " + jsonNumber(bvh.traversalCost) +
+                        ", \"buildSeconds\": " + jsonNumber(bvh.buildSeconds) +
+                        ", \"trianglesPerSecond\": " + jsonNumber(perSecond) +
+                        ", \"threads\": " + std::to_string(bvh.threads) + "}"}};
+}
+
+std::pair<std::string, std::string> adaptiveStatsField(const AdaptiveResult& result,
+                                                       double targetError, uint32_t maxSpp) {
+    const SampleAllocation& allocation = result.allocation;
+    return {"adaptive",
+            std::string("{\"targetError\": ") + jsonNumber(targetError) +
+                ", \"targetMet\": " + (result.targetMet ? "true" : "false") +
+                ", \"stoppedBy\": " + jsonQuoted(result.stoppedBy) +
+                ", \"estimatedRelMse\": " + jsonNumber(result.estimate.relMse) +
+                ", \"predictedRelMse\": " + jsonNumber(allocation.predictedRelMse) +
+                ", \"meanSpp\": " + jsonNumber(result.meanSpp) +
+                ", \"pilotSpp\": " + std::to_string(result.pilotSpp) +
+                ", \"imageRounds\": " + std::to_string(result.imageRounds) +
+                ", \"minSpp\": " + std::to_string(allocation.levels.front()) +
+                ", \"maxSpp\": " + std::to_string(maxSpp) +
+                ", \"levels\": " + std::to_string(allocation.levels.size()) + "}"};
 }
 
 } // namespace wf

@@ -8,6 +8,10 @@
 #include "render/wavefront_renderer.h"
 
 namespace wf {
+struct AdaptiveResult;
+}
+
+namespace wf {
 
 struct StatsContext {
     std::string scene;
@@ -27,6 +31,13 @@ std::string jsonNumber(double value);
 
 // {"relMse", "standardError", "fromSingleSamples", "reliable", "reason", "upperBound"}
 std::string errorEstimateJson(const ErrorEstimate& estimate);
+
+// The scene's size and its BVH build: the fields --json adds about the scene.
+std::vector<std::pair<std::string, std::string>> sceneStatsFields(const PreparedScene& scene);
+
+// The "adaptive" field of a --target-error render (maxSpp: --spp, the most a pixel gets).
+std::pair<std::string, std::string> adaptiveStatsField(const AdaptiveResult& result,
+                                                       double targetError, uint32_t maxSpp);
 
 std::string statsToJson(const RenderStats& stats, const StatsContext& context);
 void writeStatsJson(const std::string& path, const RenderStats& stats,

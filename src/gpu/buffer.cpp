@@ -1,5 +1,6 @@
 #include "gpu/buffer.h"
 
+#include <atomic>
 #include <cstring>
 #include <utility>
 
@@ -8,6 +9,11 @@
 #include "gpu/vk_check.h"
 
 namespace wf {
+namespace {
+std::atomic<size_t> liveBufferAllocations{0};
+} // namespace
+
+size_t Buffer::liveAllocations() { return liveBufferAllocations.load(); }
 
 Buffer::Buffer(const Context& context, std::string name, VkDeviceSize size,
                VkBufferUsageFlags extraUsage, bool hostVisible)
@@ -38,6 +44,7 @@ Buffer::Buffer(const Context& context, std::string name, VkDeviceSize size,
             requirements.memoryTypeBits,
             hostVisible ? hostFlags : VkMemoryPropertyFlags(VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT));
         VK_CHECK(vkAllocateMemory(device, &alloc, nullptr, &memory_));
+        ++liveBufferAllocations;
         VK_CHECK(vkBindBufferMemory(device, buffer_, memory_, 0));
         // Map whenever the chosen type happens to be host visible (every type on lavapipe),
         // which spares a staging copy.
@@ -76,8 +83,10 @@ void Buffer::release() {
         vkUnmapMemory(device, memory_);
     if (buffer_)
         vkDestroyBuffer(device, buffer_, nullptr);
-    if (memory_)
+    if (memory_) {
         vkFreeMemory(device, memory_, nullptr);
+        --liveBufferAllocations;
+    }
     buffer_ = VK_NULL_HANDLE;
     memory_ = VK_NULL_HANDLE;
     mapped_ = nullptr;

@@ -37,6 +37,10 @@ public:
     template <typename T> void upload(const std::vector<T>& values) {
         upload(values.data(), values.size() * sizeof(T));
     }
+    // Buffers whose device memory is allocated now, in the whole process: what a leak check
+    // (the Python module's memory test) compares before and after.
+    static size_t liveAllocations();
+
     template <typename T> std::vector<T> download() const {
         std::vector<T> values(size_ / sizeof(T));
         download(values.data(), values.size() * sizeof(T));

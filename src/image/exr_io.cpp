@@ -148,6 +148,28 @@ std::optional<std::string> readExrAttribute(const std::string& path, const std::
     }
 }
 
+std::vector<ExrAttribute> readExrAttributes(const std::string& path) {
+    std::vector<ExrAttribute> attributes;
+    try {
+        Imf::InputFile file(path.c_str());
+        for (auto it = file.header().begin(); it != file.header().end(); ++it) {
+            const Imf::Attribute& value = it.attribute();
+            if (auto* s = dynamic_cast<const Imf::StringAttribute*>(&value)) {
+                attributes.push_back({it.name(), 's', s->value()});
+            } else if (auto* i = dynamic_cast<const Imf::IntAttribute*>(&value)) {
+                attributes.push_back({it.name(), 'i', std::to_string(i->value())});
+            } else if (auto* f = dynamic_cast<const Imf::FloatAttribute*>(&value)) {
+                char text[32];
+                std::snprintf(text, sizeof(text), "%.9g", static_cast<double>(f->value()));
+                attributes.push_back({it.name(), 'f', text});
+            }
+        }
+    } catch (const std::exception& e) {
+        throw InputError(path + ": cannot read EXR: " + e.what());
+    }
+    return attributes;
+}
+
 std::optional<std::vector<float>> readExrChannel(const std::string& path, const std::string& name) {
     try {
         Imf::InputFile file(path.c_str());

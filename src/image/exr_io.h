@@ -44,5 +44,13 @@ ExrImage readExr(const std::string& path);
 // digits, so they round-trip); nullopt if the attribute is absent or of another type.
 // Throws InputError when the file cannot be read.
 std::optional<std::string> readExrAttribute(const std::string& path, const std::string& name);
+// Every string, int and float header attribute: its name, type ('s', 'i' or 'f') and value
+// as readExrAttribute writes it.
+struct ExrAttribute {
+    std::string name;
+    char type = 's';
+    std::string text;
+};
+std::vector<ExrAttribute> readExrAttributes(const std::string& path);
 
 } // namespace wf

@@ -1,0 +1,106 @@
+"""Renders: arrays as promised, the CLI's image bit for bit, seeds, the 1/spp rate,
+progressive passes."""
+import json
+
+import numpy as np
+import pytest
+
+import wavefront as wf
+from conftest import CORNELL, cli_render, run_cli
+
+
+def test_output_is_a_real_float32_array(renderer, cornell):
+    out = renderer.render(cornell, width=24, spp=2, max_depth=3, aov=("albedo", "normal",
+                                                                     "depth", "samples"))
+    image = out.image
+    assert isinstance(image, np.ndarray)
+    assert image.dtype == np.float32 and image.ndim == 3 and image.shape[2] == 3
+    assert image.shape[1] == 24 and out.width == 24 and out.height == image.shape[0]
+    assert image.flags.c_contiguous and image.flags.writeable and image.flags.owndata is False
+    assert np.isfinite(image).all() and image.mean() > 0
+    assert out.aov["albedo"].shape == image.shape and out.aov["normal"].shape == image.shape
+    assert out.aov["depth"].shape == image.shape[:2]
+    assert (out.aov["samples"] == 2).all()
+    assert out.spp == 2 and out.seconds > 0
+    assert out.stats["spp"] == 2 and out.stats["width"] == 24 and out.stats["paths"] > 0
+    assert out.stats["triangles"] == cornell.info["triangles"] > 0
+    json.dumps(out.stats)  # plain data
+
+
+def test_scene_info(cornell):
+    info = cornell.info
+    assert info["triangles"] > 0 and info["materials"] > 0 and info["lights"]["emitters"] > 0
+    assert info["kinds"] and set(info["kinds"]) <= {"diffuse", "specular", "general"}
+    low, high = info["bounds"]
+    assert all(h > l for l, h in zip(low, high))
+
+
+@pytest.mark.parametrize("seed", [3, 11])
+def test_same_image_as_the_cli_bit_for_bit(renderer, cornell, tmp_path, seed):
+    # The second seed reuses the first render's renderer (restart), which must not show.
+    flags = dict(width=40, spp=3, max_depth=4, sampler="halton", light_sampling="mis")
+    out = renderer.render(cornell, seed=seed, **flags)
+    cli = cli_render(tmp_path, "cli", "--width", 40, "--spp", 3, "--max-depth", 4,
+                     "--sampler", "halton", "--light-sampling", "mis", "--seed", seed)
+    assert cli.shape == out.image.shape
+    assert np.array_equal(cli.view(np.uint32), out.image.view(np.uint32))
+
+
+def test_aov_matches_the_cli_layers(renderer, cornell, tmp_path):
+    out = renderer.render(cornell, width=20, spp=2, max_depth=3, aov="albedo")
+    exr = tmp_path / "aov.exr"
+    run_cli("render", CORNELL, "-o", exr, "--quiet", "--width", 20, "--spp", 2,
+            "--max-depth", 3, "--aov", "albedo")
+    for c, name in enumerate("RGB"):
+        layer = np.array(wf._core.read_exr_channel(str(exr), "Denoising Albedo." + name))
+        assert np.array_equal(layer.reshape(out.image.shape[:2]), out.aov["albedo"][..., c])
+
+
+def test_different_seeds_differ(renderer, cornell):
+    a = renderer.render(cornell, width=16, spp=2, max_depth=3, seed=1).image
+    b = renderer.render(cornell, width=16, spp=2, max_depth=3, seed=2).image
+    again = renderer.render(cornell, width=16, spp=2, max_depth=3, seed=1).image
+    assert not np.array_equal(a, b)
+    assert np.array_equal(a, again)
+
+
+def test_relmse_falls_about_as_one_over_spp(renderer, cornell):
+    # Independent samples: the error of the mean falls exactly as 1/N in expectation, so the
+    # fitted slope of log relMSE against log spp sits near -1 (the reference's own noise, at
+    # 16x the largest count, flattens it by a few per cent).
+    size = dict(width=24, max_depth=3, sampler="independent")
+    reference = renderer.render(cornell, spp=1024, seed=99, **size).image
+    counts = [4, 16, 64]
+    errors = [np.mean([wf.relmse(renderer.render(cornell, spp=n, seed=s, **size).image,
+                                 reference) for s in range(3)]) for n in counts]
+    slope = np.polyfit(np.log(counts), np.log(errors), 1)[0]
+    assert -1.25 < slope < -0.75, (errors, slope)
+    assert wf.mse(reference, reference) == 0.0
+
+
+def test_progressive_passes_end_at_renders_image(renderer, cornell):
+    flags = dict(width=16, max_depth=3, seed=5)
+    passes = list(renderer.render_progressive(cornell, spp=10, pass_spp=4, **flags))
+    assert [p.spp for p in passes] == [4, 8, 10]
+    whole = renderer.render(cornell, spp=10, **flags).image
+    assert np.array_equal(passes[-1].image, whole)
+
+
+def test_progressive_ended_by_another_render(renderer, cornell):
+    passes = renderer.render_progressive(cornell, spp=8, pass_spp=2, width=8, max_depth=2)
+    next(passes)
+    renderer.render(cornell, spp=1, width=8, max_depth=2)
+    with pytest.raises(RuntimeError, match="ended by another call"):
+        next(passes)
+
+
+def test_adaptive_render(renderer, cornell):
+    out = renderer.render(cornell, width=16, spp=16, max_depth=3, target_error=0.05,
+                          aov="samples")
+    assert out.stats["adaptive"]["targetError"] == 0.05
+    assert out.aov["samples"].max() <= 16 and 1 <= out.spp <= 16
+
+
+def test_time_limit_stops_early(renderer, cornell):
+    out = renderer.render(cornell, width=16, spp=100000, max_depth=2, time_limit=0.001)
+    assert 1 <= out.spp < 100000
