@@ -22,7 +22,6 @@ REFUSALS = [
     dict(aov="albedo,bogus"),
     dict(aov="albedo,albedo"),
     dict(spp=4, spp_total=2),
-    dict(target_error=0.1, time_limit=1.0),
     dict(target_error=0.1, spp=4),
     dict(target_error=0.1, sampler="stratified"),
     dict(time_limit=1.0, sampler="multijitter"),

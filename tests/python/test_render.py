@@ -99,6 +99,25 @@ def test_adaptive_render(renderer, cornell):
                           aov="samples")
     assert out.stats["adaptive"]["targetError"] == 0.05
     assert out.aov["samples"].max() <= 16 and 1 <= out.spp <= 16
+    # targetMet comes from the image's own estimate, as the CLI's JSON says it
+    estimate = out.stats["errorEstimate"]
+    assert out.stats["adaptive"]["targetMet"] == (estimate["reliable"] and
+                                                  estimate["relMse"] <= 0.05)
+
+
+def test_every_render_estimates_its_error(renderer, cornell):
+    out = renderer.render(cornell, width=16, spp=16, max_depth=3)
+    estimate = out.stats["errorEstimate"]
+    assert estimate["relMse"] > 0 and estimate["upperBound"] is True
+    independent = renderer.render(cornell, width=16, spp=16, max_depth=3, sampler="independent")
+    assert independent.stats["errorEstimate"]["upperBound"] is False
+
+
+def test_target_error_with_a_time_limit(renderer, cornell):
+    out = renderer.render(cornell, width=16, spp=100000, max_depth=2, target_error=1e-9,
+                          time_limit=0.5)
+    assert out.stats["adaptive"]["stoppedBy"] == "time-limit"
+    assert out.stats["adaptive"]["targetMet"] is False
 
 
 def test_time_limit_stops_early(renderer, cornell):
