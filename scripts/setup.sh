@@ -1,14 +1,13 @@
 #!/usr/bin/env bash
 # Installs whatever Debian 12 packages are missing, then configures and builds Wavefront
 # (CMake, Release) into build/. Run as root on a fresh machine; safe to run again.
-# Usage: [WAVEFRONT_MESA=backports] scripts/setup.sh [--with-tests]
+# Usage: [WAVEFRONT_MESA=backports|release] scripts/setup.sh [--with-tests]
 set -euo pipefail
 cd "$(dirname "$0")/.."
-case "${WAVEFRONT_MESA:-}" in
-"" | backports) ;;
-*) echo "setup: WAVEFRONT_MESA must be 'backports' or unset, not '${WAVEFRONT_MESA}'" >&2; exit 2 ;;
-esac
-
+# lavapipe: Mesa 25 by default (Debian 12's backports suite; Debian 13's own), whose traversal
+# code misses the cache less (docs/performance.md#mesa-250-from-bookworm-backports-2026-12-03)
+# and which offers the ray-tracing extensions; WAVEFRONT_MESA=release keeps Debian 12's 22.3.
+mesa=$(bash scripts/choose_mesa.sh)
 packages=(
     build-essential cmake ninja-build pkg-config
     libvulkan-dev vulkan-validationlayers
@@ -18,10 +17,8 @@ packages=(
     python3-matplotlib # wavefront converge's charts (scripts/plot_convergence.py)
     python3-dev pybind11-dev python3-numpy # the Python module (python/, WF_BUILD_PYTHON)
 )
-# lavapipe: the release's Mesa 22.3, or with WAVEFRONT_MESA=backports Debian 12's backports
-# suite's Mesa 25.0 (installed below, after the rest), whose traversal code misses the cache
-# less: 1.44x on a 300k-triangle mesh (docs/performance.md#mesa-250-from-bookworm-backports-2026-12-03).
-[ "${WAVEFRONT_MESA:-}" = "backports" ] || packages+=(mesa-vulkan-drivers)
+# The backports Mesa is installed below, after the rest.
+[ "$mesa" = "backports" ] || packages+=(mesa-vulkan-drivers)
 tests=OFF
 if [ "${1:-}" = "--with-tests" ]; then
     packages+=(googletest libgtest-dev xvfb xauth xdotool) # the viewer test: display, input
@@ -45,7 +42,18 @@ if [ ${#missing[@]} -gt 0 ]; then
         "${missing[@]}" >/dev/null
 fi
 
-[ "${WAVEFRONT_MESA:-}" != "backports" ] || bash scripts/mesa_backports.sh
+if [ "$mesa" = "backports" ]; then
+    bash scripts/mesa_backports.sh
+elif [ "${WAVEFRONT_MESA:-}" = "release" ]; then
+    installed=$(dpkg-query -W -f='${Version}' mesa-vulkan-drivers)
+    if [[ "$installed" == *bpo12* ]]; then
+        echo "setup: WAVEFRONT_MESA=release: replacing Mesa $installed with Debian 12's own"
+        sudo=""
+        [ "$(id -u)" -eq 0 ] || sudo="sudo"
+        DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends \
+            --allow-downgrades mesa-vulkan-drivers/bookworm >/dev/null
+    fi
+fi
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DWF_BUILD_TESTS="$tests" >/dev/null
 cmake --build build --parallel "$(nproc)"
