@@ -700,6 +700,26 @@ m = g.material(extensions={"KHR_materials_sheen": {"sheenColorFactor": [0.5, -1,
 broken("sheen_color_negative.gltf", "sheenColorFactor", quad(g, m, uv=False))
 
 
+# Problems only the parser sees: the refusal is still in the project's own words (the test
+# also checks that no message carries a library's wording: "tinygltf", "json.exception" ...).
+g = tri()
+doc = g.finish(uri=False)
+broken("buffer_without_uri.gltf", "a buffer has no 'uri'", json.dumps(doc).encode())
+g = tri()
+g.doc["nodes"][0]["translation"] = [0, 0, 12345]
+broken("number_overflow.gltf", "the number 1e309 is beyond",
+       json.dumps(g.finish()).encode().replace(b"12345", b"1e309"))
+broken("json_syntax_error.gltf", "the JSON is malformed at line 1",
+       b'{"asset": {"version": "2.0"}, ]')
+g = tri()
+doc = g.finish()
+doc["buffers"][0]["uri"] = "data:application/octet-stream;;base64,AA=="
+broken("bad_data_uri.gltf", "a data URI cannot be decoded", doc)
+broken("glb_too_short.glb", "shorter than its headers", b"glTF" + struct.pack("<II", 2, 16) + bytes(4))
+broken("skin_without_joints.gltf", "refused the file without naming the rule",
+       {"asset": {"version": "2.0"}, "skins": [{}]})
+
+
 def main():
     lines = []
     for name, expect, doc, files in CASES:

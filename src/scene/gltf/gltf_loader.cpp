@@ -25,35 +25,13 @@
 #include "scene/gltf/gltf_instancing.h"
 #include "scene/gltf/gltf_lights_cameras.h"
 #include "scene/gltf/gltf_materials.h"
+#include "scene/gltf/gltf_parse_messages.h"
 #include "scene/gltf/gltf_primitives.h"
 
 namespace wf {
 namespace {
 
 namespace fs = std::filesystem;
-
-// tinygltf's messages become one line; they may quote a whole data: URI, so long ones are
-// cut to keep the error readable.
-std::string collapseLines(const std::string& text) {
-    constexpr size_t MAX_CHARS = 400;
-    std::string out;
-    for (char c : text) {
-        if (out.size() >= MAX_CHARS) {
-            out += "...";
-            break;
-        }
-        bool lineBreak = c == '\n' || c == '\r';
-        if (lineBreak && !out.empty() && out.back() != ' ') {
-            out += "; ";
-        } else if (!lineBreak) {
-            out += c;
-        }
-    }
-    while (!out.empty() && (out.back() == ' ' || out.back() == ';')) {
-        out.pop_back();
-    }
-    return out;
-}
 
 // --- Model to Scene. ---
 
@@ -416,12 +394,15 @@ Scene loadModel(std::vector<unsigned char> bytes, const std::string& path,
     } catch (const std::exception& e) {
         err += e.what();
     }
-    const std::string messages = collapseLines(err + "\n" + warn);
+    const std::string messages = gltf::rewordParserMessages(err + "\n" + warn);
     if (!loaded) {
-        // A refused path explains a "File not found" better than tinygltf can.
-        std::string problem = messages.empty() ? "cannot parse glTF" : messages;
-        if (!policy.refusal.empty()) {
-            problem = policy.refusal + " (tinygltf: " + problem + ")";
+        // A refused path explains a "does not exist" better than the parser can; an empty
+        // URI is a missing one, which the parser's own message says.
+        std::string problem =
+            messages.empty() ? "the parser refused the file without naming the rule it breaks"
+                             : messages;
+        if (!policy.refusal.empty() && policy.refusal.rfind("refused to read '':", 0) != 0) {
+            problem = policy.refusal;
         }
         throw InputError(path + ": " + problem);
     }

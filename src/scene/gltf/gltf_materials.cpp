@@ -2,6 +2,7 @@
 // above 1 would create energy); extensions the renderer cannot honour are named once.
 #include "scene/gltf/gltf_materials.h"
 
+#include <cstdio>
 #include <tiny_gltf.h>
 
 #include <algorithm>
@@ -73,8 +74,14 @@ private:
     void checkRange(const std::string& name, const char* what, double value, double lo,
                     double hi) const {
         if (!(value >= lo && value <= hi)) { // NaN fails too
-            fail(file_, name + ": " + what + " must lie in [" + std::to_string(lo) + ", " +
-                            std::to_string(hi) + "]");
+            auto number = [](double x) {
+                char text[32];
+                std::snprintf(text, sizeof text, "%g", x);
+                return std::string(text);
+            };
+            fail(file_, name + ": " + what +
+                            (hi >= 1e30 ? " must be finite and at least " + number(lo)
+                                        : " must lie in [" + number(lo) + ", " + number(hi) + "]"));
         }
     }
     uint32_t extensionTexture(const tinygltf::Value& extension, const char* key, bool srgb,
