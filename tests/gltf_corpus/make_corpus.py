@@ -12,6 +12,9 @@ import zlib
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 F32, U8, U16, U32, I8, I16 = 5126, 5121, 5123, 5125, 5120, 5122
+# An 8x8 checker, light grey (240) and green (40, 200, 40) in 4x4 blocks, as lossless WebP
+# (written once with libwebp 1.2.4's WebPEncodeLosslessRGBA).
+WEBP = base64.b64decode("UklGRiQAAABXRUJQVlA4TBgAAAAvB8ABAA9wbPjjwB8Hfv7jAX+Aj+h/PAA=")
 # An 8x8 two-colour checker as baseline JPEG (written once with stbi_write_jpg).
 JPEG = base64.b64decode("/9j/4AAQSkZJRgABAQAAAQABAAD/2wCEAAMCAgMCAgMDAwMEAwMEBQgFBQQEBQoHBwYIDAoMDAsKCwsNDhIQDQ4RDgsLEBYQERMUFRUVDA8XGBYUGBIUFRQBAwQEBQQFCQUFCRQNCw0UFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFBQUFP/AABEIAAgACAMBIgACEQEDEQH/xAGiAAABBQEBAQEBAQAAAAAAAAAAAQIDBAUGBwgJCgsQAAIBAwMCBAMFBQQEAAABfQECAwAEEQUSITFBBhNRYQcicRQygZGhCCNCscEVUtHwJDNicoIJChYXGBkaJSYnKCkqNDU2Nzg5OkNERUZHSElKU1RVVldYWVpjZGVmZ2hpanN0dXZ3eHl6g4SFhoeIiYqSk5SVlpeYmZqio6Slpqeoqaqys7S1tre4ubrCw8TFxsfIycrS09TV1tfY2drh4uPk5ebn6Onq8fLz9PX29/j5+gEAAwEBAQEBAQEBAQAAAAAAAAECAwQFBgcICQoLEQACAQIEBAMEBwUEBAABAncAAQIDEQQFITEGEkFRB2FxEyIygQgUQpGhscEJIzNS8BVictEKFiQ04SXxFxgZGiYnKCkqNTY3ODk6Q0RFRkdISUpTVFVWV1hZWmNkZWZnaGlqc3R1dnd4eXqCg4SFhoeIiYqSk5SVlpeYmZqio6Slpqeoqaqys7S1tre4ubrCw8TFxsfIycrS09TV1tfY2dri4+Tl5ufo6ery8/T19vf4+fr/2gAMAwEAAhEDEQA/AI/+TLP+px/4SX/tx+zfZ/8Av7v3faPbG3vng/4bp/6kn/yrf/aKP26f+ZJ/7fv/AG3r5UrfhLhLJeOslocQ8Q0PbYutzc8+acL8k5Qj7sJRirRjFaRV7Xd22zkzDMMTlWJng8HPlpxtZWTtdJvVpvdvqf/Z")
 
@@ -322,6 +325,16 @@ case("valid/empty_scene.gltf", "loads 0", g)
 case("valid/texture_png.gltf", "loads 2 images=1 uv0=1", textured(checker_png()))
 case("valid/texture_jpeg_in_bufferview.glb", "loads 2 images=1", textured(JPEG, "image/jpeg",
                                                                         True))
+# EXT_texture_webp: its source wins over the core one (a PNG here, for viewers without WebP).
+for name, in_buffer in (("valid/texture_webp.gltf", False), ("valid/texture_webp_in_bufferview.glb", True)):
+    g = textured(checker_png(), in_buffer=in_buffer)
+    g.doc["textures"][0]["extensions"] = {"EXT_texture_webp": {"source": g.image(WEBP, "image/webp", in_buffer)}}
+    g.doc["extensionsUsed"] = ["EXT_texture_webp"]
+    case(name, "loads 2 images=1 uv0=1", g)
+g = textured(checker_png())
+g.doc["textures"][0] = {"extensions": {"EXT_texture_webp": {"source": g.image(WEBP, "image/webp")}}}
+g.doc["extensionsUsed"] = g.doc["extensionsRequired"] = ["EXT_texture_webp"]
+case("valid/texture_webp_only.gltf", "loads 2 images=1 uv0=1", g)
 g = textured(b"", "image/png")
 g.doc["images"][0] = {"uri": "checker.png"}
 case("valid/texture_external_file.gltf", "loads 2 images=1", g,

@@ -80,6 +80,23 @@ TEST(GltfFeatures, TexturesKeepSamplerTransformAndColourSpace) {
     EXPECT_EQ(load("texture_jpeg_in_bufferview.glb").surface.images[0].width, 8u);
 }
 
+// EXT_texture_webp's source is taken over the core PNG one, from a data URI or a bufferView,
+// and decoded exactly (lossless): 4x4 blocks of light grey and green.
+TEST(GltfFeatures, WebpTexturesAreDecoded) {
+    for (const char* name :
+         {"texture_webp.gltf", "texture_webp_in_bufferview.glb", "texture_webp_only.gltf"}) {
+        SCOPED_TRACE(name);
+        Scene scene = load(name);
+        ASSERT_EQ(scene.surface.images.size(), 1u);
+        const TextureImage& image = scene.surface.images[scene.surface.refImage[0]];
+        ASSERT_EQ(image.width, 8u);
+        ASSERT_EQ(image.height, 8u);
+        EXPECT_EQ(image.rgba[0], 0xfff0f0f0u);          // (0, 0): grey
+        EXPECT_EQ(image.rgba[4], 0xff28c828u);          // (4, 0): green (40, 200, 40)
+        EXPECT_EQ(image.rgba[4 * 8 + 4], 0xfff0f0f0u);  // (4, 4): grey
+    }
+}
+
 TEST(GltfFeatures, MissingImagesShowACheckerAndDropOtherUses) {
     Scene scene = load("missing_image_warns.gltf");
     ASSERT_EQ(scene.surface.images.size(), 1u);

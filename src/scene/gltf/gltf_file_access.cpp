@@ -4,9 +4,13 @@
 
 #include <tiny_gltf.h>
 
+#include <cstring>
+
 #include <algorithm>
 #include <fstream>
 #include <optional>
+
+#include "scene/gltf/gltf_buffer_streaming.h"
 
 namespace wf::gltf {
 namespace {
@@ -60,7 +64,27 @@ std::optional<fs::path> resolveInFolder(FsPolicy& policy, const std::string& req
     return resolveUri(policy, uri);
 }
 
+// tinygltf 2.7 decodes data: URIs only for the media types it knows, and takes any other
+// (EXT_texture_webp's image/webp) for a file name; such images are decoded here.
+constexpr const char* WEBP_DATA_URI = "data:image/webp;base64,";
+
+std::optional<std::string> webpDataUri(const FsPolicy& policy, const std::string& requested) {
+    std::string prefix = policy.folder.string();
+    if (prefix.empty() || prefix.back() != '/') {
+        prefix += '/';
+    }
+    for (const std::string& base : {prefix, std::string("./"), std::string()}) {
+        if (requested.rfind(base + WEBP_DATA_URI, 0) == 0) {
+            return requested.substr(base.size() + std::strlen(WEBP_DATA_URI));
+        }
+    }
+    return std::nullopt;
+}
+
 bool fileExists(const std::string& path, void* userData) {
+    if (webpDataUri(*static_cast<FsPolicy*>(userData), path)) {
+        return true;
+    }
     std::optional<fs::path> resolved = resolveInFolder(*static_cast<FsPolicy*>(userData), path);
     std::error_code ec;
     return resolved && fs::is_regular_file(*resolved, ec);
@@ -92,6 +116,15 @@ bool readResolved(FsPolicy& policy, const std::optional<fs::path>& resolved,
 bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path,
                    void* userData) {
     FsPolicy& policy = *static_cast<FsPolicy*>(userData);
+    if (std::optional<std::string> base64 = webpDataUri(policy, path)) {
+        // tinygltf URI-decodes the name first, which turns base64's '+' into ' '.
+        std::replace(base64->begin(), base64->end(), ' ', '+');
+        if (decodeBase64(base64->data(), base64->size(), *out)) {
+            return true;
+        }
+        *err += "a WebP data URI is not valid base64";
+        return false;
+    }
     std::string why;
     if (readResolved(policy, resolveInFolder(policy, path), *out, why)) {
         return true;

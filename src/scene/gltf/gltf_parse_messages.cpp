@@ -45,6 +45,8 @@ const std::vector<Rewording>& rewordings() {
                  "image $1 has neither a 'uri' nor a 'bufferView'"),
             rule(R"(Failed to parse `(uri|bufferView)` for image\[(\d+)\].*)",
                  "image $2's '$1' is not valid"),
+            rule(R"(File read error : .*data:image/webp.* : (.*))", "$1"),
+            rule(R"(File read error : (.*) : (.*))", "'$1' cannot be read: $2"),
             rule(R"(File is empty : (.*))", "'$1' is empty"),
             rule(R"(File open error : (.*))", "'$1' cannot be opened"),
             rule(R"(Invalid file size : (.*))", "'$1' has a size that cannot be read"),
