@@ -325,6 +325,15 @@ case("valid/empty_scene.gltf", "loads 0", g)
 case("valid/texture_png.gltf", "loads 2 images=1 uv0=1", textured(checker_png()))
 case("valid/texture_jpeg_in_bufferview.glb", "loads 2 images=1", textured(JPEG, "image/jpeg",
                                                                         True))
+# KHR_materials_unlit: the base colour as seen (an emitter of it that scatters nothing).
+g = quad(Gltf(), 0)
+g.material(pbrMetallicRoughness={"baseColorFactor": [0.2, 0.4, 0.6, 1]},
+           extensions={"KHR_materials_unlit": {}})
+g.doc["extensionsUsed"] = g.doc["extensionsRequired"] = ["KHR_materials_unlit"]
+case("valid/unlit.gltf", "loads 2", g)
+g = textured(checker_png(), extensions={"KHR_materials_unlit": {}})
+g.doc["extensionsUsed"] = ["KHR_materials_unlit"]
+case("valid/unlit_textured.gltf", "loads 2 images=1 uv0=1", g)
 # EXT_texture_webp: its source wins over the core one (a PNG here, for viewers without WebP).
 for name, in_buffer in (("valid/texture_webp.gltf", False), ("valid/texture_webp_in_bufferview.glb", True)):
     g = textured(checker_png(), in_buffer=in_buffer)

@@ -97,6 +97,24 @@ TEST(GltfFeatures, WebpTexturesAreDecoded) {
     }
 }
 
+// KHR_materials_unlit: the base colour becomes emission (factor and texture), and nothing
+// scatters; alpha stays with the base colour.
+TEST(GltfFeatures, UnlitMaterialsEmitTheirBaseColour) {
+    const Material plain = load("unlit.gltf").materials[0];
+    EXPECT_FLOAT_EQ(plain.emission.x, 0.2f);
+    EXPECT_FLOAT_EQ(plain.emission.y, 0.4f);
+    EXPECT_FLOAT_EQ(plain.emission.z, 0.6f);
+    EXPECT_EQ(glm::vec3(plain.baseColor), glm::vec3(0.0f));
+    EXPECT_EQ(plain.baseColor.w, 1.0f);
+    EXPECT_EQ(plain.specular, 0.0f);
+    EXPECT_EQ(plain.metallic, 0.0f);
+    EXPECT_EQ(plain.emissiveTexture, WF_NO_TEXTURE);
+    const Material textured = load("unlit_textured.gltf").materials[0];
+    EXPECT_NE(textured.baseColorTexture, WF_NO_TEXTURE);
+    EXPECT_EQ(textured.emissiveTexture, textured.baseColorTexture);
+    EXPECT_EQ(textured.emission, glm::vec3(1.0f));
+}
+
 TEST(GltfFeatures, MissingImagesShowACheckerAndDropOtherUses) {
     Scene scene = load("missing_image_warns.gltf");
     ASSERT_EQ(scene.surface.images.size(), 1u);

@@ -19,7 +19,7 @@ const std::set<std::string> SUPPORTED_EXTENSIONS = {
     "KHR_materials_specular", "KHR_materials_clearcoat", "KHR_materials_sheen",
     "KHR_materials_volume", "KHR_texture_transform", "KHR_lights_punctual",
     "KHR_mesh_quantization", "KHR_draco_mesh_compression", "EXT_meshopt_compression",
-    "KHR_meshopt_compression", "EXT_texture_webp"};
+    "KHR_meshopt_compression", "EXT_texture_webp", "KHR_materials_unlit"};
 
 double number(const tinygltf::Value& object, const char* key, double fallback) {
     if (!object.IsObject() || !object.Has(key)) {
@@ -226,6 +226,21 @@ void MaterialConverter::convertLayers(const tinygltf::Material& m, const std::st
     ignoreTextures(volume, {"thicknessTexture"}, name);
 }
 
+// KHR_materials_unlit: the base colour as seen, lit by nothing. In a path tracer that is a
+// surface emitting its base colour (factor x texture, the same sRGB texture reference) and
+// scattering none: the camera sees exactly the base colour, and other surfaces see it too,
+// as they would see any emitter. Alpha (MASK, BLEND) still comes from the base colour.
+void makeUnlit(Material& m) {
+    m.emission = glm::vec3(m.baseColor);
+    m.emissiveTexture = m.baseColorTexture;
+    m.baseColor = glm::vec4(0.0f, 0.0f, 0.0f, m.baseColor.w);
+    m.metallic = m.specular = m.transmission = m.clearcoat = 0.0f;
+    m.sheenColor = glm::vec3(0.0f);
+    m.thickness = 0.0f;
+    m.normalTexture = m.metallicRoughnessTexture = m.transmissionTexture = m.specularTexture =
+        m.specularColorTexture = WF_NO_TEXTURE;
+}
+
 Material MaterialConverter::convert(const tinygltf::Material& m, const std::string& name,
                                     MaterialNeeds& needs) {
     const auto& pbr = m.pbrMetallicRoughness;
@@ -308,6 +323,9 @@ Material MaterialConverter::convert(const tinygltf::Material& m, const std::stri
         out.specularTexture = extensionTexture(specular, "specularTexture", false, name, needs);
         out.specularColorTexture =
             extensionTexture(specular, "specularColorTexture", true, name, needs);
+    }
+    if (extension(m.extensions, "KHR_materials_unlit").IsObject()) {
+        makeUnlit(out);
     }
     if (out.normalTexture != WF_NO_TEXTURE) {
         const TextureRef& ref = tables_.refs[out.normalTexture];
