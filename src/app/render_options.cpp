@@ -139,6 +139,9 @@ namespace {
 void applyLensFlags(const ParsedArgs& parsed, Scene& scene) {
     Camera& camera = scene.camera;
     camera.aperture = parsed.floatValue("--aperture", camera.aperture, 0.0f, 1e30f);
+    if (camera.orthoHalfHeight > 0.0f && camera.aperture > 0.0f) {
+        throw UsageError("--aperture: the chosen camera is orthographic, which has no lens");
+    }
     camera.focusDistance =
         parsed.floatValue("--focus-distance", camera.focusDistance, 1e-30f, 1e30f);
     if (camera.aperture <= 0.0f || camera.focusDistance > 0.0f)
@@ -171,11 +174,11 @@ Scene loadSceneWithFlags(const ParsedArgs& parsed, const std::string& path,
         *summary = summarize(scene);
         summary->loadSeconds = loadSeconds;
     }
-    for (const std::string& line : warnings)
-        std::fprintf(stderr, "%s\n", line.c_str());
     if (!scene.hasCamera)
         scene.camera = frameBounds(scene);
     applyLensFlags(parsed, scene);
+    for (const std::string& line : warnings)
+        std::fprintf(stderr, "%s\n", line.c_str());
     return scene;
 }
 

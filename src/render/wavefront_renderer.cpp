@@ -101,6 +101,7 @@ void WavefrontRenderer::uploadParams() {
     RenderParams params{};
     params.cameraPosition = camera.position;
     params.tanHalfFovY = std::tan(0.5f * camera.yfov);
+    params.orthoHalfHeight = camera.orthoHalfHeight;
     params.cameraForward = camera.forward;
     params.aspect = float(settings_.width) / float(settings_.height);
     params.cameraUp = camera.up;

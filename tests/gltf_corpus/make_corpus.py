@@ -441,7 +441,7 @@ g.doc["cameras"] = [{"type": "perspective", "name": "front",
 for i in range(4):
     g.node(camera=i, translation=[0, 0, 3 + i], name="cam%d" % i)
 g.doc["scenes"][0]["nodes"] = list(range(5))
-case("valid/cameras_some_invalid.gltf", "loads 1 cameras=2", g)
+case("valid/cameras_some_invalid.gltf", "loads 1 cameras=3", g)
 g = tri()
 g.doc["extensionsUsed"] = ["EXT_unknown_thing", "KHR_materials_iridescence"]
 case("valid/unknown_extensions_warn.gltf", "loads 1", g)

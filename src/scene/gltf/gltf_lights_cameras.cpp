@@ -20,13 +20,22 @@ void addNodeCamera(const tinygltf::Model& model, const std::string& file, int no
     checkIndex(file, node.camera, model.cameras.size(), "camera", nodeName);
     const tinygltf::Camera& camera = model.cameras[node.camera];
     const std::string name = "camera " + std::to_string(node.camera);
-    if (camera.type != "perspective") {
-        warn(file, name + " is " + camera.type + "; only perspective cameras are supported");
+    const bool orthographic = camera.type == "orthographic";
+    if (camera.type != "perspective" && !orthographic) {
+        warn(file, name + " is skipped: type '" + camera.type +
+                       "' is neither perspective nor orthographic");
         return;
     }
     const double yfov = camera.perspective.yfov;
-    const double aspect = camera.perspective.aspectRatio;
-    if (!(yfov > 0.0 && yfov < M_PI) || !(aspect >= 0.0 && std::isfinite(aspect))) {
+    const double aspect = orthographic ? camera.orthographic.xmag / camera.orthographic.ymag
+                                       : camera.perspective.aspectRatio;
+    if (orthographic) {
+        const double xmag = camera.orthographic.xmag, ymag = camera.orthographic.ymag;
+        if (!(xmag > 0.0 && xmag < 1e30 && ymag > 0.0 && ymag < 1e30)) {
+            warn(file, name + " is skipped: orthographic xmag and ymag must be positive and finite");
+            return;
+        }
+    } else if (!(yfov > 0.0 && yfov < M_PI) || !(aspect >= 0.0 && std::isfinite(aspect))) {
         warn(file, name + " is skipped: yfov must lie in (0, pi) and aspectRatio be positive");
         return;
     }
@@ -42,8 +51,12 @@ void addNodeCamera(const tinygltf::Model& model, const std::string& file, int no
     out.position = glm::vec3(world[3]);
     out.forward = glm::vec3(forward);
     out.up = glm::vec3(up);
-    out.yfov = float(yfov);
     out.aspect = float(aspect);
+    if (orthographic) {
+        out.orthoHalfHeight = float(camera.orthographic.ymag);
+    } else {
+        out.yfov = float(yfov);
+    }
     // A thin lens from extras (glTF has none of its own); a bad value is ignored with a warning.
     for (const char* key : {"aperture", "focusDistance"}) {
         if (!camera.extras.IsObject() || !camera.extras.Has(key))
@@ -55,6 +68,10 @@ void addNodeCamera(const tinygltf::Model& model, const std::string& file, int no
             continue;
         }
         (std::string(key) == "aperture" ? out.aperture : out.focusDistance) = float(value);
+    }
+    if (orthographic && out.aperture > 0.0f) {
+        warn(file, name + ": an orthographic camera has no lens; extras.aperture ignored");
+        out.aperture = 0.0f;
     }
     scene.cameras.push_back(out);
     scene.cameraNames.push_back(!camera.name.empty() ? camera.name
