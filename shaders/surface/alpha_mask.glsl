@@ -4,7 +4,7 @@
 //   BLEND: stochastic transparency: the ray stops with probability alpha, decided by a hash
 //          of the ray and triangle. Unbiased for a path tracer (the expected transmittance is
 //          1 - alpha), reproducible for a given seed, and order-independent, unlike blending.
-// alpha = baseColorFactor.a x baseColorTexture.a; vertex colours are not read.
+// alpha = baseColorFactor.a x baseColorTexture.a x COLOR_0.a.
 #ifndef WF_ALPHA_MASK_GLSL
 #define WF_ALPHA_MASK_GLSL
 #include "surface/textures.glsl"
@@ -30,6 +30,9 @@ bool wfAlphaPasses(uint triangle, float b1, float b2, vec3 o, vec3 d) {
     uint baseTexture = materialAt(material).baseColorTexture;
     if (baseTexture != WF_NO_TEXTURE)
         alpha *= sampleTriangleTexture(baseTexture, triangle, b1, b2).a;
+#endif
+#if WF_HAS_VERTEX_COLORS
+    alpha *= vertexColorAt(triangle, b1, b2).a;
 #endif
     if ((flags & WF_MATERIAL_ALPHA_MASK) != 0u)
         return alpha >= materialAt(material).alphaCutoff;

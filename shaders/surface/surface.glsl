@@ -218,6 +218,9 @@ SurfaceHit loadSurface(uint instanceIndex, uint triangleIndex, float b1, float b
     s.material = tri.material;
     s.emitter = tri.emitter;
     vec4 base = material.baseColor;
+#if WF_HAS_VERTEX_COLORS
+    base *= vertexColorAt(triangleIndex, b1, b2);
+#endif
     s.metallic = material.metallic;
     s.roughness = material.roughness;
     s.ior = material.ior;

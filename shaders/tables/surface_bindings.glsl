@@ -26,6 +26,24 @@ TriangleNormals triangleNormalsAt(uint triangle) {
 }
 #endif
 
+#if WF_HAS_VERTEX_COLORS
+#define WF_PAGED_NAME vertexColorTexel
+#define WF_PAGED_FORMAT rgba32ui
+#define WF_PAGED_BINDING WF_BINDING_VERTEX_COLORS
+#define WF_PAGED_BINDING_PAGE1 WF_BINDING_VERTEX_COLOR_PAGE1
+#define WF_PAGED_PAGES WF_TRIANGLE_PAGES
+#define WF_PAGED_SHIFT WF_TRIANGLE_PAGE_SHIFT
+#define WF_PAGED_TEXELS WF_TRIANGLE_COLORS_TEXELS
+#include "tables/paged_table.glsl"
+
+// COLOR_0 at barycentrics (b1, b2) of a triangle, linear RGBA.
+vec4 vertexColorAt(uint triangle, float b1, float b2) {
+    uvec4 t = vertexColorTexel(triangle, 0u);
+    return (1.0 - b1 - b2) * unpackUnorm4x8(t.x) + b1 * unpackUnorm4x8(t.y) +
+           b2 * unpackUnorm4x8(t.z);
+}
+#endif
+
 #if WF_HAS_NORMAL_MAPS
 #define WF_PAGED_NAME tangentTexel
 #define WF_PAGED_FORMAT rgba32ui

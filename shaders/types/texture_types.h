@@ -28,6 +28,9 @@
 #ifndef WF_HAS_ALPHA_MASK
 #define WF_HAS_ALPHA_MASK 0
 #endif
+#ifndef WF_HAS_VERTEX_COLORS
+#define WF_HAS_VERTEX_COLORS 0
+#endif
 // WF_RAY_CONES (render_types.h): textures filtered from their mip chains by ray cones.
 
 #ifdef __cplusplus
@@ -48,6 +51,8 @@ using namespace glm;
 #define WF_BINDING_TANGENT_PAGE1 78   // 78 .. 84
 #define WF_BINDING_TEXCOORD0_PAGE1 85 // 85 .. 91
 #define WF_BINDING_TEXCOORD1_PAGE1 92 // 92 .. 98
+#define WF_BINDING_VERTEX_COLORS 110       // COLOR_0 (WF_HAS_VERTEX_COLORS)
+#define WF_BINDING_VERTEX_COLOR_PAGE1 111  // 111 .. 117
 
 // TextureRef.flags: bits 0-1 wrap S, bits 2-3 wrap T, then switches.
 #define WF_WRAP_REPEAT 0u
@@ -83,6 +88,17 @@ struct TriangleNormals {
     uint pad;
 };
 #define WF_TRIANGLE_NORMALS_TEXELS 1u // RGBA32UI
+
+// COLOR_0 at a triangle's corners: linear RGBA, each packed as four unorm8 (packUnorm4x8);
+// glTF multiplies the base colour (and its alpha) by it. Triangles of primitives without
+// COLOR_0 hold opaque white.
+struct TriangleColors {
+    uint c0;
+    uint c1;
+    uint c2;
+    uint pad;
+};
+#define WF_TRIANGLE_COLORS_TEXELS 1u // RGBA32UI
 
 // Tangents at the corners, octahedral like the normals; bit k of `signs` set means corner k's
 // bitangent is -cross(normal, tangent) (glTF TANGENT.w = -1, mirrored UVs).
@@ -125,6 +141,7 @@ static_assert(offsetof(wf::gpu_types::TextureRef, flags) == 40);
 static_assert(offsetof(wf::gpu_types::TextureRef, levels) == 44);
 static_assert(sizeof(wf::gpu_types::TriangleNormals) == 16 * WF_TRIANGLE_NORMALS_TEXELS);
 static_assert(sizeof(wf::gpu_types::TriangleTangents) == 16 * WF_TRIANGLE_TANGENTS_TEXELS);
+static_assert(sizeof(wf::gpu_types::TriangleColors) == 16 * WF_TRIANGLE_COLORS_TEXELS);
 static_assert(sizeof(wf::gpu_types::TriangleUvs) == 8 * WF_TRIANGLE_UVS_TEXELS);
 static_assert(offsetof(wf::gpu_types::TriangleUvs, uv1) == 8);
 static_assert(offsetof(wf::gpu_types::TriangleUvs, uv2) == 16);

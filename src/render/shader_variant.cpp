@@ -92,6 +92,7 @@ ShaderDefines ShaderVariant::defines() const {
             {"WF_TEXEL_PAGES", std::to_string(surface.texelPages)},
             {"WF_HAS_TEXCOORD1", flag(surface.texcoord1)},
             {"WF_HAS_NORMALS", flag(surface.normals)},
+            {"WF_HAS_VERTEX_COLORS", flag(surface.vertexColors)},
             {"WF_HAS_NORMAL_MAPS", flag(surface.normalMaps)},
             {"WF_HAS_ALPHA_MASK", flag(surface.alphaMask)},
             {"WF_RAY_CONES", flag(rayCones)},

@@ -63,6 +63,7 @@ SceneSummary summarize(const Scene& scene) {
     summary.texelBytes = textured ? s.texelBytes() : 0;
     summary.smoothNormals = !s.normals.empty();
     summary.texcoord1 = !s.uv1.empty();
+    summary.vertexColors = !s.colors.empty();
     summary.normalMaps = !s.tangents.empty();
     for (const Material& m : scene.materials) {
         summary.alphaMaskMaterials += (m.flags & WF_MATERIAL_ALPHA_MASK) != 0;
@@ -106,6 +107,8 @@ std::string describe(const SceneSummary& summary) {
                       std::string(summary.texcoord1 ? "2 UV sets" : "UVs");
     if (summary.normalMaps)
         vertexData += ", tangents";
+    if (summary.vertexColors)
+        vertexData += (vertexData.empty() ? "" : ", ") + std::string("colours");
     text += "; vertex data: " + (vertexData.empty() ? "positions only" : vertexData);
     text += "; materials with " + listCounts({{summary.alphaMaskMaterials, "alpha mask"},
                                               {summary.alphaBlendMaterials, "alpha blend"},

@@ -27,6 +27,7 @@ struct SceneSummary {
     uint64_t texelBytes = 0;
     bool smoothNormals = false;
     bool texcoord1 = false;
+    bool vertexColors = false; // COLOR_0
     bool normalMaps = false;
     size_t alphaMaskMaterials = 0, alphaBlendMaterials = 0, transmissiveMaterials = 0;
     double loadSeconds = 0.0; // reading and converting the file; set by whoever timed it

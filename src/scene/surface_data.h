@@ -1,5 +1,5 @@
 // What a scene may carry beyond flat triangles: per-triangle vertex attributes (shading
-// normals, tangents, two UV sets) and decoded textures. Every array is either empty (the scene
+// normals, tangents, two UV sets, vertex colours) and decoded textures. Every array is either empty (the scene
 // does not need it, and the GPU gets no buffer for it) or holds one entry per triangle, in the
 // same order as Scene::triangles.
 #pragma once
@@ -12,6 +12,7 @@
 namespace wf {
 
 using gpu_types::TextureRef;
+using gpu_types::TriangleColors;
 using gpu_types::TriangleNormals;
 using gpu_types::TriangleTangents;
 using gpu_types::TriangleUvs;
@@ -29,6 +30,7 @@ struct SurfaceData {
     std::vector<TriangleTangents> tangents; // only when a normal map is used
     std::vector<TriangleUvs> uv0;           // only when a texture is used
     std::vector<TriangleUvs> uv1;           // only when a texture reads TEXCOORD_1
+    std::vector<TriangleColors> colors;     // COLOR_0, only when some primitive has it
     // Material texture fields index `textureRefs`; refImage[i] is the image of textureRefs[i]
     // (its page and offset are assigned when the texels are uploaded).
     std::vector<TextureRef> textureRefs;

@@ -325,6 +325,26 @@ case("valid/empty_scene.gltf", "loads 0", g)
 case("valid/texture_png.gltf", "loads 2 images=1 uv0=1", textured(checker_png()))
 case("valid/texture_jpeg_in_bufferview.glb", "loads 2 images=1", textured(JPEG, "image/jpeg",
                                                                         True))
+# COLOR_0 multiplies the base colour: float RGB on one mesh, normalized u8 RGBA on another,
+# and a third mesh without it (opaque white).
+g = Gltf()
+g.node(mesh=g.mesh({"POSITION": g.floats(QUAD, "VEC3"),
+                    "COLOR_0": g.floats([1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1], "VEC3")},
+                   g.indices(QUAD_INDICES)))
+g.node(mesh=g.mesh({"POSITION": g.floats([x + (2 if i % 3 == 0 else 0) for i, x in enumerate(QUAD)], "VEC3"),
+                    "COLOR_0": g.accessor(bytes([255, 0, 0, 255, 0, 255, 0, 128, 0, 0, 255, 0,
+                                                 255, 255, 255, 255]), U8, 4, "VEC4",
+                                          normalized=True)},
+                   g.indices(QUAD_INDICES)))
+g.node(mesh=g.mesh({"POSITION": g.floats([x + (4 if i % 3 == 0 else 0) for i, x in enumerate(QUAD)], "VEC3")},
+                   g.indices(QUAD_INDICES)))
+g.doc["scenes"][0]["nodes"] = [0, 1, 2]
+case("valid/vertex_colors.gltf", "loads 6", g)
+g = Gltf()
+g.node(mesh=g.mesh({"POSITION": g.floats(QUAD, "VEC3"), "COLOR_0": g.floats([1, 0, 0] * 3, "VEC3")},
+                   g.indices(QUAD_INDICES)))
+case("invalid/vertex_colors_wrong_count.gltf", "refused COLOR_0 has 3 elements but POSITION has 4", g)
+
 # KHR_materials_unlit: the base colour as seen (an emitter of it that scatters nothing).
 g = quad(Gltf(), 0)
 g.material(pbrMetallicRoughness={"baseColorFactor": [0.2, 0.4, 0.6, 1]},

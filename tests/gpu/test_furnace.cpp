@@ -3,6 +3,7 @@
 // by BSDF-sampled hits, so counting it twice (or missing an MIS weight) shows up at once.
 #include <cmath>
 
+#include <glm/gtc/packing.hpp>
 #include <gtest/gtest.h>
 
 #include "gpu_test_util.h"
@@ -50,6 +51,33 @@ TEST(FurnaceDepth, MaxDepthTruncatesTheSeriesExactly) {
         const double expected = emission * (1.0 - std::pow(albedo, depth)) / (1.0 - albedo);
         MeanAndError measured = imageMean(result.rgb);
         EXPECT_NEAR(measured.mean, expected, 0.005 * expected) << "max depth " << depth;
+    }
+    EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
+}
+
+// COLOR_0 multiplies the base colour: walls of albedo a painted with vertex colour c reflect
+// a c, so L = E / (1 - a c); a colour that varies over a triangle averages to its mean at the
+// centre of the box, which is what the per-channel colours here test (each channel its own c).
+TEST(FurnaceVertexColors, ColourMultipliesTheAlbedo) {
+    const float albedo = 0.8f, emission = 0.5f;
+    Scene scene = furnaceBox(albedo, emission);
+    const glm::vec4 colour(0.25f, 0.5f, 1.0f, 1.0f);
+    const uint32_t packed = glm::packUnorm4x8(colour);
+    scene.surface.colors.assign(scene.triangles.size(), {packed, packed, packed, 0u});
+    RenderSettings settings;
+    settings.width = settings.height = 32;
+    settings.samplesPerPixel = 64;
+    settings.maxDepth = 200;
+    RenderResult result = renderScene(scene, settings);
+    const glm::vec4 stored = glm::unpackUnorm4x8(packed); // 8-bit: 0.251, 0.502, 1
+    for (int c = 0; c < 3; ++c) {
+        std::vector<float> channel;
+        for (size_t i = c; i < result.rgb.size(); i += 3)
+            channel.insert(channel.end(), 3, result.rgb[i]);
+        const double expected = emission / (1.0 - albedo * stored[c]);
+        MeanAndError measured = imageMean(channel);
+        EXPECT_NEAR(measured.mean, expected, 0.005 * expected + 4.0 * measured.standardError)
+            << "channel " << c;
     }
     EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
 }

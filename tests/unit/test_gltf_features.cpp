@@ -97,6 +97,21 @@ TEST(GltfFeatures, WebpTexturesAreDecoded) {
     }
 }
 
+// COLOR_0: float RGB and normalized u8 RGBA at the corners, opaque white where a primitive
+// has none; the GPU reads them packed as unorm8 RGBA.
+TEST(GltfFeatures, VertexColoursAtTheCorners) {
+    Scene scene = load("vertex_colors.gltf");
+    ASSERT_EQ(scene.surface.colors.size(), 6u);
+    EXPECT_EQ(scene.surface.colors[0].c0, 0xff0000ffu); // vertex 0: red, alpha 1
+    EXPECT_EQ(scene.surface.colors[0].c1, 0xff00ff00u); // vertex 1: green
+    EXPECT_EQ(scene.surface.colors[2].c1, 0x8000ff00u); // u8 green with alpha 128
+    for (size_t t : {4u, 5u})
+        for (uint32_t c : {scene.surface.colors[t].c0, scene.surface.colors[t].c1,
+                           scene.surface.colors[t].c2})
+            EXPECT_EQ(c, 0xffffffffu);
+    EXPECT_TRUE(load("triangle.gltf").surface.colors.empty()); // no COLOR_0, no array
+}
+
 // KHR_materials_unlit: the base colour becomes emission (factor and texture), and nothing
 // scatters; alpha stays with the base colour.
 TEST(GltfFeatures, UnlitMaterialsEmitTheirBaseColour) {

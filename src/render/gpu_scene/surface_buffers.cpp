@@ -118,6 +118,7 @@ void followTriangleOrder(std::vector<Triangle>& triangles, SurfaceData& surface)
     permute(surface.tangents);
     permute(surface.uv0);
     permute(surface.uv1);
+    permute(surface.colors);
     for (Triangle& t : triangles)
         t.pad = 0;
 }
@@ -129,6 +130,7 @@ SurfaceFeatures surfaceFeatures(const SurfaceData& surface, const std::vector<Ma
     f.normals = !surface.normals.empty();
     f.texcoord1 = f.textures && !surface.uv1.empty();
     f.normalMaps = !surface.tangents.empty() && f.textures && f.normals;
+    f.vertexColors = !surface.colors.empty();
     for (const Material& m : materials)
         f.alphaMask |= (m.flags & (WF_MATERIAL_ALPHA_MASK | WF_MATERIAL_ALPHA_BLEND)) != 0;
     if (f.textures)
@@ -142,6 +144,8 @@ SurfaceBuffers::SurfaceBuffers(const Context& context, const SurfaceData& surfac
         normals_ = uploadPages(context, "vertex normals", surface.normals, trianglePages);
     if (features.normalMaps)
         tangents_ = uploadPages(context, "vertex tangents", surface.tangents, trianglePages);
+    if (features.vertexColors)
+        colors_ = uploadPages(context, "vertex colours", surface.colors, trianglePages);
     if (!features.textures)
         return;
     // Without UVs, one zero entry a page: the variant reads them, no texture lookup uses them.
@@ -196,6 +200,7 @@ SurfaceBuffers::SurfaceBuffers(const Context& context, const SurfaceData& surfac
 void SurfaceBuffers::appendBindings(DescriptorBindings& bindings) const {
     bindPages(bindings, normals_, WF_BINDING_NORMALS, WF_BINDING_NORMAL_PAGE1);
     bindPages(bindings, tangents_, WF_BINDING_TANGENTS, WF_BINDING_TANGENT_PAGE1);
+    bindPages(bindings, colors_, WF_BINDING_VERTEX_COLORS, WF_BINDING_VERTEX_COLOR_PAGE1);
     bindPages(bindings, uv0_, WF_BINDING_TEXCOORDS0, WF_BINDING_TEXCOORD0_PAGE1,
               BufferAccess::Uint2Texels);
     bindPages(bindings, uv1_, WF_BINDING_TEXCOORDS1, WF_BINDING_TEXCOORD1_PAGE1,
@@ -209,7 +214,7 @@ void SurfaceBuffers::appendBindings(DescriptorBindings& bindings) const {
 
 void SurfaceBuffers::appendMemoryReport(
     std::vector<std::pair<std::string, uint64_t>>& report) const {
-    for (const std::vector<Buffer>* pages : {&normals_, &tangents_, &uv0_, &uv1_})
+    for (const std::vector<Buffer>* pages : {&normals_, &tangents_, &uv0_, &uv1_, &colors_})
         for (const Buffer& page : *pages)
             report.emplace_back(page.name(), page.size());
     if (textureRefs_)

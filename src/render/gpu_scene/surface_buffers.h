@@ -51,6 +51,7 @@ struct SurfaceFeatures {
     bool normals = false;
     bool texcoord1 = false;
     bool normalMaps = false;
+    bool vertexColors = false; // COLOR_0
     bool alphaMask = false; // some material is MASK or BLEND
     uint32_t texelPages = 0;
 };
@@ -73,6 +74,7 @@ private:
     std::vector<Buffer> tangents_;
     std::vector<Buffer> uv0_;
     std::vector<Buffer> uv1_;
+    std::vector<Buffer> colors_;
     Buffer textureRefs_;
     std::vector<Buffer> texelPages_;
 };

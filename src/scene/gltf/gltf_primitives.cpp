@@ -225,6 +225,12 @@ void PrimitiveBuilder::add(const tinygltf::Primitive& primitive, const std::stri
                                 optional("TEXCOORD_1", 2, needs.uv1)};
     const bool normalMap = needs.normalMapTexCoord >= 0;
     const FloatArray* tangents = optional("TANGENT", 4, normalMap);
+    // COLOR_0 is RGB or RGBA (float, or normalized unsigned byte or short).
+    const int colorAccessor = attribute("COLOR_0");
+    const bool rgb = colorAccessor >= 0 && size_t(colorAccessor) < model_.accessors.size() &&
+                     model_.accessors[colorAccessor].type == TINYGLTF_TYPE_VEC3;
+    const FloatArray* colors = optional("COLOR_0", rgb ? 3 : 4, true);
+    needColors_ |= colors != nullptr;
     if ((needs.uv0 && !uvs[0]) || (needs.uv1 && !uvs[1])) {
         ++missingUvs_;
     }
@@ -293,6 +299,16 @@ void PrimitiveBuilder::add(const tinygltf::Primitive& primitive, const std::stri
             surface_.uv1.resize(triangles_.size() - 1);
             surface_.uv1.push_back(uv[1]);
         }
+        if (needColors_) {
+            TriangleColors corners{kOpaqueWhite, kOpaqueWhite, kOpaqueWhite, 0u};
+            uint32_t* packed[3] = {&corners.c0, &corners.c1, &corners.c2};
+            for (int k = 0; k < 3 && colors; ++k) {
+                const float* q = (*colors)[idx[k]];
+                *packed[k] = glm::packUnorm4x8(glm::vec4(q[0], q[1], q[2], rgb ? 1.0f : q[3]));
+            }
+            surface_.colors.resize(triangles_.size() - 1, {kOpaqueWhite, kOpaqueWhite, kOpaqueWhite, 0u});
+            surface_.colors.push_back(corners);
+        }
         if (!needTangents_) {
             continue;
         }
@@ -356,6 +372,7 @@ void PrimitiveBuilder::groupByMesh(Scene& scene) {
     permuteInPlace(surface_.tangents, order);
     permuteInPlace(surface_.uv0, order);
     permuteInPlace(surface_.uv1, order);
+    permuteInPlace(surface_.colors, order);
     std::vector<uint32_t> kept(meshCount_, kWorldGeometry);
     std::vector<Bounds> boxes;
     for (uint32_t m = 0; m < meshCount_; ++m) {
@@ -415,6 +432,8 @@ void PrimitiveBuilder::finish(Scene& scene) {
     keep(surface_.normals, smoothNormals_ || needTangents_);
     keep(surface_.uv0, needUv0_);
     keep(surface_.uv1, needUv1_);
+    if (needColors_)
+        surface_.colors.resize(n, {kOpaqueWhite, kOpaqueWhite, kOpaqueWhite, 0u});
     if (meshCount_ > 0)
         groupByMesh(scene);
     scene.triangles = std::move(triangles_);
@@ -422,6 +441,7 @@ void PrimitiveBuilder::finish(Scene& scene) {
     scene.surface.tangents = std::move(surface_.tangents);
     scene.surface.uv0 = std::move(surface_.uv0);
     scene.surface.uv1 = std::move(surface_.uv1);
+    scene.surface.colors = std::move(surface_.colors);
 }
 
 } // namespace wf::gltf

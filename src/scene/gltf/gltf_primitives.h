@@ -90,7 +90,8 @@ private:
     bool usedDefault_ = false;
     bool smoothNormals_ = false; // some NORMAL differs from the flat normal
     bool storeNormals_ = false;  // surface_.normals holds one entry per triangle so far
-    bool needUv0_ = false, needUv1_ = false, needTangents_ = false;
+    bool needUv0_ = false, needUv1_ = false, needTangents_ = false, needColors_ = false;
+    static constexpr uint32_t kOpaqueWhite = 0xffffffffu; // COLOR_0 where a primitive has none
     size_t skippedPrimitives_ = 0;
     size_t degenerateTriangles_ = 0;
     size_t missingUvs_ = 0;
