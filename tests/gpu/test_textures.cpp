@@ -151,10 +151,8 @@ TEST(Textures, EmissiveTextureIsSrgbDecodedAndOriented) {
 // texels times the factor, whatever lights the scene (here nothing else).
 TEST(Textures, UnlitSurfacesShowTheirBaseColour) {
     Scene scene = loadGltf(std::string(WF_TEST_CORPUS_DIR) + "/valid/unlit_textured.gltf");
+    scene.camera = cameraFacingQuads().camera;
     scene.camera.position = glm::vec3(0.5f, 0.5f, 1.0f); // the unit quad at z = 0 fills the view
-    scene.camera.forward = glm::vec3(0, 0, -1);
-    scene.camera.up = glm::vec3(0, 1, 0);
-    scene.camera.yfov = 2.0f * std::atan(0.5f);
     scene.hasCamera = true;
     const uint32_t size = 16;
     RenderResult r = renderScene(scene, settings(size, 4, 4));

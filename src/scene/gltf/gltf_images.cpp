@@ -38,6 +38,13 @@ bool sizeAllowed(int width, int height, std::string& why) {
     return true;
 }
 
+void copyRgba(const unsigned char* pixels, int width, int height, TextureImage& out) {
+    out.width = uint32_t(width);
+    out.height = uint32_t(height);
+    out.rgba.resize(size_t(width) * size_t(height));
+    std::memcpy(out.rgba.data(), pixels, out.rgba.size() * 4);
+}
+
 bool decodeWebp(const unsigned char* bytes, size_t size, TextureImage& out, std::string& why) {
     int width = 0, height = 0;
     if (!WebPGetInfo(bytes, size, &width, &height)) {
@@ -54,10 +61,7 @@ bool decodeWebp(const unsigned char* bytes, size_t size, TextureImage& out, std:
         WebPFree(pixels);
         return false;
     }
-    out.width = uint32_t(w);
-    out.height = uint32_t(h);
-    out.rgba.resize(size_t(w) * size_t(h));
-    std::memcpy(out.rgba.data(), pixels, out.rgba.size() * 4);
+    copyRgba(pixels, w, h, out);
     WebPFree(pixels);
     return true;
 }
@@ -103,10 +107,7 @@ bool decodeImage(const unsigned char* bytes, size_t size, TextureImage& out, std
         stbi_image_free(pixels);
         return false;
     }
-    out.width = uint32_t(w);
-    out.height = uint32_t(h);
-    out.rgba.resize(size_t(w) * size_t(h));
-    std::memcpy(out.rgba.data(), pixels, out.rgba.size() * 4);
+    copyRgba(pixels, w, h, out);
     stbi_image_free(pixels);
     return true;
 }
