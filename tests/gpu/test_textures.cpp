@@ -147,27 +147,6 @@ TEST(Textures, EmissiveTextureIsSrgbDecodedAndOriented) {
     EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
 }
 
-// KHR_materials_unlit: the camera sees exactly the base colour, the texture's sRGB-decoded
-// texels times the factor, whatever lights the scene (here nothing else).
-TEST(Textures, UnlitSurfacesShowTheirBaseColour) {
-    Scene scene = loadGltf(std::string(WF_TEST_CORPUS_DIR) + "/valid/unlit_textured.gltf");
-    scene.camera = cameraFacingQuads().camera;
-    scene.camera.position = glm::vec3(0.5f, 0.5f, 1.0f); // the unit quad at z = 0 fills the view
-    scene.hasCamera = true;
-    const uint32_t size = 16;
-    RenderResult r = renderScene(scene, settings(size, 4, 4));
-    auto linear = [](float srgb8) { return std::pow((srgb8 / 255.0f + 0.055f) / 1.055f, 2.4f); };
-    // The 8x8 checker's 4x4 blocks: grey (240) at the top left, red (220, 40, 40) beside it.
-    for (int c = 0; c < 3; ++c) {
-        EXPECT_NEAR(pixel(r, size, 3, 3)[c], linear(240), 2e-3f);
-        EXPECT_NEAR(pixel(r, size, 12, 12)[c], linear(240), 2e-3f);
-    }
-    EXPECT_NEAR(pixel(r, size, 12, 3)[0], linear(220), 2e-3f);
-    EXPECT_NEAR(pixel(r, size, 12, 3)[1], linear(40), 2e-3f);
-    EXPECT_NEAR(pixel(r, size, 3, 12)[2], linear(40), 2e-3f);
-    EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
-}
-
 // Bilinear filtering and REPEAT wrapping with a KHR_texture_transform offset of half a texel
 // row: a 2x1 texture black|white, linear data, sampled at u + 0.25 across the quad.
 TEST(Textures, BilinearRepeatAndTransform) {

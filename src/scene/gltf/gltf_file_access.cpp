@@ -20,11 +20,17 @@ namespace fs = std::filesystem;
 // A URI as the file wrote it, taken relative to the scene's folder.
 std::optional<fs::path> resolveUri(FsPolicy& policy, const std::string& uri) {
     auto refuse = [&](const std::string& why) -> std::optional<fs::path> {
-        if (policy.refusal.empty()) {
-            policy.refusal = "refused to read '" + uri + "': " + why;
+        if (policy.refusal.empty()) { // a URI may be megabytes of data: quote its start
+            const std::string shown = uri.size() > 60 ? uri.substr(0, 60) + "..." : uri;
+            policy.refusal = "refused to read '" + shown + "': " + why;
         }
         return std::nullopt;
     };
+    // tinygltf decodes the data: URIs it can and hands the rest over as file names.
+    if (uri.rfind("data:", 0) == 0) {
+        return refuse("a data: uri must be 'data:<media type>;base64,<data>' with a media "
+                      "type glTF allows");
+    }
     const fs::path relative(uri);
     if (uri.empty() || relative.is_absolute() || relative.has_root_path()) {
         return refuse("only paths relative to the scene's folder are allowed");

@@ -1,10 +1,10 @@
-// Image bytes to RGBA8 texels with stb_image (Debian's libstb; PNG, JPEG) and libwebp (WebP),
-// every size checked first.
+// Image bytes to RGBA8 texels with stb_image (Debian's libstb; PNG, JPEG) and libwebp (WebP,
+// EXT_texture_webp), every size checked first.
 #include "scene/gltf/gltf_images.h"
 
 #include <stb_image.h>
-#include <webp/decode.h>
 #include <tiny_gltf.h>
+#include <webp/decode.h>
 
 #include <climits>
 #include <cstring>
@@ -38,30 +38,26 @@ bool sizeAllowed(int width, int height, std::string& why) {
     return true;
 }
 
-void copyRgba(const unsigned char* pixels, int width, int height, TextureImage& out) {
-    out.width = uint32_t(width);
-    out.height = uint32_t(height);
-    out.rgba.resize(size_t(width) * size_t(height));
-    std::memcpy(out.rgba.data(), pixels, out.rgba.size() * 4);
-}
-
+// EXT_texture_webp with Debian's libwebp: the size from the header first, then RGBA8.
 bool decodeWebp(const unsigned char* bytes, size_t size, TextureImage& out, std::string& why) {
     int width = 0, height = 0;
     if (!WebPGetInfo(bytes, size, &width, &height)) {
         why = "unreadable WebP header";
         return false;
     }
-    if (!sizeAllowed(width, height, why)) {
+    if (!sizeAllowed(width, height, why))
         return false;
-    }
     int w = 0, h = 0;
     uint8_t* pixels = WebPDecodeRGBA(bytes, size, &w, &h);
     if (!pixels || w != width || h != height) {
-        why = pixels ? "WebP image changed size while decoding" : "cannot decode WebP image";
+        why = pixels ? "WebP image changed size while decoding" : "the WebP data does not decode";
         WebPFree(pixels);
         return false;
     }
-    copyRgba(pixels, w, h, out);
+    out.width = uint32_t(w);
+    out.height = uint32_t(h);
+    out.rgba.resize(size_t(w) * size_t(h));
+    std::memcpy(out.rgba.data(), pixels, out.rgba.size() * 4);
     WebPFree(pixels);
     return true;
 }
@@ -80,9 +76,8 @@ TextureImage fallbackChecker() {
 } // namespace
 
 bool decodeImage(const unsigned char* bytes, size_t size, TextureImage& out, std::string& why) {
-    if (isWebp(bytes, size)) {
+    if (isWebp(bytes, size))
         return decodeWebp(bytes, size, out, why);
-    }
     if (!isPng(bytes, size) && !isJpeg(bytes, size)) {
         why = "not a PNG, JPEG or WebP image (only those are supported)";
         return false;
@@ -96,9 +91,8 @@ bool decodeImage(const unsigned char* bytes, size_t size, TextureImage& out, std
         why = std::string("unreadable image header (") + stbi_failure_reason() + ")";
         return false;
     }
-    if (!sizeAllowed(width, height, why)) {
+    if (!sizeAllowed(width, height, why))
         return false;
-    }
     int w = 0, h = 0, n = 0;
     unsigned char* pixels = stbi_load_from_memory(bytes, int(size), &w, &h, &n, 4);
     if (!pixels || w != width || h != height) { // the header must not change its mind
@@ -107,7 +101,10 @@ bool decodeImage(const unsigned char* bytes, size_t size, TextureImage& out, std
         stbi_image_free(pixels);
         return false;
     }
-    copyRgba(pixels, w, h, out);
+    out.width = uint32_t(w);
+    out.height = uint32_t(h);
+    out.rgba.resize(size_t(w) * size_t(h));
+    std::memcpy(out.rgba.data(), pixels, out.rgba.size() * 4);
     stbi_image_free(pixels);
     return true;
 }

@@ -18,20 +18,44 @@
 
 #include "errors.h"
 #include "scene/gltf/gltf_accessors.h"
+#include "scene/gltf/gltf_animation.h"
 #include "scene/gltf/gltf_buffer_streaming.h"
 #include "scene/gltf/compression/gltf_compression.h"
 #include "scene/gltf/gltf_file_access.h"
 #include "scene/gltf/gltf_images.h"
 #include "scene/gltf/gltf_instancing.h"
 #include "scene/gltf/gltf_lights_cameras.h"
+#include "scene/gltf/gltf_parse_errors.h"
 #include "scene/gltf/gltf_materials.h"
-#include "scene/gltf/gltf_parse_messages.h"
 #include "scene/gltf/gltf_primitives.h"
 
 namespace wf {
 namespace {
 
 namespace fs = std::filesystem;
+
+// tinygltf's messages become one line; they may quote a whole data: URI, so long ones are
+// cut to keep the error readable.
+std::string collapseLines(const std::string& text) {
+    constexpr size_t MAX_CHARS = 400;
+    std::string out;
+    for (char c : text) {
+        if (out.size() >= MAX_CHARS) {
+            out += "...";
+            break;
+        }
+        bool lineBreak = c == '\n' || c == '\r';
+        if (lineBreak && !out.empty() && out.back() != ' ') {
+            out += "; ";
+        } else if (!lineBreak) {
+            out += c;
+        }
+    }
+    while (!out.empty() && (out.back() == ' ' || out.back() == ';')) {
+        out.pop_back();
+    }
+    return out;
+}
 
 // --- Model to Scene. ---
 
@@ -65,7 +89,7 @@ class Converter {
 public:
     Converter(const tinygltf::Model& model, const std::string& file, gltf::FsPolicy& policy,
               const GltfOptions& options)
-        : model_(model), file_(file), policy_(policy), options_(options) {}
+        : model_(model), file_(file), policy_(policy), options_(options), reader_(model, file) {}
     Scene run();
 
 private:
@@ -81,6 +105,8 @@ private:
     std::vector<std::size_t> countPlacements() const;
     std::size_t checkPlacedTriangles(const std::vector<std::size_t>& placements) const;
     void addDefaultEnvironment();
+    void poseNodes();
+    gltf::Deformation deformationOf(int nodeIndex);
 
     const tinygltf::Model& model_;
     const std::string& file_;
@@ -89,6 +115,9 @@ private:
     Scene scene_;
     std::vector<int> parent_;
     std::vector<bool> instanced_; // per mesh (gltf_instancing.h)
+    gltf::AccessorReader reader_; // animations and skins
+    std::vector<gltf::NodeAnimation> animated_; // per node, at options_.time
+    std::vector<glm::dmat4> nodeWorld_;         // per node, every node (joints may be anywhere)
 };
 
 // Unknown extensions: one warning each, refused when required (the file says it cannot be
@@ -167,7 +196,32 @@ glm::dmat4 Converter::localTransform(int nodeIndex) const {
     const tinygltf::Node& node = model_.nodes[nodeIndex];
     const std::string name = "node " + std::to_string(nodeIndex);
     glm::dmat4 m(1.0);
-    if (!node.matrix.empty()) {
+    const gltf::NodeAnimation* animated =
+        std::size_t(nodeIndex) < animated_.size() ? &animated_[nodeIndex] : nullptr;
+    if (animated && (animated->translation || animated->rotation || animated->scale)) {
+        // The channels replace the node's own T, R or S (gltf_animation checked it has no matrix).
+        const auto& t = node.translation;
+        const auto& r = node.rotation;
+        const auto& s = node.scale;
+        if ((!t.empty() && t.size() != 3) || (!r.empty() && r.size() != 4) ||
+            (!s.empty() && s.size() != 3)) {
+            fail(name + ": translation and scale need 3 numbers, rotation 4");
+        }
+        glm::dvec3 tv = t.empty() ? glm::dvec3(0.0) : glm::dvec3(t[0], t[1], t[2]);
+        glm::dquat rq = r.empty() ? glm::dquat(1, 0, 0, 0) : glm::dquat(r[3], r[0], r[1], r[2]);
+        glm::dvec3 sv = s.empty() ? glm::dvec3(1.0) : glm::dvec3(s[0], s[1], s[2]);
+        tv = animated->translation.value_or(tv);
+        rq = animated->rotation.value_or(rq);
+        sv = animated->scale.value_or(sv);
+        const double len = glm::length(rq);
+        if (!(len > 0.0) || !std::isfinite(len))
+            fail(name + ": rotation is not a usable quaternion");
+        rq /= len;
+        m[3] = glm::dvec4(tv, 1.0);
+        m = m * rotationMatrix(rq.x, rq.y, rq.z, rq.w) *
+            glm::dmat4(glm::dvec4(sv.x, 0, 0, 0), glm::dvec4(0, sv.y, 0, 0),
+                       glm::dvec4(0, 0, sv.z, 0), glm::dvec4(0, 0, 0, 1));
+    } else if (!node.matrix.empty()) {
         if (node.matrix.size() != 16) {
             fail(name + ": matrix needs 16 numbers");
         }
@@ -276,13 +330,17 @@ void Converter::walkNodes(gltf::PrimitiveBuilder& builder) {
             const auto& primitives = model_.meshes[node.mesh].primitives;
             // An instanced mesh is read once, in its own space, at its first placement.
             const bool instanced = instanced_[node.mesh];
+            const gltf::Deformation deformation = deformationOf(index);
+            // A skinned mesh sits where its joints put it; its node's transform is ignored.
+            const glm::dmat4 placed =
+                deformation.jointMatrices.empty() ? world : glm::dmat4(1.0);
             const bool firstPlacement = instanced && meshSlot[node.mesh] == gltf::kWorldGeometry;
             if (firstPlacement)
                 meshSlot[node.mesh] = builder.newMesh();
             for (size_t p = 0; p < primitives.size() && (!instanced || firstPlacement); ++p) {
                 builder.add(primitives[p], "mesh " + std::to_string(node.mesh) + " primitive " +
-                            std::to_string(p), instanced ? glm::dmat4(1.0) : world,
-                            meshSlot[node.mesh]);
+                            std::to_string(p), instanced ? glm::dmat4(1.0) : placed,
+                            meshSlot[node.mesh], &deformation);
             }
             if (instanced)
                 builder.place(meshSlot[node.mesh], world, name);
@@ -291,6 +349,55 @@ void Converter::walkNodes(gltf::PrimitiveBuilder& builder) {
             stack.emplace_back(*child, world);
         }
     }
+}
+
+// Samples the animations at the time, then every node's world transform (joints outside the
+// scene's tree included), parents before children via the checked parent links.
+void Converter::poseNodes() {
+    animated_ = gltf::sampleAnimations(model_, file_, reader_, options_.time, options_.animation);
+    const std::size_t n = model_.nodes.size();
+    nodeWorld_.assign(n, glm::dmat4(1.0));
+    std::vector<bool> done(n, false);
+    std::vector<int> chain;
+    for (std::size_t i = 0; i < n; ++i) {
+        for (int node = int(i); node != -1 && !done[node]; node = parent_[node])
+            chain.push_back(node);
+        for (auto node = chain.rbegin(); node != chain.rend(); ++node) {
+            const int parent = parent_[*node];
+            nodeWorld_[*node] =
+                (parent == -1 ? glm::dmat4(1.0) : nodeWorld_[parent]) * localTransform(*node);
+            done[*node] = true;
+        }
+        chain.clear();
+    }
+}
+
+// The node's morph weights (animated, else the node's, else the mesh's) and its skin's joint
+// matrices; empty when the mesh has neither.
+gltf::Deformation Converter::deformationOf(int nodeIndex) {
+    const tinygltf::Node& node = model_.nodes[nodeIndex];
+    gltf::Deformation out;
+    const std::string name = "node " + std::to_string(nodeIndex);
+    const std::size_t targets = gltf::morphTargetCount(model_, node.mesh);
+    if (targets > 0) {
+        const gltf::NodeAnimation& a = animated_[nodeIndex];
+        const std::vector<double>& meshWeights = model_.meshes[node.mesh].weights;
+        out.morphWeights = a.weights             ? *a.weights
+                           : !node.weights.empty() ? node.weights
+                                                   : meshWeights;
+        if (out.morphWeights.size() > targets)
+            fail(name + ": " + std::to_string(out.morphWeights.size()) + " morph weights for " +
+                 std::to_string(targets) + " targets of mesh " + std::to_string(node.mesh));
+        out.morphWeights.resize(targets, 0.0);
+        for (double w : out.morphWeights)
+            if (!std::isfinite(w))
+                fail(name + ": a morph weight is not finite");
+    }
+    if (node.skin != -1) {
+        checkIndex(node.skin, model_.skins.size(), "skin", name);
+        out.jointMatrices = gltf::jointMatrices(model_, file_, reader_, node.skin, nodeWorld_);
+    }
+    return out;
 }
 
 // "A scene without any light gets a uniform white environment": no emissive triangle and no
@@ -312,10 +419,16 @@ Scene Converter::run() {
     checkExtensions();
     gltf::MaterialTables tables = gltf::convertMaterials(model_, file_);
     checkNodeTree();
+    poseNodes();
     const uint32_t defaultIndex = uint32_t(tables.materials.size());
     gltf::PrimitiveBuilder builder(model_, file_, tables, defaultIndex);
     const std::vector<std::size_t> placements = countPlacements();
     instanced_ = gltf::meshesToInstance(model_, placements, tables, options_.instancing);
+    // Skinned and morphed meshes are posed per node, so each placement is its own copy.
+    for (const tinygltf::Node& node : model_.nodes)
+        if (node.mesh >= 0 && std::size_t(node.mesh) < instanced_.size() &&
+            (node.skin != -1 || gltf::morphTargetCount(model_, node.mesh) > 0))
+            instanced_[node.mesh] = false;
     builder.reserve(checkPlacedTriangles(placements));
     walkNodes(builder);
     builder.finish(scene_);
@@ -394,21 +507,23 @@ Scene loadModel(std::vector<unsigned char> bytes, const std::string& path,
     } catch (const std::exception& e) {
         err += e.what();
     }
-    const std::string messages = gltf::rewordParserMessages(err + "\n" + warn);
-    if (!loaded) {
-        // A refused path explains a "does not exist" better than the parser can; an empty
-        // URI is a missing one, which the parser's own message says.
-        std::string problem =
-            messages.empty() ? "the parser refused the file without naming the rule it breaks"
-                             : messages;
-        if (!policy.refusal.empty() && policy.refusal.rfind("refused to read '':", 0) != 0) {
-            problem = policy.refusal;
-        }
+    // tinygltf drops some broken objects (an animation channel without its sampler) and goes
+    // on, saying so in `err`: such a file is refused like the others.
+    const std::string kept = loaded ? gltf::keptByTinygltf(err) : std::string();
+    if (loaded)
+        err = gltf::droppedByTinygltf(err);
+    if (!loaded || !err.empty()) {
+        // A path the policy refused explains a "File not found" better than tinygltf can; the
+        // rest is tinygltf's and its JSON parser's, in the project's words.
+        const bool unreadFile = err.find("File not found") != std::string::npos &&
+                                err.find("'uri' is missing") == std::string::npos;
+        const std::string problem = !policy.refusal.empty() && unreadFile
+                                        ? policy.refusal
+                                        : collapseLines(gltf::parseFailureInOwnWords(err));
         throw InputError(path + ": " + problem);
     }
-    if (!messages.empty()) {
-        gltf::warn(path, messages);
-    }
+    for (const std::string& line : gltf::parseWarningsInOwnWords(kept + warn))
+        gltf::warn(path, collapseLines(line));
     std::vector<unsigned char>().swap(bytes); // tinygltf holds no pointer into the document
     gltf::returnBuffers(model, taken, path);
     gltf::decompress(model, compression, path);

@@ -2,8 +2,9 @@
 // above 1 would create energy); extensions the renderer cannot honour are named once.
 #include "scene/gltf/gltf_materials.h"
 
-#include <cstdio>
 #include <tiny_gltf.h>
+
+#include <cstdio>
 
 #include <algorithm>
 #include <cmath>
@@ -19,7 +20,7 @@ const std::set<std::string> SUPPORTED_EXTENSIONS = {
     "KHR_materials_specular", "KHR_materials_clearcoat", "KHR_materials_sheen",
     "KHR_materials_volume", "KHR_texture_transform", "KHR_lights_punctual",
     "KHR_mesh_quantization", "KHR_draco_mesh_compression", "EXT_meshopt_compression",
-    "KHR_meshopt_compression", "EXT_texture_webp", "KHR_materials_unlit"};
+    "KHR_meshopt_compression", "KHR_materials_unlit", "EXT_texture_webp"};
 
 double number(const tinygltf::Value& object, const char* key, double fallback) {
     if (!object.IsObject() || !object.Has(key)) {
@@ -74,14 +75,13 @@ private:
     void checkRange(const std::string& name, const char* what, double value, double lo,
                     double hi) const {
         if (!(value >= lo && value <= hi)) { // NaN fails too
-            auto number = [](double x) {
-                char text[32];
-                std::snprintf(text, sizeof text, "%g", x);
-                return std::string(text);
+            auto text = [](double x) { // %g: "1e+30", not thirty digits of float noise
+                char out[32];
+                std::snprintf(out, sizeof out, "%g", x);
+                return std::string(out);
             };
-            fail(file_, name + ": " + what +
-                            (hi >= 1e30 ? " must be finite and at least " + number(lo)
-                                        : " must lie in [" + number(lo) + ", " + number(hi) + "]"));
+            fail(file_, name + ": " + what + " must lie in [" + text(lo) + ", " + text(hi) +
+                            "] (it is " + text(value) + ")");
         }
     }
     uint32_t extensionTexture(const tinygltf::Value& extension, const char* key, bool srgb,
@@ -90,6 +90,7 @@ private:
                         const std::string& name) const;
     void convertLayers(const tinygltf::Material& m, const std::string& name, Material& out);
     Material convert(const tinygltf::Material& m, const std::string& name, MaterialNeeds& needs);
+    void makeUnlit(Material& out) const;
 
     const tinygltf::Model& model_;
     const std::string& file_;
@@ -105,13 +106,16 @@ uint32_t MaterialConverter::textureRef(int texture, int texCoord,
     checkIndex(file_, texture, model_.textures.size(), "texture", slot);
     const tinygltf::Texture& t = model_.textures[texture];
     const std::string textureName = "texture " + std::to_string(texture);
-    // EXT_texture_webp's source wins where present: WebP is decoded (libwebp), and the core
-    // source is only the fallback for viewers without it.
+    // EXT_texture_webp names its WebP image in the extension; `source`, when present, is the
+    // fallback for viewers without WebP, which this one does not need.
     int source = t.source;
     const tinygltf::Value& webp = extension(t.extensions, "EXT_texture_webp");
     if (webp.IsObject() && webp.Has("source")) {
         const double index = number(webp, "source", -1.0);
-        source = index >= 0 && index < 1e9 ? int(index) : INT32_MAX; // checked below
+        if (!(index >= 0.0 && index < double(model_.images.size())))
+            fail(file_, textureName + ": EXT_texture_webp source must name one of the " +
+                            std::to_string(model_.images.size()) + " images");
+        source = int(index);
     }
     if (source == -1) {
         warn(file_, textureName + " has no image source; " + slot + " is ignored");
@@ -226,21 +230,6 @@ void MaterialConverter::convertLayers(const tinygltf::Material& m, const std::st
     ignoreTextures(volume, {"thicknessTexture"}, name);
 }
 
-// KHR_materials_unlit: the base colour as seen, lit by nothing. In a path tracer that is a
-// surface emitting its base colour (factor x texture, the same sRGB texture reference) and
-// scattering none: the camera sees exactly the base colour, and other surfaces see it too,
-// as they would see any emitter. Alpha (MASK, BLEND) still comes from the base colour.
-void makeUnlit(Material& m) {
-    m.emission = glm::vec3(m.baseColor);
-    m.emissiveTexture = m.baseColorTexture;
-    m.baseColor = glm::vec4(0.0f, 0.0f, 0.0f, m.baseColor.w);
-    m.metallic = m.specular = m.transmission = m.clearcoat = 0.0f;
-    m.sheenColor = glm::vec3(0.0f);
-    m.thickness = 0.0f;
-    m.normalTexture = m.metallicRoughnessTexture = m.transmissionTexture = m.specularTexture =
-        m.specularColorTexture = WF_NO_TEXTURE;
-}
-
 Material MaterialConverter::convert(const tinygltf::Material& m, const std::string& name,
                                     MaterialNeeds& needs) {
     const auto& pbr = m.pbrMetallicRoughness;
@@ -324,14 +313,30 @@ Material MaterialConverter::convert(const tinygltf::Material& m, const std::stri
         out.specularColorTexture =
             extensionTexture(specular, "specularColorTexture", true, name, needs);
     }
-    if (extension(m.extensions, "KHR_materials_unlit").IsObject()) {
-        makeUnlit(out);
-    }
     if (out.normalTexture != WF_NO_TEXTURE) {
         const TextureRef& ref = tables_.refs[out.normalTexture];
         needs.normalMapTexCoord = (ref.flags & WF_TEXTURE_TEXCOORD1) ? 1 : 0;
     }
+    if (extension(m.extensions, "KHR_materials_unlit").IsObject())
+        makeUnlit(out);
     return out;
+}
+
+// KHR_materials_unlit: the surface shows its base colour whatever lights it. A path tracer has
+// that as emission (base colour factor x texture, sRGB-decoded, front faces unless
+// doubleSided) over a black, non-reflecting surface; the base colour texture stays for its
+// alpha. Like any emitter, it also lights what it faces.
+void MaterialConverter::makeUnlit(Material& out) const {
+    out.emission = glm::vec3(out.baseColor);
+    out.emissiveTexture = out.baseColorTexture;
+    out.baseColor = glm::vec4(0.0f, 0.0f, 0.0f, out.baseColor.w);
+    out.metallic = 0.0f;
+    out.specular = 0.0f; // exact Lambert of a black base: no reflection at all
+    out.transmission = 0.0f;
+    out.transmissionTexture = out.specularTexture = out.specularColorTexture =
+        out.metallicRoughnessTexture = out.normalTexture = WF_NO_TEXTURE;
+    out.clearcoat = 0.0f;
+    out.sheenColor = glm::vec3(0.0f);
 }
 
 MaterialTables MaterialConverter::run() {
