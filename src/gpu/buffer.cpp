@@ -37,6 +37,11 @@ Buffer::Buffer(const Context& context, std::string name, VkDeviceSize size,
     vkGetBufferMemoryRequirements(device, buffer_, &requirements);
     VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     alloc.allocationSize = requirements.size;
+    // Buffers that ray tracing reads by address (structure inputs, shader binding tables).
+    VkMemoryAllocateFlagsInfo addressFlags{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_FLAGS_INFO};
+    addressFlags.flags = VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT;
+    if (extraUsage & VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT)
+        alloc.pNext = &addressFlags;
     const VkMemoryPropertyFlags hostFlags =
         VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
     try {
@@ -59,6 +64,12 @@ Buffer::Buffer(const Context& context, std::string name, VkDeviceSize size,
 }
 
 Buffer::~Buffer() { release(); }
+
+VkDeviceAddress Buffer::address() const {
+    VkBufferDeviceAddressInfo info{VK_STRUCTURE_TYPE_BUFFER_DEVICE_ADDRESS_INFO};
+    info.buffer = buffer_;
+    return context_->rt().getBufferDeviceAddress(context_->device(), &info);
+}
 
 Buffer::Buffer(Buffer&& other) noexcept { *this = std::move(other); }
 

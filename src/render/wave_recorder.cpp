@@ -30,7 +30,8 @@ WaveRecorder::WaveRecorder(const Context& context, const ShaderCompiler& compile
     const uint32_t passesPerDepth = 3 + std::max(variant.shadeBins(), 1u);
     timer_ = std::make_unique<TimestampTimer>(context, passesPerDepth * maxDepth + 2);
 
-    PassResources resources{context, compiler, defines, table, counters, *timer_};
+    PassResources resources{context, compiler, defines, table, counters, *timer_,
+                            variant.rayTracing && !megakernel};
     if (megakernel) {
         megakernel_ = std::make_unique<MegakernelPass>(resources);
     } else {
@@ -57,6 +58,7 @@ void WaveRecorder::record(VkCommandBuffer cmd, const PassConstants& wave) const 
     timer_->reset(cmd);
     QueueCounters initial{};
     initial.rayArgs = {groupsFor(wave.pathCount), 1, 1, wave.pathCount};
+    initial.rayTrace = {wave.pathCount, 1, 1, 0};
     initial.depthRays[0] = wave.pathCount;
     for (DispatchArgs& args : initial.kindArgs)
         args = {0, 1, 1, 0}; // intersect raises groupsX

@@ -53,6 +53,10 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
     variant_.surface = surfaceFeatures(scene.surface, scene.materials, texelPageBytes(context));
     variant_.rayCones = variant_.surface.textures && settings.textureLod;
     variant_.packedStores = settings.packedStores && context.shaderInt64();
+    variant_.rayTracing = settings.traversal == Traversal::RayTracing && !settings.megakernel;
+    if (variant_.rayTracing && !context.rayTracingEnabled())
+        throw UsageError("--traversal rt: ray tracing is not enabled on device '" +
+                         context.deviceName() + "'");
     const VkPhysicalDeviceLimits& limits = context.properties().limits;
     const uint64_t pageBytes =
         settings.tablePageBytes > 0
@@ -84,7 +88,10 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
         bindings.push_back(
             {WF_BINDING_SAMPLER_TABLES, samplerTable_.get(), BufferAccess::Uint1Texels});
     }
-    table_ = std::make_unique<DescriptorTable>(context, bindings);
+    AccelerationBinding acceleration;
+    if (const AccelerationStructureSet* structures = sceneBuffers_->acceleration())
+        acceleration = {WF_BINDING_TOP_LEVEL, structures->topLevel()};
+    table_ = std::make_unique<DescriptorTable>(context, bindings, acceleration);
     waves_ = std::make_unique<WaveRecorder>(context, compiler, defines_, *table_,
                                             pathBuffers_->counters, variant_,
                                             settings.megakernel, settings.maxDepth);

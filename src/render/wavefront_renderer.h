@@ -90,6 +90,10 @@ public:
     uint32_t pathsPerWave() const { return wavePaths_; }    // the current target
     std::vector<std::pair<std::string, uint64_t>> memoryReport() const;
     std::shared_ptr<const SceneBuffers> sceneBuffers() const { return sceneBuffers_; }
+    // What intersect and shadow trace with, and the driver's structures where that is rt.
+    Traversal traversal() const {
+        return variant_.rayTracing ? Traversal::RayTracing : Traversal::Bvh;
+    }
 
 private:
     void uploadParams();
