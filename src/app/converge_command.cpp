@@ -68,6 +68,7 @@ const CommandSpec& convergeSpec() {
                 {"--no-plot", "", "", "write CSV and JSON only, no charts"},
                 instancingOption(),
                 deviceOption(),
+                traversalOption(),
                 quietOption(),
             },
         }),
@@ -180,7 +181,9 @@ int runConvergeCommand(const std::vector<std::string>& args) {
     fs::create_directories(*dir);
 
     Context context(contextOptionsFrom(parsed));
+    base.traversal = traversalFor(context);
     info.device = context.deviceName();
+    info.traversal = base.traversal == Traversal::RayTracing ? "rt" : "bvh";
     ShaderCompiler compiler;
     PreparedScene prepared = prepareScene(std::move(scene));
 
