@@ -164,6 +164,28 @@ void WavefrontRenderer::runWave(uint32_t pixelBase, uint32_t pixels, uint32_t fi
     adaptWaveSize(paths, seconds);
 }
 
+std::vector<glm::uvec4> WavefrontRenderer::intersectRays(const std::vector<glm::vec4>& origins,
+                                                         const std::vector<glm::vec4>& directions) {
+    const size_t count = origins.size();
+    if (count != directions.size() || count > pathCapacity_ || settings_.megakernel)
+        throw InternalError("intersectRays: as many directions as origins, at most the path "
+                            "capacity, and not in the megakernel");
+    if (count == 0)
+        return {};
+    pathBuffers_->rayOrigin.upload(origins);
+    pathBuffers_->rayDirection.upload(directions);
+    std::vector<uint32_t> queue(count);
+    for (size_t i = 0; i < count; ++i)
+        queue[i] = static_cast<uint32_t>(i);
+    pathBuffers_->rayQueues.upload(queue);
+    context_.submitAndWait(
+        [&](VkCommandBuffer cmd) { waves_->recordIntersect(cmd, uint32_t(count)); });
+    waves_->collectTimes();
+    std::vector<glm::uvec4> hits(count);
+    pathBuffers_->hits.download(hits.data(), count * sizeof(glm::uvec4));
+    return hits;
+}
+
 void WavefrontRenderer::adaptWaveSize(uint32_t paths, double seconds) {
     // Only full-size waves say how long a full-size wave takes: the image's last pixel range
     // may be tiny, and fixed costs would dominate it.
