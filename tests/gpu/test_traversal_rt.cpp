@@ -126,6 +126,12 @@ TEST(TraversalRt, SphereLightsImageMatchesBvh) {
     expectSameImage(loadScene(sceneFile("veach_mis.gltf")), "veach mis (sphere lights)");
 }
 
+// Lambert, mirror and glass: hits binned by material kind, appended by the ray-generation
+// shader (one atomic per ray) rather than by subgroup ballots.
+TEST(TraversalRt, ShadeBinsImageMatchesBvh) {
+    expectSameImage(loadScene(sceneFile("glass_caustic.gltf")), "glass caustic (shade bins)");
+}
+
 TEST(TraversalRt, MirroredInstancesImageMatchesBvh) {
     TempDir dir;
     expectSameImage(loadScene(writeInstancedScene(dir), Instancing::On),
