@@ -28,6 +28,9 @@ RayTracingProgram::RayTracingProgram(const Context& context, std::string name,
     } catch (const InternalError& error) {
         release();
         throw InternalError(std::string(error.what()) + " (pass \"" + name_ + "\")");
+    } catch (...) {
+        release();
+        throw;
     }
 }
 
