@@ -33,6 +33,9 @@ if [ "$mode" = prepare ]; then
     ldd "$binary" | awk '$3 ~ /^\// {print $3}' | while read -r lib; do
         case "$(basename "$lib")" in
         libc.so* | libm.so* | libpthread.so* | libdl.so* | librt.so* | ld-linux* | libvulkan.so*) ;;
+        # C++'s runtime is backward compatible: the GPU image's own (newer, and what its
+        # driver may need) serves where it has one; these copies only where it has none.
+        libstdc++.so* | libgcc_s.so*) mkdir -p "$bundle/fallback" && cp -L "$lib" "$bundle/fallback/" ;;
         *) cp -L "$lib" "$bundle/lib/" ;;
         esac
     done
@@ -61,7 +64,12 @@ trap 'rm -rf "$work"' EXIT
 # The binary: the carried bundle where there is one, else this checkout's build.
 if [ -x "$root/.gpu/wavefront" ]; then
     wavefront=$root/.gpu/wavefront
-    export LD_LIBRARY_PATH="$root/.gpu/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+    libs=$root/.gpu/lib
+    for lib in "$root"/.gpu/fallback/*; do
+        [ -e "$lib" ] || continue
+        ldconfig -p 2>/dev/null | grep -q "$(basename "$lib") " || libs=$libs:$root/.gpu/fallback
+    done
+    export LD_LIBRARY_PATH="$libs${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 else
     wavefront=${WAVEFRONT:-$root/build/wavefront}
 fi
