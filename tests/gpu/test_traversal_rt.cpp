@@ -18,6 +18,7 @@
 #include "render/gpu_scene/scene_buffers.h"
 #include "scene/gltf/gltf_loader.h"
 #include "scene/gltf/gltf_materials.h"
+#include "shaders/traversal/geometry.h"
 
 namespace wf::test {
 namespace {
@@ -262,6 +263,83 @@ TEST(TraversalRt, SameClosestHitsMirroredInstances) {
 }
 
 TEST(TraversalRt, SameClosestHitsAlpha) { expectSameHits(alphaScene(), "alpha"); }
+
+// Spawned rays stay off the surface they leave when the driver intersects: triangles from
+// 1e-3 to 1e3 across, up to 1e3 from the origin, a third long and skinny, each the start of
+// one ray from a random point of it, offset as shade offsets it (the point from barycentrics,
+// triangleSpawnError, offsetRayOrigin), to either side. No ray may meet its own triangle
+// again, by either traversal. The control, the raw point, does meet it: the test can fail.
+TEST(TraversalRt, SpawnedRaysNeverRehitTheirTriangle) {
+    Context* context = rayTracingContext();
+    if (!context)
+        GTEST_SKIP() << "the device has no ray-tracing pipelines";
+    using namespace gpu_types;
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    std::normal_distribution<double> gauss;
+    auto randomDir = [&] {
+        return glm::normalize(glm::dvec3(gauss(rng), gauss(rng), gauss(rng)));
+    };
+    Scene scene;
+    Material material = gltf::defaultMaterial();
+    material.flags = WF_MATERIAL_DOUBLE_SIDED;
+    scene.materials = {material};
+    for (int i = 0; i < 4096; ++i) {
+        const double size = std::pow(10.0, -3.0 + 6.0 * uniform(rng));
+        const glm::dvec3 t = std::pow(10.0, -3.0 + 6.0 * uniform(rng)) * randomDir();
+        const glm::dvec3 q0 = t + size * randomDir();
+        glm::dvec3 q1 = t + size * randomDir(), q2 = t + size * randomDir();
+        if (i % 3 == 0) { // long and skinny: 1e-4 .. 1e-1 as wide as long
+            const glm::dvec3 axis = randomDir();
+            const glm::dvec3 side = glm::normalize(glm::cross(axis, randomDir()));
+            q1 = q0 + size * axis;
+            q2 = q0 + size * (uniform(rng) * axis + std::pow(10.0, -4.0 + 3.0 * uniform(rng)) * side);
+        }
+        scene.triangles.push_back(
+            {glm::vec3(q0), 0, glm::vec3(q1), WF_NO_EMITTER, glm::vec3(q2), 0});
+    }
+    scene.hasCamera = true;
+    static ShaderCompiler compiler;
+    const PreparedScene prepared = prepareScene(scene); // degenerate triangles dropped
+    RenderSettings settings = smallRender(1, 0, Traversal::Bvh);
+    settings.width = settings.height = 64;
+    WavefrontRenderer bvh(*context, prepared, settings, compiler);
+    settings.traversal = Traversal::RayTracing;
+    WavefrontRenderer rt(*context, prepared, settings, compiler);
+    std::vector<glm::vec4> offset, raw, directions;
+    for (const Triangle& tri : prepared.triangles) {
+        float b1 = float(uniform(rng)), b2 = float(uniform(rng));
+        if (b1 + b2 > 1.0f) {
+            b1 = 1.0f - b1;
+            b2 = 1.0f - b2;
+        }
+        const vec3 p = triangleHitPoint(tri.p0, tri.p1, tri.p2, b1, b2);
+        const vec3 n = glm::normalize(glm::cross(tri.p1 - tri.p0, tri.p2 - tri.p0));
+        vec3 w = vec3(randomDir());
+        if (std::abs(glm::dot(w, n)) < 1e-3f)
+            w = n;
+        const vec3 error = triangleSpawnError(tri.p0, tri.p1, tri.p2, b1, b2);
+        offset.emplace_back(offsetRayOrigin(p, error, n, w), 0.0f);
+        raw.emplace_back(p, 0.0f);
+        directions.emplace_back(w, 0.0f);
+    }
+    const auto selfHits = [&](WavefrontRenderer& renderer, const std::vector<glm::vec4>& from) {
+        const std::vector<glm::uvec4> hits = renderer.intersectRays(from, directions);
+        size_t count = 0;
+        for (size_t i = 0; i < hits.size(); ++i)
+            count += hits[i].w == i;
+        return count;
+    };
+    const size_t rays = directions.size();
+    const size_t rtRaw = selfHits(rt, raw), bvhRaw = selfHits(bvh, raw);
+    std::printf("%zu rays; self-hits from the raw point: rt %zu, bvh %zu\n", rays, rtRaw,
+                bvhRaw);
+    EXPECT_GT(rays, 4000u);
+    EXPECT_GT(rtRaw, rays / 100) << "the control: raw points should re-hit";
+    EXPECT_EQ(selfHits(rt, offset), 0u);
+    EXPECT_EQ(selfHits(bvh, offset), 0u);
+    EXPECT_EQ(context->validationMessageCount(), 0u);
+}
 
 // The ray-tracing variant models no more than the scene needs: the BVH variant's shaders do
 // not change, and a context asked for no ray tracing refuses an rt render.
