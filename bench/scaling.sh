@@ -6,6 +6,10 @@
 # Raw JSON goes to bench/results/<label>_*.json; the tables go to stdout as Markdown.
 #
 #   bash bench/scaling.sh [path/to/wavefront] [label] [--no-large]   (label default: lavapipe)
+#
+# SCALING_TRAVERSAL=bvh|rt|auto passes --traversal (default: none, i.e. auto), and
+# SCALING_SIZES / SCALING_TRIANGLES replace the lists of resolutions and scene sizes (the dry
+# run of bench/gpu_run.sh takes small ones).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(dirname "$here")
@@ -18,15 +22,16 @@ scenes=$(mktemp -d)
 trap 'rm -rf "$scenes"' EXIT
 mkdir -p "$results"
 common=(--max-depth 8 --warmup 1 -q)
+[ -n "${SCALING_TRAVERSAL:-}" ] && common+=(--traversal "$SCALING_TRAVERSAL")
 
-for size in 256x256 512x512 1024x1024 1920x1080; do
+for size in ${SCALING_SIZES:-256x256 512x512 1024x1024 1920x1080}; do
     w=${size%x*}; h=${size#*x}
     frames=$(( w * h > 600000 ? 3 : 6 ))
     "$wavefront" bench "$root/scenes/cornell_box.gltf" --width "$w" --height "$h" \
         --frames "$frames" "${common[@]}" --json "$results/${label}_resolution_${size}.json" \
         > /dev/null
 done
-for tris in 100 1000 10000 100000 1000000; do
+for tris in ${SCALING_TRIANGLES:-100 1000 10000 100000 1000000}; do
     python3 "$here/make_scaling_scene.py" "$scenes/scene_$tris.gltf" --triangles "$tris" > /dev/null
     "$wavefront" bench "$scenes/scene_$tris.gltf" --width 256 --frames 4 "${common[@]}" \
         --compare-megakernel --json "$results/${label}_scene_${tris}.json" > /dev/null
@@ -61,13 +66,14 @@ for d in rows:
         r["pathsPerSecond"] / 1e6, r["frameMilliseconds"]["median"],
         r["longestSubmitSeconds"] * 1e3))
 print()
-print("| triangles | traversal cost | BVH SAH cost | build ms | wavefront paths/s | "
+print("| triangles | traversal | traversal cost | BVH SAH cost | build ms | wavefront paths/s | "
       "megakernel paths/s | wavefront / megakernel | rays/s (wavefront) |")
-print("|---|---|---|---|---|---|---|---|")
+print("|---|---|---|---|---|---|---|---|---|")
 for d in load(label + "_scene_*.json"):
     w, m = d["runs"]["wavefront"], d["runs"]["megakernel"]
-    print("| %d | %g | %.1f | %.0f | %.3f M | %.3f M | %.2f | %.2f M |" % (
-        d["triangles"], d["bvh"].get("traversalCost", 1.0), d["bvh"]["sahCost"],
+    print("| %d | %s | %g | %.1f | %.0f | %.3f M | %.3f M | %.2f | %.2f M |" % (
+        d["triangles"], d.get("traversal", {}).get("mode", "bvh"),
+        d["bvh"].get("traversalCost", 1.0), d["bvh"]["sahCost"],
         d["bvh"]["buildSeconds"] * 1e3,
         w["pathsPerSecond"] / 1e6, m["pathsPerSecond"] / 1e6, d["wavefrontOverMegakernel"],
         w["raysPerSecond"]["total"] / 1e6))

@@ -180,8 +180,9 @@ PYBIND11_MODULE(_wavefront, m) {
         .def_property_readonly("info", [](const LoadedScene& s) { return sceneInfo(s); });
 
     pyb::class_<py::Renderer>(m, "Renderer")
-        .def(pyb::init<std::optional<int>, bool, bool>(), pyb::arg("device"),
-             pyb::arg("validation"), pyb::arg("quiet"))
+        .def(pyb::init<std::optional<int>, bool, bool, const std::string&>(),
+             pyb::arg("device"), pyb::arg("validation"), pyb::arg("quiet"),
+             pyb::arg("traversal") = "auto")
         .def("close", &py::Renderer::close)
         .def_property_readonly("closed", &py::Renderer::closed)
         .def_property_readonly("device_name", &py::Renderer::deviceName)

@@ -61,11 +61,17 @@ struct Renderer::Settings {
     std::string key; // the flags but --seed and the sample range: what the pipelines depend on
 };
 
-Renderer::Renderer(std::optional<int> device, bool validation, bool quiet) {
+Renderer::Renderer(std::optional<int> device, bool validation, bool quiet,
+                   const std::string& traversal) {
     ContextOptions options;
     options.deviceIndex = device;
     options.validation = validation;
     options.quiet = quiet;
+    if (traversal != "auto" && traversal != "bvh" && traversal != "rt")
+        throw UsageError("--traversal expects auto, bvh or rt, got '" + traversal + "'");
+    options.rayTracing = traversal == "rt"    ? RayTracingRequest::Required
+                         : traversal == "bvh" ? RayTracingRequest::Off
+                                              : RayTracingRequest::Auto;
     try {
         context_ = std::make_unique<Context>(options);
         compiler_ = std::make_unique<ShaderCompiler>(moduleShaderDir(), defaultShaderCacheDir());
@@ -128,6 +134,8 @@ Renderer::Settings Renderer::readFlags(const LoadedScene& scene,
     RenderRequest request = renderRequestFrom(parsed);
     applyImageSize(parsed, scene.prepared->camera,
                    {.width = kRenderDefaultWidth, .widthFollowsHeight = true}, request.settings);
+    // A closed renderer refuses the call afterwards (requireOpen); its flags still parse.
+    request.settings.traversal = context_ ? traversalFor(*context_) : Traversal::Bvh;
     Settings settings{request.settings, request.targetError, request.aovs,
                       std::to_string(scene.id)};
     for (size_t i = 0; i < flags.size(); ++i) {
@@ -176,6 +184,9 @@ pyb::dict Renderer::output(const LoadedScene& scene, const Settings& settings,
     for (const auto& field : extraStats)
         context.extraFields.push_back(field);
     context.extraFields.push_back({"peakHostMemoryBytes", std::to_string(peakHostMemoryBytes())});
+    context.extraFields.push_back(cached_ ? traversalStatsField(*cached_)
+                                          : std::make_pair(std::string("traversal"),
+                                                           std::string("{\"mode\": \"bvh\"}")));
     RenderStats shown = stats;
     shown.samplesPerPixel = spp;
     AovImages aovs;
@@ -320,6 +331,7 @@ pyb::list Renderer::converge(const LoadedScene& scene, const std::vector<std::st
     applyImageSize(parsed, scene.prepared->camera, {.width = 128, .widthFollowsHeight = false},
                    base);
     applyRenderFlags(parsed, kRenderDefaultMaxDepth, base);
+    base.traversal = context_ ? traversalFor(*context_) : Traversal::Bvh;
     if (reference.size() != size_t(base.width) * base.height * 3)
         throw UsageError("the reference has " + std::to_string(reference.size() / 3) +
                          " pixels, converge renders " + std::to_string(base.width) + "x" +

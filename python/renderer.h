@@ -34,7 +34,10 @@ struct LoadedScene {
 
 class Renderer {
 public:
-    Renderer(std::optional<int> device, bool validation, bool quiet);
+    // traversal: "auto", "bvh" or "rt", as --traversal (the context enables ray tracing for
+    // rt, and for auto on a GPU that has it).
+    Renderer(std::optional<int> device, bool validation, bool quiet,
+             const std::string& traversal = "auto");
     ~Renderer();
 
     // Frees the pipelines, buffers, compiler and device in that order; idempotent.

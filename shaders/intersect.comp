@@ -17,15 +17,7 @@ layout(local_size_x = WF_WORKGROUP_SIZE) in;
 layout(push_constant) uniform Push { PassConstants pass; };
 
 #if WF_SHADE_BINS > 1
-// The bin rides in the material's flags (WF_MATERIAL_SHADE_BIN_SHIFT), texel 1 of its entry.
-uint shadeBinOf(uvec4 hit) {
-    if (hit.w == WF_MISS || (hit.w & WF_SPHERE_HIT) != 0u)
-        return WF_LIGHT_HIT_BIN;
-    uint material = triangleTexel(hit.w, 0u).w;
-    uint flags = wfTexel(materialTexels,
-                         WF_MATERIAL_TABLE_START + material * WF_MATERIAL_TEXELS + 1u).w;
-    return (flags >> WF_MATERIAL_SHADE_BIN_SHIFT) & WF_MATERIAL_SHADE_BIN_MASK;
-}
+#include "wave/shade_bin.glsl"
 
 // A ballot append (queue_append.glsl) that also raises the bin's group count to cover the
 // slots taken: the shade pass's indirect arguments without a pass of their own (one such

@@ -18,6 +18,10 @@ void main() {
     uint shadows = counters.shadowCount;
     counters.rayArgs = argsFor(rays);
     counters.shadowArgs = argsFor(shadows);
+#ifdef WF_RAY_TRACING // the ray-traced passes' arguments
+    counters.rayTrace = TraceArgs(rays, 1u, 1u, 0u);
+    counters.shadowTrace = TraceArgs(shadows, 1u, 1u, 0u);
+#endif
     counters.extensionRays += rays;
     counters.shadowRays += shadows;
     // Occupancy per bounce: the rays just queued are traced at depth + 1.

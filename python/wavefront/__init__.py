@@ -84,13 +84,18 @@ class Renderer:
 
     device: a device index (wf.devices()), None for WAVEFRONT_DEVICE or the first GPU.
     validation: the Khronos validation layer (messages on stderr; validation_messages counts).
+    traversal: "auto" (the driver's ray tracing on a GPU that has it, else the project's BVH),
+    "bvh" or "rt" (DeviceError where the device has no ray-tracing pipelines), as the CLI's
+    --traversal; each result's stats say which ran.
     Raises DeviceError when there is no usable device.
     """
 
-    def __init__(self, device=None, validation=False, quiet=True):
+    def __init__(self, device=None, validation=False, quiet=True, traversal="auto"):
         if device is not None and (isinstance(device, bool) or not isinstance(device, int)):
             raise ValueError(f"device is a device index or None, not {device!r}")
-        self._core = _core.Renderer(device, bool(validation), bool(quiet))
+        if traversal not in ("auto", "bvh", "rt"):
+            raise ValueError(f"traversal is 'auto', 'bvh' or 'rt', not {traversal!r}")
+        self._core = _core.Renderer(device, bool(validation), bool(quiet), traversal)
         _live.add(self)
 
     def __enter__(self):

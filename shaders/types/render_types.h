@@ -72,6 +72,7 @@ namespace wf::gpu_types {
 // 71-98: pages 1-7 of the per-triangle attributes (texture_types.h)
 #define WF_BINDING_KIND_QUEUES 99      // WF_SHADE_BINS: per bin, pathCapacity queue slots
 #define WF_BINDING_KIND_QUEUE_TEXELS 100 // the same, read as R32UI texels
+#define WF_BINDING_TOP_LEVEL 101 // WF_RAY_TRACING: the scene's top-level acceleration structure
 #define WF_BINDING_LIGHTS 17
 #define WF_BINDING_ENVIRONMENT 18       // vec4 radiance per texel
 #define WF_BINDING_ENVIRONMENT_ALIAS 19 // Emitter-shaped alias table over texels
@@ -124,6 +125,15 @@ struct DispatchArgs {
     uint count;
 };
 
+// VkTraceRaysIndirectCommandKHR (width = the queue's count; height and depth 1) and a pad,
+// which ray-traced waves (WF_RAY_TRACING) trace their intersect and shadow passes by.
+struct TraceArgs {
+    uint width;
+    uint height;
+    uint depth;
+    uint pad;
+};
+
 // Shade bins (material kinds, src/passes/shade_kinds.h) the counters have room for.
 #define WF_MAX_SHADE_BINS 4
 
@@ -148,6 +158,8 @@ struct QueueCounters {
     // The shade passes' arguments: groupsX raised by intersect's appends (atomicMax), groupsY
     // and groupsZ 1 from the wave's start; count unused (kindCount has it).
     DispatchArgs kindArgs[WF_MAX_SHADE_BINS];
+    TraceArgs rayTrace;    // WF_RAY_TRACING: rayArgs.count as trace arguments
+    TraceArgs shadowTrace; // and shadowArgs.count
 };
 
 // A wave covers pixels [pixelBase, pixelBase + wavePixels) x samples [sampleBase, sampleBase +
@@ -174,6 +186,8 @@ static_assert(offsetof(wf::gpu_types::RenderParams, seed) == 44);
 static_assert(offsetof(wf::gpu_types::RenderParams, maxDepth) == 60);
 static_assert(offsetof(wf::gpu_types::RenderParams, pathCapacity) == 84);
 static_assert(sizeof(wf::gpu_types::QueueCounters) ==
+              64 + 8 * WF_TRACKED_DEPTHS + 20 * WF_MAX_SHADE_BINS + 32);
+static_assert(offsetof(wf::gpu_types::QueueCounters, rayTrace) ==
               64 + 8 * WF_TRACKED_DEPTHS + 20 * WF_MAX_SHADE_BINS);
 static_assert(offsetof(wf::gpu_types::QueueCounters, kindCount) == 64 + 8 * WF_TRACKED_DEPTHS);
 static_assert(offsetof(wf::gpu_types::QueueCounters, kindArgs) ==

@@ -12,6 +12,7 @@
 #include "app/cli.h"
 #include "app/commands.h"
 #include "app/render_options.h"
+#include "app/stats_json.h"
 #include "errors.h"
 #include "gpu/context.h"
 #include "image/atomic_file.h"
@@ -52,6 +53,7 @@ const CommandSpec& benchSpec() {
                 {"--wave-paths", "", "N", "most paths in one wave (default 1048576)"},
                 {"--json", "", "OUT.json", "write the same report as JSON"},
                 deviceOption(),
+                traversalOption(),
                 quietOption(),
                 cameraOption(),
                 envOption(),
@@ -113,6 +115,7 @@ int runBenchCommand(const std::vector<std::string>& args) {
                    settings);
 
     Context context(contextOptionsFrom(parsed));
+    settings.traversal = traversalFor(context);
     ShaderCompiler compiler;
     const PreparedScene prepared = prepareScene(std::move(scene));
 
@@ -123,8 +126,12 @@ int runBenchCommand(const std::vector<std::string>& args) {
     if (withMegakernel) {
         RenderSettings mega = settings;
         mega.megakernel = true;
+        // The megakernel walks the BVH whatever --traversal says: it shares the wavefront's
+        // scene tables only where those were made for the BVH variant too.
         kernels[1].renderer = std::make_unique<WavefrontRenderer>(
-            context, prepared, mega, compiler, kernels[0].renderer->sceneBuffers());
+            context, prepared, mega, compiler,
+            settings.traversal == Traversal::Bvh ? kernels[0].renderer->sceneBuffers()
+                                                 : nullptr);
         kernels[1].run.kernel = "megakernel";
     }
     for (Timed& k : kernels)
@@ -145,6 +152,14 @@ int runBenchCommand(const std::vector<std::string>& args) {
         setup.lightTreeLights = prepared.lightTree.lights;
         setup.lightTreeDepth = prepared.lightTree.depth;
         setup.lightTreeBuildSeconds = prepared.lightTree.buildSeconds;
+    }
+    const WavefrontRenderer& wavefront = *kernels[0].renderer;
+    setup.traversalText = describeTraversal(wavefront);
+    if (const AccelerationStructureSet* structures = wavefront.sceneBuffers()->acceleration();
+        structures && wavefront.traversal() == Traversal::RayTracing) {
+        setup.traversal = "rt";
+        setup.accelerationBytes = structures->bytes();
+        setup.accelerationBuildSeconds = structures->buildSeconds();
     }
     // Frames alternate between the kernels so a change in machine load hits both alike.
     for (uint32_t f = 0; f < warmup + frames; ++f) {
@@ -177,7 +192,9 @@ int runBenchCommand(const std::vector<std::string>& args) {
         std::printf("instances: %llu (%llu triangles as placed)\n",
                     static_cast<unsigned long long>(setup.instances),
                     static_cast<unsigned long long>(setup.instancedTriangles));
-    std::printf("light selection: %s\n\n", setup.lightSelectionText.c_str());
+    std::printf("light selection: %s\n", setup.lightSelectionText.c_str());
+    std::printf("traversal: %s%s\n\n", setup.traversalText.c_str(),
+                withMegakernel ? "; the megakernel walks the BVH" : "");
     // --megakernel shows the megakernel's table, --compare-megakernel both.
     if (!withMegakernel || compare)
         std::fputs(benchTable(setup, kernels[0].run).c_str(), stdout);

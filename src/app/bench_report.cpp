@@ -234,7 +234,10 @@ std::string benchJson(const BenchSetup& setup, const std::vector<BenchRun>& runs
         << jsonNumber(setup.bvh.buildSeconds) << "},\n  \"lightSelection\": {\"mode\": \""
         << setup.lightSelection << "\", \"treeLights\": " << setup.lightTreeLights
         << ", \"treeDepth\": " << setup.lightTreeDepth << ", \"treeBuildSeconds\": "
-        << jsonNumber(setup.lightTreeBuildSeconds) << "},\n  \"runs\": {";
+        << jsonNumber(setup.lightTreeBuildSeconds) << "},\n  \"traversal\": {\"mode\": \""
+        << setup.traversal << "\", \"megakernel\": \"bvh\", \"accelerationBytes\": "
+        << setup.accelerationBytes << ", \"accelerationBuildSeconds\": "
+        << jsonNumber(setup.accelerationBuildSeconds) << "},\n  \"runs\": {";
     for (size_t i = 0; i < runs.size(); ++i)
         out << (i ? "," : "") << "\n    " << jsonQuoted(runs[i].kernel) << ": "
             << runJson(runs[i]);

@@ -52,6 +52,12 @@ struct BenchSetup {
     uint32_t lightTreeLights = 0;    // with the tree: its lights, depth and build time
     uint32_t lightTreeDepth = 0;
     double lightTreeBuildSeconds = 0.0;
+    // What the wavefront's intersect and shadow passes traced with (the megakernel always
+    // walks the BVH): "bvh" or "rt", with the acceleration structures' size and build time.
+    std::string traversal = "bvh";
+    std::string traversalText;
+    uint64_t accelerationBytes = 0;
+    double accelerationBuildSeconds = 0.0;
 };
 
 struct Spread {

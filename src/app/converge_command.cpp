@@ -71,6 +71,7 @@ const CommandSpec& convergeSpec() {
             animationOptions(),
             {
                 deviceOption(),
+                traversalOption(),
                 quietOption(),
             },
         }),
@@ -183,7 +184,9 @@ int runConvergeCommand(const std::vector<std::string>& args) {
     fs::create_directories(*dir);
 
     Context context(contextOptionsFrom(parsed));
+    base.traversal = traversalFor(context);
     info.device = context.deviceName();
+    info.traversal = base.traversal == Traversal::RayTracing ? "rt" : "bvh";
     ShaderCompiler compiler;
     PreparedScene prepared = prepareScene(std::move(scene));
 

@@ -110,7 +110,8 @@ void writeConvergenceJson(const std::string& path, const ConvergenceInfo& info,
     std::ostringstream j;
     std::vector<double> seeds(info.seeds.begin(), info.seeds.end());
     j << "{\n  \"scene\": " << jsonQuoted(info.scene) << ",\n  \"device\": "
-      << jsonQuoted(info.device) << ",\n  \"width\": " << info.width << ",\n  \"height\": "
+      << jsonQuoted(info.device) << ",\n  \"traversal\": " << jsonQuoted(info.traversal)
+      << ",\n  \"width\": " << info.width << ",\n  \"height\": "
       << info.height << ",\n  \"maxDepth\": " << info.maxDepth << ",\n  \"seeds\": "
       << jsonArray(seeds) << ",\n  \"timeBudgetSeconds\": " << jsonNumber(info.timeBudget)
       << ",\n  \"reference\": {\"file\": " << jsonQuoted(info.reference)

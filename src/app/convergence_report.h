@@ -12,6 +12,7 @@ namespace wf {
 struct ConvergenceInfo {
     std::string scene;
     std::string device;
+    std::string traversal = "bvh"; // what intersect and shadow traced with: bvh or rt
     uint32_t width = 0;
     uint32_t height = 0;
     uint32_t maxDepth = 0;

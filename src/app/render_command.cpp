@@ -79,6 +79,7 @@ void printVerbose(const PreparedScene& scene, const WavefrontRenderer& renderer,
                      "geometry, %llu triangles as placed\n",
                      scene.instances.size(), scene.meshCount,
                      static_cast<unsigned long long>(scene.instancedTriangles));
+    std::fprintf(stderr, "wavefront: traversal: %s\n", describeTraversal(renderer).c_str());
     std::fprintf(stderr, "wavefront: light selection: %s\n",
                  describeLightSelection(scene, renderer.variant()).c_str());
     std::fprintf(stderr, "wavefront: shader variant: %s; up to %u paths per wave\n",
@@ -259,6 +260,7 @@ int runRenderCommand(const std::vector<std::string>& args) {
     rest.samplesPerPixel -= resumedSpp;
 
     Context context(contextOptionsFrom(parsed));
+    settings.traversal = rest.traversal = traversalFor(context);
     ShaderCompiler compiler;
     PreparedScene prepared = prepareScene(std::move(scene));
     WavefrontRenderer renderer(context, prepared, rest, compiler);
@@ -268,6 +270,7 @@ int runRenderCommand(const std::vector<std::string>& args) {
                               settings.height, settings.maxDepth,    settings.seed, {}};
     statsContext.extraFields = sceneStatsFields(prepared);
     statsContext.extraFields.push_back({"loadSeconds", jsonNumber(summary.loadSeconds)});
+    statsContext.extraFields.push_back(traversalStatsField(renderer));
     if (adaptive) {
         renderAdaptively(renderer, settings, targetError, run, verbose,
                          {*output, parsed.value("--json"), aovs, quiet}, statsContext);

@@ -70,6 +70,7 @@ const CommandSpec& renderSpec() {
                                          "spp)"},
                 {"--json", "", "STATS.json", "write statistics: spp, seconds, paths/s, rays/s"},
                 deviceOption(),
+                traversalOption(),
                 quietOption(),
                 cameraOption(),
                 envOption(),

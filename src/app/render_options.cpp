@@ -67,6 +67,26 @@ OptionSpec deviceOption() {
                                  "first GPU)"};
 }
 
+OptionSpec traversalOption() {
+    return {"--traversal", "", "MODE",
+            "auto (default: rt where the device has ray-tracing pipelines and is a GPU, else "
+            "bvh; on lavapipe bvh measured faster), bvh (the project's BVH in compute) or rt "
+            "(the driver's acceleration structures through ray-tracing pipelines; refused "
+            "where the device has none)"};
+}
+
+RayTracingRequest traversalRequest(const ParsedArgs& parsed) {
+    const std::string mode = parsed.choiceValue("--traversal", "auto", {"auto", "bvh", "rt"});
+    return mode == "rt"    ? RayTracingRequest::Required
+           : mode == "bvh" ? RayTracingRequest::Off
+                           : RayTracingRequest::Auto;
+}
+
+Traversal traversalFor(const Context& context) {
+    // The context enables ray tracing only where the request (and auto's rule) picked it.
+    return context.rayTracingEnabled() ? Traversal::RayTracing : Traversal::Bvh;
+}
+
 OptionSpec quietOption() { return {"--quiet", "-q", "", "no progress line on stderr"}; }
 
 OptionSpec cameraOption() {
@@ -150,6 +170,7 @@ ContextOptions contextOptionsFrom(const ParsedArgs& parsed) {
     if (parsed.has("--device"))
         options.deviceIndex = static_cast<int>(parsed.uintValue("--device", 0, 0, 64));
     options.quiet = parsed.has("--quiet");
+    options.rayTracing = traversalRequest(parsed);
     return options;
 }
 

@@ -26,6 +26,11 @@ std::vector<OptionSpec> depthOptions(uint32_t defaultMaxDepth);  // --max-depth,
 std::vector<OptionSpec> samplingOptions();
 OptionSpec noRandomizeOption(); // --no-randomize
 OptionSpec deviceOption();      // --device
+OptionSpec traversalOption();   // --traversal
+// --traversal as what the context should enable.
+RayTracingRequest traversalRequest(const ParsedArgs& parsed);
+// What the renderers of this context trace with.
+Traversal traversalFor(const Context& context);
 OptionSpec quietOption();       // --quiet, -q: no progress lines
 OptionSpec cameraOption();      // --camera: one of the file's cameras
 OptionSpec envOption();
@@ -40,7 +45,7 @@ double sceneTimeFrom(const ParsedArgs& parsed);
 void applyRenderFlags(const ParsedArgs& parsed, uint32_t defaultMaxDepth,
                       RenderSettings& settings);
 
-// --device and --quiet.
+// --device, --quiet and --traversal.
 ContextOptions contextOptionsFrom(const ParsedArgs& parsed);
 
 // Loads the glTF file at `path`, takes the file's camera that --camera names and the

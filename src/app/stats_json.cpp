@@ -116,6 +116,27 @@ std::vector<std::pair<std::string, std::string>> sceneStatsFields(const Prepared
                         ", \"threads\": " + std::to_string(bvh.threads) + "}"}};
 }
 
+std::string describeTraversal(const WavefrontRenderer& renderer) {
+    const AccelerationStructureSet* structures = renderer.sceneBuffers()->acceleration();
+    if (renderer.traversal() == Traversal::Bvh || !structures)
+        return "bvh (the project's BVH in compute)";
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "rt (ray-tracing pipelines; acceleration structures %.2f MiB, built in %.3f s)",
+                  structures->bytes() / (1024.0 * 1024.0), structures->buildSeconds());
+    return text;
+}
+
+std::pair<std::string, std::string> traversalStatsField(const WavefrontRenderer& renderer) {
+    const AccelerationStructureSet* structures = renderer.sceneBuffers()->acceleration();
+    if (renderer.traversal() == Traversal::Bvh || !structures)
+        return {"traversal", "{\"mode\": \"bvh\"}"};
+    return {"traversal", "{\"mode\": \"rt\", \"accelerationBytes\": " +
+                             std::to_string(structures->bytes()) +
+                             ", \"accelerationBuildSeconds\": " +
+                             jsonNumber(structures->buildSeconds()) + "}"};
+}
+
 std::pair<std::string, std::string> adaptiveStatsField(const AdaptiveResult& result,
                                                        double targetError, uint32_t maxSpp) {
     const SampleAllocation& allocation = result.allocation;

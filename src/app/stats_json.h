@@ -34,6 +34,10 @@ std::string errorEstimateJson(const ErrorEstimate& estimate);
 
 // The scene's size and its BVH build: the fields --json adds about the scene.
 std::vector<std::pair<std::string, std::string>> sceneStatsFields(const PreparedScene& scene);
+// "traversal": {"mode": "bvh"} or {"mode": "rt", "accelerationBytes", "accelerationBuildSeconds"}
+std::pair<std::string, std::string> traversalStatsField(const WavefrontRenderer& renderer);
+// The same for --verbose and the bench: "bvh (...)" or "rt (... MiB, built in ... s)".
+std::string describeTraversal(const WavefrontRenderer& renderer);
 
 // The "adaptive" field of a --target-error render (maxSpp: --spp, the most a pixel gets).
 std::pair<std::string, std::string> adaptiveStatsField(const AdaptiveResult& result,

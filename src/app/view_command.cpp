@@ -45,6 +45,7 @@ const CommandSpec& viewSpec() {
                                                "(default: render's)"},
                 {"--no-overlay", "", "", "start with the overlay hidden (H shows it)"},
                 deviceOption(),
+                traversalOption(),
                 {"--frames", "", "N", "quit after N frames (scripts, tests)"},
                 {"--screenshot", "", "FILE.exr", "on quit, write the radiance (and FILE.png, as "
                                                  "shown)"},
@@ -103,6 +104,7 @@ int runViewCommand(const std::vector<std::string>& args) {
         options.instancing = parseInstancing(*mode);
     options.overlay = !parsed.has("--no-overlay");
     options.device = contextOptionsFrom(parsed).deviceIndex;
+    options.rayTracing = traversalRequest(parsed);
     options.frames = parsed.uintValue("--frames", 0, 1, 1u << 30);
     if (auto screenshot = parsed.value("--screenshot")) {
         if (fs::path(*screenshot).extension() != ".exr")

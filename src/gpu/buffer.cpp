@@ -19,16 +19,26 @@ Buffer::Buffer(const Context& context, std::string name, VkDeviceSize size,
                VkBufferUsageFlags extraUsage, bool hostVisible)
     : context_(&context), name_(std::move(name)), size_(size < 16 ? 16 : size) {
     const auto& limits = context.properties().limits;
-    if (size_ > limits.maxStorageBufferRange)
+    // Acceleration structures, their inputs and binding tables are never bound to a shader as
+    // buffers, so the storage-buffer range does not bound them (a large scene's exceed it).
+    const bool rayTracingOnly =
+        extraUsage & (VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_STORAGE_BIT_KHR |
+                      VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
+                      VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR);
+    if (size_ > limits.maxStorageBufferRange && !rayTracingOnly)
         throw InputError("buffer '" + name_ + "' needs " + std::to_string(size_ >> 20) +
                          " MiB, over the device's storage buffer limit of " +
                          std::to_string(limits.maxStorageBufferRange >> 20) + " MiB");
     VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
     info.size = size_;
     // Any buffer may be bound in any of DescriptorTable's BufferAccess ways.
-    info.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT |
-                 VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
-                 VK_BUFFER_USAGE_TRANSFER_DST_BIT | extraUsage;
+    info.usage = rayTracingOnly ? VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+                                      VK_BUFFER_USAGE_TRANSFER_DST_BIT | extraUsage
+                                : VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                      VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT |
+                                      VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT |
+                                      VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+                                      VK_BUFFER_USAGE_TRANSFER_DST_BIT | extraUsage;
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
     VkDevice device = context.device();
     VK_CHECK(vkCreateBuffer(device, &info, nullptr, &buffer_));
@@ -37,6 +47,11 @@ Buffer::Buffer(const Context& context, std::string name, VkDeviceSize size,
     vkGetBufferMemoryRequirements(device, buffer_, &requirements);
     VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     alloc.allocationSize = requirements.size;
+    // Buffers that ray tracing reads by address (structure inputs, shader binding tables).
+    VkMemoryAllocateFlagsInfo addressFlags{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_FLAGS_INFO};
+    addressFlags.flags = VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT;
+    if (extraUsage & VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT)
+        alloc.pNext = &addressFlags;
     const VkMemoryPropertyFlags hostFlags =
         VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
     try {
@@ -59,6 +74,12 @@ Buffer::Buffer(const Context& context, std::string name, VkDeviceSize size,
 }
 
 Buffer::~Buffer() { release(); }
+
+VkDeviceAddress Buffer::address() const {
+    VkBufferDeviceAddressInfo info{VK_STRUCTURE_TYPE_BUFFER_DEVICE_ADDRESS_INFO};
+    info.buffer = buffer_;
+    return context_->rt().getBufferDeviceAddress(context_->device(), &info);
+}
 
 Buffer::Buffer(Buffer&& other) noexcept { *this = std::move(other); }
 

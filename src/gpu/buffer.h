@@ -28,6 +28,8 @@ public:
     VkBuffer handle() const { return buffer_; }
     VkDeviceSize size() const { return size_; }
     const std::string& name() const { return name_; }
+    // Needs VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT and a context with ray tracing enabled.
+    VkDeviceAddress address() const;
     explicit operator bool() const { return buffer_ != VK_NULL_HANDLE; }
 
     // The caller makes sure no submitted work still uses the buffer.

@@ -5,6 +5,7 @@
 #include "errors.h"
 #include "gpu/buffer.h"
 #include "gpu/context.h"
+#include "gpu/ray_tracing_program.h"
 #include "gpu/vk_check.h"
 
 namespace wf {
@@ -48,25 +49,39 @@ uint32_t texelBytes(BufferAccess access) {
     return 0;
 }
 
-DescriptorTable::DescriptorTable(const Context& context, const DescriptorBindings& bindings)
+DescriptorTable::DescriptorTable(const Context& context, const DescriptorBindings& bindings,
+                                 const AccelerationBinding& acceleration)
     : device_(context.device()) {
     try {
-        create(context, bindings);
+        create(context, bindings, acceleration);
     } catch (...) {
         release();
         throw;
     }
 }
 
-void DescriptorTable::create(const Context& context, const DescriptorBindings& bindings) {
+void DescriptorTable::create(const Context& context, const DescriptorBindings& bindings,
+                             const AccelerationBinding& acceleration) {
     std::vector<VkDescriptorSetLayoutBinding> layoutBindings;
     std::map<VkDescriptorType, uint32_t> typeCounts;
+    const bool traced = acceleration.topLevel != VK_NULL_HANDLE;
+    const VkShaderStageFlags stages =
+        VK_SHADER_STAGE_COMPUTE_BIT | (traced ? kRayTracingStages : VkShaderStageFlags(0));
     for (const DescriptorBinding& entry : bindings) {
         VkDescriptorSetLayoutBinding layoutBinding{};
         layoutBinding.binding = entry.binding;
         layoutBinding.descriptorType = descriptorType(entry.access);
         layoutBinding.descriptorCount = 1;
-        layoutBinding.stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
+        layoutBinding.stageFlags = stages;
+        layoutBindings.push_back(layoutBinding);
+        ++typeCounts[layoutBinding.descriptorType];
+    }
+    if (traced) {
+        VkDescriptorSetLayoutBinding layoutBinding{};
+        layoutBinding.binding = acceleration.binding;
+        layoutBinding.descriptorType = VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
+        layoutBinding.descriptorCount = 1;
+        layoutBinding.stageFlags = stages;
         layoutBindings.push_back(layoutBinding);
         ++typeCounts[layoutBinding.descriptorType];
     }
@@ -136,6 +151,19 @@ void DescriptorTable::create(const Context& context, const DescriptorBindings& b
             infos[i] = {entry.buffer->handle(), 0, VK_WHOLE_SIZE};
             writes[i].pBufferInfo = &infos[i];
         }
+    }
+    VkWriteDescriptorSetAccelerationStructureKHR topLevel{
+        VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR};
+    if (traced) {
+        topLevel.accelerationStructureCount = 1;
+        topLevel.pAccelerationStructures = &acceleration.topLevel;
+        VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        write.pNext = &topLevel;
+        write.dstSet = set_;
+        write.dstBinding = acceleration.binding;
+        write.descriptorCount = 1;
+        write.descriptorType = VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
+        writes.push_back(write);
     }
     vkUpdateDescriptorSets(device_, static_cast<uint32_t>(writes.size()), writes.data(), 0,
                            nullptr);

@@ -36,10 +36,18 @@ struct DescriptorBinding {
 };
 using DescriptorBindings = std::vector<DescriptorBinding>;
 
-// Buffers by binding number; only the bindings a scene needs are present.
+// The top-level acceleration structure of ray-traced scenes, at its own binding.
+struct AccelerationBinding {
+    uint32_t binding = 0;
+    VkAccelerationStructureKHR topLevel = VK_NULL_HANDLE; // none: no such binding
+};
+
+// Buffers by binding number; only the bindings a scene needs are present. With a top level,
+// the set is visible to the ray-tracing stages too.
 class DescriptorTable {
 public:
-    DescriptorTable(const Context& context, const DescriptorBindings& bindings);
+    DescriptorTable(const Context& context, const DescriptorBindings& bindings,
+                    const AccelerationBinding& acceleration = {});
     ~DescriptorTable();
     DescriptorTable(const DescriptorTable&) = delete;
     DescriptorTable& operator=(const DescriptorTable&) = delete;
@@ -48,7 +56,8 @@ public:
     VkDescriptorSet set() const { return set_; }
 
 private:
-    void create(const Context& context, const DescriptorBindings& bindings);
+    void create(const Context& context, const DescriptorBindings& bindings,
+                const AccelerationBinding& acceleration);
     void release();
 
     VkDevice device_;

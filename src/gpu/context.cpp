@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <string>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 #include "errors.h"
@@ -62,7 +63,12 @@ Context::Context(const ContextOptions& options) {
     if (options.createSurface)
         surface_ = options.createSurface(instance_);
     pickPhysicalDevice(index, options.quiet);
-    createDevice();
+    queryRayTracing();
+    if (options.rayTracing == RayTracingRequest::Required && !rayTracingSupported_)
+        throw UsageError("--traversal rt: device '" + deviceName_ + "' (" + driverInfo_ +
+                         ") has no ray-tracing pipelines (VK_KHR_ray_tracing_pipeline, "
+                         "VK_KHR_acceleration_structure); use --traversal bvh or auto");
+    createDevice(options.rayTracing);
 }
 
 Context::~Context() {
@@ -239,7 +245,56 @@ void Context::pickPhysicalDevice(std::optional<int> index, bool quiet) {
                      driverInfo_.c_str());
 }
 
-void Context::createDevice() {
+namespace {
+
+const char* const kRayTracingExtensions[] = {
+    VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME, VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME,
+    VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME};
+
+} // namespace
+
+void Context::queryRayTracing() {
+    uint32_t count = 0;
+    VK_CHECK(vkEnumerateDeviceExtensionProperties(physicalDevice_, nullptr, &count, nullptr));
+    std::vector<VkExtensionProperties> extensions(count);
+    VK_CHECK(vkEnumerateDeviceExtensionProperties(physicalDevice_, nullptr, &count,
+                                                  extensions.data()));
+    for (const char* wanted : kRayTracingExtensions) {
+        const bool present =
+            std::any_of(extensions.begin(), extensions.end(), [&](const auto& e) {
+                return std::strcmp(e.extensionName, wanted) == 0;
+            });
+        if (!present)
+            return;
+    }
+    VkPhysicalDeviceBufferDeviceAddressFeatures address{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_BUFFER_DEVICE_ADDRESS_FEATURES};
+    VkPhysicalDeviceAccelerationStructureFeaturesKHR acceleration{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
+    VkPhysicalDeviceRayTracingPipelineFeaturesKHR pipeline{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR};
+    acceleration.pNext = &address;
+    pipeline.pNext = &acceleration;
+    VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+    features.pNext = &pipeline;
+    vkGetPhysicalDeviceFeatures2(physicalDevice_, &features);
+    rayTracingSupported_ = address.bufferDeviceAddress && acceleration.accelerationStructure &&
+                           pipeline.rayTracingPipeline &&
+                           pipeline.rayTracingPipelineTraceRaysIndirect;
+    if (!rayTracingSupported_)
+        return;
+    VkPhysicalDeviceAccelerationStructurePropertiesKHR asProperties{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_PROPERTIES_KHR};
+    rayTracingProperties_ = {VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_PROPERTIES_KHR};
+    rayTracingProperties_.pNext = &asProperties;
+    VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+    props.pNext = &rayTracingProperties_;
+    vkGetPhysicalDeviceProperties2(physicalDevice_, &props);
+    rayTracingProperties_.pNext = nullptr;
+    minScratchAlignment_ = std::max(1u, asProperties.minAccelerationStructureScratchOffsetAlignment);
+}
+
+void Context::createDevice(RayTracingRequest rayTracing) {
     uint32_t familyCount = 0;
     vkGetPhysicalDeviceQueueFamilyProperties(physicalDevice_, &familyCount, nullptr);
     std::vector<VkQueueFamilyProperties> families(familyCount);
@@ -273,17 +328,63 @@ void Context::createDevice() {
     info.pEnabledFeatures = &enabled;
     info.queueCreateInfoCount = 1;
     info.pQueueCreateInfos = &queueInfo;
-    if (surface_) {
-        info.enabledExtensionCount = 1;
-        info.ppEnabledExtensionNames = &swapchainExtension;
+    std::vector<const char*> extensions;
+    if (surface_)
+        extensions.push_back(swapchainExtension);
+    rayTracingEnabled_ =
+        rayTracingSupported_ &&
+        (rayTracing == RayTracingRequest::Required ||
+         (rayTracing == RayTracingRequest::Auto &&
+          properties_.deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU));
+    // Only what the ray-tracing passes use: addresses for the structures' inputs and the
+    // shader binding table, acceleration structures, pipelines traced by indirect arguments.
+    VkPhysicalDeviceBufferDeviceAddressFeatures address{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_BUFFER_DEVICE_ADDRESS_FEATURES};
+    address.bufferDeviceAddress = VK_TRUE;
+    VkPhysicalDeviceAccelerationStructureFeaturesKHR acceleration{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
+    acceleration.accelerationStructure = VK_TRUE;
+    acceleration.pNext = &address;
+    VkPhysicalDeviceRayTracingPipelineFeaturesKHR pipeline{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR};
+    pipeline.rayTracingPipeline = VK_TRUE;
+    pipeline.rayTracingPipelineTraceRaysIndirect = VK_TRUE;
+    pipeline.pNext = &acceleration;
+    if (rayTracingEnabled_) {
+        for (const char* name : kRayTracingExtensions)
+            extensions.push_back(name);
+        info.pNext = &pipeline;
     }
+    info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
+    info.ppEnabledExtensionNames = extensions.data();
     VK_CHECK(vkCreateDevice(physicalDevice_, &info, nullptr, &device_));
+    if (rayTracingEnabled_)
+        loadRayTracingFunctions();
     vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
 
     VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
     poolInfo.queueFamilyIndex = queueFamily_;
     VK_CHECK(vkCreateCommandPool(device_, &poolInfo, nullptr, &commandPool_));
+}
+
+void Context::loadRayTracingFunctions() {
+    const auto load = [&](auto& function, const char* name) {
+        function = reinterpret_cast<std::remove_reference_t<decltype(function)>>(
+            vkGetDeviceProcAddr(device_, name));
+        if (!function)
+            throw InternalError(std::string("vkGetDeviceProcAddr found no ") + name + " on " +
+                                deviceName_ + ", which offers ray tracing");
+    };
+    load(rt_.getBufferDeviceAddress, "vkGetBufferDeviceAddress");
+    load(rt_.createAccelerationStructure, "vkCreateAccelerationStructureKHR");
+    load(rt_.destroyAccelerationStructure, "vkDestroyAccelerationStructureKHR");
+    load(rt_.getAccelerationStructureBuildSizes, "vkGetAccelerationStructureBuildSizesKHR");
+    load(rt_.getAccelerationStructureDeviceAddress, "vkGetAccelerationStructureDeviceAddressKHR");
+    load(rt_.cmdBuildAccelerationStructures, "vkCmdBuildAccelerationStructuresKHR");
+    load(rt_.createRayTracingPipelines, "vkCreateRayTracingPipelinesKHR");
+    load(rt_.getRayTracingShaderGroupHandles, "vkGetRayTracingShaderGroupHandlesKHR");
+    load(rt_.cmdTraceRaysIndirect, "vkCmdTraceRaysIndirectKHR");
 }
 
 bool Context::canPresent(uint32_t family, const VkQueueFamilyProperties& properties) const {

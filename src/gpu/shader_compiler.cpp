@@ -96,6 +96,22 @@ std::vector<uint32_t> readSpirv(const fs::path& path) {
     return words;
 }
 
+// The stage from the file's extension, as glslangValidator names them.
+EShLanguage stageOf(const fs::path& path) {
+    const std::string ext = path.extension().string();
+    if (ext == ".rgen")
+        return EShLangRayGen;
+    if (ext == ".rmiss")
+        return EShLangMiss;
+    if (ext == ".rchit")
+        return EShLangClosestHit;
+    if (ext == ".rahit")
+        return EShLangAnyHit;
+    if (ext == ".rint")
+        return EShLangIntersect;
+    return EShLangCompute;
+}
+
 } // namespace
 
 std::string defaultShaderDir() {
@@ -188,12 +204,13 @@ CompiledShader ShaderCompiler::compile(const std::string& file,
     std::string preamble;
     for (const auto& [name, value] : defines)
         preamble += "#define " + name + " " + value + "\n";
-    glslang::TShader shader(EShLangCompute);
+    const EShLanguage stage = stageOf(path);
+    glslang::TShader shader(stage);
     const char* text = source.c_str();
     const char* name = path.c_str();
     shader.setStringsWithLengthsAndNames(&text, nullptr, &name, 1);
     shader.setPreamble(preamble.c_str());
-    shader.setEnvInput(glslang::EShSourceGlsl, EShLangCompute, glslang::EShClientVulkan, 100);
+    shader.setEnvInput(glslang::EShSourceGlsl, stage, glslang::EShClientVulkan, 100);
     shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_2);
     shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_5);
     ShaderIncluder includer(shaderDir_);
@@ -209,7 +226,7 @@ CompiledShader ShaderCompiler::compile(const std::string& file,
     CompiledShader result;
     glslang::SpvOptions options;
     options.disableOptimizer = false;
-    glslang::GlslangToSpv(*program.getIntermediate(EShLangCompute), result.spirv, &options);
+    glslang::GlslangToSpv(*program.getIntermediate(stage), result.spirv, &options);
     remember(result.spirv);
 
     if (!cached.empty()) {

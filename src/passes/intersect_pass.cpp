@@ -5,7 +5,11 @@
 namespace wf {
 
 void IntersectPass::record(VkCommandBuffer cmd, uint32_t depth) const {
-    pass_.dispatchIndirect(cmd, offsetof(gpu_types::QueueCounters, rayArgs),
+    if (trace_) {
+        trace_->record(cmd, depth);
+        return;
+    }
+    pass_->dispatchIndirect(cmd, offsetof(gpu_types::QueueCounters, rayArgs),
                            PassConstants{depth, 0, 0, 0, 0, 0, 0, 0});
 }
 

@@ -21,6 +21,7 @@ struct PassResources {
     const DescriptorTable& table;
     const Buffer& counters;
     TimestampTimer& timer;
+    bool rayTracing = false; // intersect and shadow as ray-tracing pipelines (trace_pass.h)
 };
 
 using gpu_types::PassConstants;

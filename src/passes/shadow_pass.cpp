@@ -5,7 +5,11 @@
 namespace wf {
 
 void ShadowPass::record(VkCommandBuffer cmd, uint32_t depth) const {
-    pass_.dispatchIndirect(cmd, offsetof(gpu_types::QueueCounters, shadowArgs),
+    if (trace_) {
+        trace_->record(cmd, depth);
+        return;
+    }
+    pass_->dispatchIndirect(cmd, offsetof(gpu_types::QueueCounters, shadowArgs),
                            PassConstants{depth, 0, 0, 0, 0, 0, 0, 0});
 }
 

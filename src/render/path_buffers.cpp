@@ -10,8 +10,10 @@ using gpu_types::RenderParams;
 PathBuffers::PathBuffers(const Context& context, uint32_t pathCapacity, uint32_t pixelCount,
                          PathStateUse use, const ShaderVariant& variant)
     : params(context, "params", sizeof(RenderParams)),
+      // Ray-traced passes read their trace arguments by address.
       counters(context, "queue counters", sizeof(QueueCounters),
-               VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT),
+               VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
+                   (variant.rayTracing ? VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT : 0)),
       film(context, "film", uint64_t(pixelCount) * 16),
       radiance(context, "path radiance", uint64_t(pathCapacity) * 16) {
     if (variant.secondMoment)

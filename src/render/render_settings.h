@@ -9,6 +9,8 @@
 
 namespace wf {
 
+enum class Traversal { Bvh, RayTracing };
+
 struct RenderSettings {
     uint32_t width = 512;
     uint32_t height = 512;
@@ -26,6 +28,10 @@ struct RenderSettings {
     // Trace whole paths in one dispatch (shaders/megakernel.comp) instead of the wavefront's
     // passes: the baseline `wavefront bench` compares against. Same samples, same image.
     bool megakernel = false;
+    // --traversal: the project's BVH in compute, or the driver's acceleration structures
+    // through ray-tracing pipelines (needs a context with ray tracing enabled; the megakernel
+    // always walks the BVH). The same image up to the intersectors' rounding.
+    Traversal traversal = Traversal::Bvh;
     LightSampling lightSampling = LightSampling::Mis;
     LightSelection lightSelection = LightSelection::Auto; // --light-selection
     bool triangleSolidAngle = true; // --triangle-sampling solid-angle (else area)

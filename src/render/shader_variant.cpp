@@ -111,6 +111,8 @@ ShaderDefines ShaderVariant::defines() const {
             {"WF_BVH_PAGE_SHIFT", std::to_string(bvhPages.shift)},
             {"WF_INSTANCE_PAGES", std::to_string(instancePages.count)},
             {"WF_INSTANCE_PAGE_SHIFT", std::to_string(instancePages.shift)}};
+    if (rayTracing)
+        defines.emplace_back("WF_RAY_TRACING", "1");
     if (shadeKinds != 0) {
         defines.push_back({"WF_SHADE_BINS", std::to_string(shadeBins())});
         defines.push_back({"WF_LIGHT_HIT_BIN", std::to_string(lightHitBin(shadeKinds))});

@@ -50,6 +50,9 @@ struct ShaderVariant {
     bool thinLens = false;            // WF_THIN_LENS: the camera has an aperture
     bool instances = false;           // WF_HAS_INSTANCES: a two-level BVH over instances
     bool rayCones = false;            // WF_RAY_CONES: texture LOD by ray cones (textured scenes)
+    // WF_RAY_TRACING: intersect and shadow trace through the driver's acceleration structures
+    // (--traversal rt); defined only then, so the BVH variants' shaders are as before.
+    bool rayTracing = false;
     TablePages trianglePages;         // WF_TRIANGLE_PAGES, _SHIFT: set by the renderer
     TablePages bvhPages;              // WF_BVH_PAGES, _SHIFT: set by the renderer
     TablePages instancePages;         // WF_INSTANCE_PAGES, _SHIFT: set by the renderer

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "errors.h"
+#include "gpu/buffer.h"
 #include "gpu/compute_program.h"
 #include "gpu/timestamp_timer.h"
 #include "passes/accumulate_pass.h"
@@ -30,7 +32,8 @@ WaveRecorder::WaveRecorder(const Context& context, const ShaderCompiler& compile
     const uint32_t passesPerDepth = 3 + std::max(variant.shadeBins(), 1u);
     timer_ = std::make_unique<TimestampTimer>(context, passesPerDepth * maxDepth + 2);
 
-    PassResources resources{context, compiler, defines, table, counters, *timer_};
+    PassResources resources{context, compiler, defines, table, counters, *timer_,
+                            variant.rayTracing && !megakernel};
     if (megakernel) {
         megakernel_ = std::make_unique<MegakernelPass>(resources);
     } else {
@@ -57,6 +60,7 @@ void WaveRecorder::record(VkCommandBuffer cmd, const PassConstants& wave) const 
     timer_->reset(cmd);
     QueueCounters initial{};
     initial.rayArgs = {groupsFor(wave.pathCount), 1, 1, wave.pathCount};
+    initial.rayTrace = {wave.pathCount, 1, 1, 0};
     initial.depthRays[0] = wave.pathCount;
     for (DispatchArgs& args : initial.kindArgs)
         args = {0, 1, 1, 0}; // intersect raises groupsX
@@ -79,6 +83,21 @@ void WaveRecorder::record(VkCommandBuffer cmd, const PassConstants& wave) const 
         }
     }
     accumulate_->record(cmd, wave);
+    timer_->finish(cmd);
+}
+
+void WaveRecorder::recordIntersect(VkCommandBuffer cmd, uint32_t count) const {
+    if (!intersect_)
+        throw InternalError("recordIntersect: the megakernel has no intersect pass");
+    timer_->reset(cmd);
+    QueueCounters initial{};
+    initial.rayArgs = {groupsFor(count), 1, 1, count};
+    initial.rayTrace = {count, 1, 1, 0};
+    for (DispatchArgs& args : initial.kindArgs)
+        args = {0, 1, 1, 0};
+    vkCmdUpdateBuffer(cmd, counters_.handle(), 0, sizeof initial, &initial);
+    computeBarrier(cmd);
+    intersect_->record(cmd, 0);
     timer_->finish(cmd);
 }
 

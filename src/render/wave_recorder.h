@@ -41,6 +41,9 @@ public:
     ~WaveRecorder();
 
     void record(VkCommandBuffer cmd, const gpu_types::PassConstants& wave) const;
+    // The intersect pass alone over rays 0 .. count-1 already in the ray buffers (ray queue 0
+    // holding 0 .. count-1): what the tests that compare traversals read back.
+    void recordIntersect(VkCommandBuffer cmd, uint32_t count) const;
     // GPU milliseconds per pass of the last wave recorded, after its fence.
     std::map<std::string, double> collectTimes();
 

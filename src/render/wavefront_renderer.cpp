@@ -53,6 +53,10 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
     variant_.surface = surfaceFeatures(scene.surface, scene.materials, texelPageBytes(context));
     variant_.rayCones = variant_.surface.textures && settings.textureLod;
     variant_.packedStores = settings.packedStores && context.shaderInt64();
+    variant_.rayTracing = settings.traversal == Traversal::RayTracing && !settings.megakernel;
+    if (variant_.rayTracing && !context.rayTracingEnabled())
+        throw UsageError("--traversal rt: ray tracing is not enabled on device '" +
+                         context.deviceName() + "'");
     const VkPhysicalDeviceLimits& limits = context.properties().limits;
     const uint64_t pageBytes =
         settings.tablePageBytes > 0
@@ -84,7 +88,10 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
         bindings.push_back(
             {WF_BINDING_SAMPLER_TABLES, samplerTable_.get(), BufferAccess::Uint1Texels});
     }
-    table_ = std::make_unique<DescriptorTable>(context, bindings);
+    AccelerationBinding acceleration;
+    if (const AccelerationStructureSet* structures = sceneBuffers_->acceleration())
+        acceleration = {WF_BINDING_TOP_LEVEL, structures->topLevel()};
+    table_ = std::make_unique<DescriptorTable>(context, bindings, acceleration);
     waves_ = std::make_unique<WaveRecorder>(context, compiler, defines_, *table_,
                                             pathBuffers_->counters, variant_,
                                             settings.megakernel, settings.maxDepth);
@@ -156,6 +163,28 @@ void WavefrontRenderer::runWave(uint32_t pixelBase, uint32_t pixels, uint32_t fi
     stats_.seconds += seconds;
     stats_.longestSubmitSeconds = std::max(stats_.longestSubmitSeconds, seconds);
     adaptWaveSize(paths, seconds);
+}
+
+std::vector<glm::uvec4> WavefrontRenderer::intersectRays(const std::vector<glm::vec4>& origins,
+                                                         const std::vector<glm::vec4>& directions) {
+    const size_t count = origins.size();
+    if (count != directions.size() || count > pathCapacity_ || settings_.megakernel)
+        throw InternalError("intersectRays: as many directions as origins, at most the path "
+                            "capacity, and not in the megakernel");
+    if (count == 0)
+        return {};
+    pathBuffers_->rayOrigin.upload(origins);
+    pathBuffers_->rayDirection.upload(directions);
+    std::vector<uint32_t> queue(count);
+    for (size_t i = 0; i < count; ++i)
+        queue[i] = static_cast<uint32_t>(i);
+    pathBuffers_->rayQueues.upload(queue);
+    context_.submitAndWait(
+        [&](VkCommandBuffer cmd) { waves_->recordIntersect(cmd, uint32_t(count)); });
+    waves_->collectTimes();
+    std::vector<glm::uvec4> hits(count);
+    pathBuffers_->hits.download(hits.data(), count * sizeof(glm::uvec4));
+    return hits;
 }
 
 void WavefrontRenderer::adaptWaveSize(uint32_t paths, double seconds) {

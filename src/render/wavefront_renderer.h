@@ -81,6 +81,11 @@ public:
     // to the film. samplesDone() is left alone: the pixels' counts are in the film.
     void renderPixelList(const std::vector<uint32_t>& pixels, uint32_t firstSample,
                          uint32_t samples);
+    // The closest hits of the given rays (xyz of each; at most pathCapacity()), as the
+    // intersect pass writes them (shaders/intersect.comp), by this renderer's traversal: the
+    // tests that hold the two traversals to the same hits. Not for the megakernel.
+    std::vector<glm::uvec4> intersectRays(const std::vector<glm::vec4>& origins,
+                                          const std::vector<glm::vec4>& directions);
     const RenderStats& stats() const { return stats_; }
     const ShaderDefines& shaderDefines() const { return defines_; }
     const ShaderVariant& variant() const { return variant_; }
@@ -90,6 +95,10 @@ public:
     uint32_t pathsPerWave() const { return wavePaths_; }    // the current target
     std::vector<std::pair<std::string, uint64_t>> memoryReport() const;
     std::shared_ptr<const SceneBuffers> sceneBuffers() const { return sceneBuffers_; }
+    // What intersect and shadow trace with, and the driver's structures where that is rt.
+    Traversal traversal() const {
+        return variant_.rayTracing ? Traversal::RayTracing : Traversal::Bvh;
+    }
 
 private:
     void uploadParams();

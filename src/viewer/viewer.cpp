@@ -141,6 +141,9 @@ bool Viewer::fitWindow(bool force) {
 
 void Viewer::rebuildTargets() {
     RenderSettings render = settings_.render;
+    // The context enabled ray tracing only where --traversal (or auto's rule) picked it.
+    render.traversal =
+        context_.rayTracingEnabled() ? Traversal::RayTracing : Traversal::Bvh;
     if (samplerIsFiniteSet(render.sampler)) // the set is what the viewer will accumulate
         render.sampleSetSize = settings_.effectiveSppLimit();
     targets_.rebuild(presenter_.extent(), render, presenter_.displayBuffer());

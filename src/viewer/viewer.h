@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "gpu/context.h"
 #include "render/wavefront_renderer.h"
 #include "scene/gltf/gltf_instancing.h"
 #include "viewer/display_pass.h"
@@ -51,6 +52,7 @@ struct ViewerOptions {
     std::string environmentPath; // --env, replacing the scene's environment
     Instancing instancing = Instancing::Auto; // --instancing
     std::optional<int> device;
+    RayTracingRequest rayTracing = RayTracingRequest::Off; // --traversal
     bool overlay = true;
     bool quiet = false;
     // Automation (scripts and tests).

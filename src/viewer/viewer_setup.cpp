@@ -53,6 +53,7 @@ ContextOptions presentingContext(const ViewerOptions& options, const Window& win
     ContextOptions context;
     context.deviceIndex = options.device;
     context.quiet = options.quiet;
+    context.rayTracing = options.rayTracing;
     context.instanceExtensions = window.instanceExtensions();
     context.createSurface = [&window](VkInstance instance) {
         return window.createSurface(instance);

@@ -13,7 +13,7 @@ check "bench help" 0 "$wavefront" bench --help
 for flag in --width --height --frames --warmup --spp --max-depth --seed --megakernel \
     --compare-megakernel --budget-ms --wave-paths --json --device --sampler \
     --triangle-sampling --sphere-sampling --min-throughput --clamp --no-randomize --camera --env \
-    --shade-split; do
+    --shade-split --traversal; do
     expect "bench help lists $flag" grep -q -- "$flag" "$work/stdout"
 done
 
@@ -32,6 +32,23 @@ expect "json has min/median/max" json_has "$work/a.json" \
 expect "json has occupancy" json_has "$work/a.json" "$run['occupancy'][0]['rays'] == 32*32*3"
 expect "json has memory and BVH" json_has "$work/a.json" \
     "$run['memoryTotalBytes'] > 0 and d['bvh']['sahCost'] > 0"
+
+expect "json: bvh traversal by default on lavapipe" json_has "$work/a.json" \
+    "d['traversal']['mode'] == 'bvh' or 'llvmpipe' not in d['device']"
+# --traversal rt where the device has ray-tracing pipelines: the table and the JSON say so,
+# with the structures' size and build time; the megakernel beside it walks the BVH.
+if "$wavefront" bench "$scenes/cornell_box.gltf" "${small[@]}" --traversal rt \
+    --compare-megakernel --json "$work/rt.json" >"$work/stdout" 2>"$work/stderr"; then
+    expect "rt: table says so" grep -q "traversal: rt" "$work/stdout"
+    expect "rt: the megakernel walks the BVH" grep -q "the megakernel walks the BVH" \
+        "$work/stdout"
+    expect "rt: json" json_has "$work/rt.json" "d['traversal']['mode'] == 'rt' and \
+        d['traversal']['megakernel'] == 'bvh' and d['traversal']['accelerationBytes'] > 0"
+    expect "rt: same rays as bvh" json_has "$work/rt.json" \
+        "d['runs']['wavefront']['occupancy'][0]['rays'] == 32*32*3"
+else
+    expect "rt refused: one line" one_line_error
+fi
 
 check "bench split by kind" 0 "$wavefront" bench "$scenes/glass_caustic.gltf" "${small[@]}" \
     --json "$work/k.json"

@@ -11,7 +11,7 @@ expect "top help lists render" grep -q "render" "$work/stdout"
 check "render help" 0 "$wavefront" render --help
 for flag in --output --spp --width --height --max-depth --rr-depth --seed --json --quiet \
     --device --light-sampling --light-selection --triangle-sampling --sphere-sampling \
-    --min-throughput --clamp --aperture --focus-distance --texture-filter; do
+    --min-throughput --clamp --aperture --focus-distance --texture-filter --traversal; do
     expect "render help lists $flag" grep -q -- "$flag" "$work/stdout"
 done
 
@@ -36,6 +36,34 @@ expect "thin lens: its variant" grep -q "WF_THIN_LENS=1" "$work/stderr"
 check "negative aperture" 2 "$wavefront" render "$scenes/cornell_box.gltf" -o "$work/x.exr" \
     --aperture -1
 expect "negative aperture: one line" one_line_error
+
+# --traversal: bvh always; rt where the device has ray-tracing pipelines (Mesa 25's lavapipe),
+# else a one-line refusal, exit 2; auto picks bvh on lavapipe (a CPU device, where it measured
+# faster) and says so in the JSON.
+check "bad traversal" 2 "$wavefront" render "$scenes/cornell_box.gltf" -o "$work/x.exr" \
+    --traversal embree
+expect "bad traversal: one line" one_line_error
+check "traversal bvh" 0 "$wavefront" render "$scenes/cornell_box.gltf" -o "$work/t.exr" --spp 1 \
+    --width 16 --max-depth 3 --traversal bvh --quiet --json "$work/bvh.json"
+expect "traversal bvh: json" json_has "$work/bvh.json" "d['traversal']['mode'] == 'bvh'"
+"$wavefront" render "$scenes/cornell_box.gltf" -o "$work/t.exr" --spp 1 --width 16 \
+    --max-depth 3 --traversal rt --verbose --json "$work/rt.json" >"$work/stdout" 2>"$work/stderr"
+rt_code=$?
+if [ "$rt_code" -eq 0 ]; then
+    expect "traversal rt: json" json_has "$work/rt.json" "d['traversal']['mode'] == 'rt' and \
+        d['traversal']['accelerationBytes'] > 0 and d['traversal']['accelerationBuildSeconds'] >= 0"
+    expect "traversal rt: verbose says so" grep -q "traversal: rt" "$work/stderr"
+else
+    expect "traversal rt refused with exit 2" test "$rt_code" -eq 2
+    expect "traversal rt refused: one line" one_line_error
+    expect "traversal rt refused: says why" grep -q "ray-tracing pipelines" "$work/stderr"
+fi
+check "traversal auto" 0 "$wavefront" render "$scenes/cornell_box.gltf" -o "$work/t.exr" \
+    --spp 1 --width 16 --max-depth 3 --quiet --json "$work/auto.json"
+if grep -q llvmpipe "$work/auto.json"; then
+    expect "traversal auto: bvh on lavapipe" json_has "$work/auto.json" \
+        "d['traversal']['mode'] == 'bvh'"
+fi
 
 textured="$(dirname "${BASH_SOURCE[0]}")/../gltf_corpus/valid/normal_map_cylinder_mirrored.gltf"
 check "texture filter" 0 "$wavefront" render "$textured" -o "$work/tf.exr" --spp 1 --width 16 \

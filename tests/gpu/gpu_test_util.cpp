@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "errors.h"
 #include "render/film_error.h"
 #include "render/gpu_scene/scene_buffers.h"
 
@@ -52,10 +53,29 @@ Scene furnaceBox(float albedo, float emission) {
     return scene;
 }
 
+Context* rayTracingContext() {
+    static std::unique_ptr<Context> context = []() -> std::unique_ptr<Context> {
+        ContextOptions options;
+        options.validation = true;
+        options.quiet = true;
+        options.rayTracing = RayTracingRequest::Required;
+        try {
+            return std::make_unique<Context>(options);
+        } catch (const UsageError&) {
+            return nullptr; // no ray-tracing pipelines on this device
+        }
+    }();
+    return context.get();
+}
+
 RenderResult renderScene(const Scene& scene, const RenderSettings& settings) {
+    return renderScene(scene, settings, gpuContext());
+}
+
+RenderResult renderScene(const Scene& scene, const RenderSettings& settings, Context& context) {
     static ShaderCompiler compiler;
     PreparedScene prepared = prepareScene(scene);
-    WavefrontRenderer renderer(gpuContext(), prepared, settings, compiler);
+    WavefrontRenderer renderer(context, prepared, settings, compiler);
     renderer.render();
     return {renderer.readImage(), renderer.stats(),
             settings.aov ? renderer.readAovs() : AovImages{},

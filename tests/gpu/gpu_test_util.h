@@ -26,6 +26,12 @@ struct RenderResult {
 };
 
 RenderResult renderScene(const Scene& scene, const RenderSettings& settings);
+// The same on another context (the ray-tracing tests' own, rayTracingContext()).
+RenderResult renderScene(const Scene& scene, const RenderSettings& settings, Context& context);
+
+// A second validation-enabled context with the driver's ray tracing enabled, or null where the
+// device has none (Mesa 22.3's lavapipe): the --traversal rt tests skip there.
+Context* rayTracingContext();
 
 struct MeanAndError {
     double mean;

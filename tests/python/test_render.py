@@ -123,3 +123,26 @@ def test_target_error_with_a_time_limit(renderer, cornell):
 def test_time_limit_stops_early(renderer, cornell):
     out = renderer.render(cornell, width=16, spp=100000, max_depth=2, time_limit=0.001)
     assert 1 <= out.spp < 100000
+
+
+def test_traversal_as_the_cli(renderer, cornell, tmp_path):
+    # auto on lavapipe and bvh trace the BVH; rt, where the device has ray-tracing pipelines,
+    # gives the CLI's rt image bit for bit and says so in the stats; elsewhere DeviceError.
+    out = renderer.render(cornell, width=16, spp=2, max_depth=3)
+    assert out.stats["traversal"]["mode"] in ("bvh", "rt")
+    with pytest.raises(ValueError):
+        wf.Renderer(traversal="embree")
+    try:
+        rt = wf.Renderer(validation=True, traversal="rt")
+    except wf.DeviceError as error:
+        assert "ray-tracing pipelines" in str(error)
+        return
+    with rt:
+        out = rt.render(cornell, width=16, spp=2, max_depth=3, seed=5)
+        stats = out.stats
+        assert stats["traversal"]["mode"] == "rt"
+        assert stats["traversal"]["accelerationBytes"] > 0
+        cli = cli_render(tmp_path, "rt", "--width", 16, "--spp", 2, "--max-depth", 3,
+                         "--seed", 5, "--traversal", "rt")
+        assert np.array_equal(cli.view(np.uint32), out.image.view(np.uint32))
+        assert rt.validation_messages == 0

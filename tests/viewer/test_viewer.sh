@@ -90,6 +90,18 @@ run "render" 0 "$wavefront" render "$cornell" "${common[@]}" --width 128 --heigh
 check "view matches render" "$compare" "$work/view.exr" "$work/render.exr" --spp 8 \
     --shown "$work/view.png"
 
+# --traversal rt where the device has ray-tracing pipelines (Mesa 25's lavapipe): the viewer's
+# context enables them and its image is render's with the same traversal.
+if "$wavefront" render "$cornell" --width 8 --spp 1 --traversal rt -o "$work/probe.exr" \
+    --quiet 2>/dev/null; then
+    run "view-rt" 0 "$wavefront" view "$cornell" "${common[@]}" "${slow[@]}" --traversal rt \
+        --width 128 --height 96 --frames 12 --no-overlay --screenshot "$work/view-rt.exr"
+    run "render-rt" 0 "$wavefront" render "$cornell" "${common[@]}" --traversal rt \
+        --width 128 --height 96 -o "$work/render-rt.exr" --quiet
+    check "rt view matches rt render" "$compare" "$work/view-rt.exr" "$work/render-rt.exr" \
+        --spp 8
+fi
+
 # A finite-set sampler: the viewer's set is its --spp, as render's is.
 run "view-stratified" 0 "$wavefront" view "$cornell" "${common[@]}" "${slow[@]}" \
     --sampler stratified \

@@ -5,6 +5,7 @@
 #include "passes/shade_kinds.h"
 #include "scene/bvh/bvh_tuning.h"
 #include "scene/bvh/instance_bvh.h"
+#include "render/gpu_scene/scene_acceleration.h"
 #include "render/gpu_scene/table_pages.h"
 #include "shaders/types/render_types.h"
 #include "shaders/bsdf/sheen.h"
@@ -143,6 +144,8 @@ SceneBuffers::SceneBuffers(const Context& context, const PreparedScene& scene,
             environmentAlias_ =
                 uploadTable(context, "environment alias", scene.lights.environmentTexels);
     }
+    if (variant.rayTracing)
+        acceleration_ = buildSceneAcceleration(context, scene, variant);
 }
 
 void SceneBuffers::appendBindings(
@@ -179,6 +182,8 @@ void SceneBuffers::appendMemoryReport(
         if (*buffer)
             report.emplace_back(buffer->name(), buffer->size());
     surface_.appendMemoryReport(report);
+    if (acceleration_)
+        report.emplace_back("acceleration structures", acceleration_->bytes());
 }
 
 } // namespace wf

@@ -1,9 +1,11 @@
 // The scene on the GPU: triangles in BVH order, the flattened BVH, materials and, only when the
 // scene has emissive triangles, the emitter table.
 #pragma once
+#include <memory>
 #include <utility>
 #include <vector>
 
+#include "gpu/acceleration_structure.h"
 #include "gpu/buffer.h"
 #include "gpu/compute_program.h"
 #include "scene/bvh/bvh_builder.h"
@@ -50,6 +52,8 @@ public:
     bool hasEmitters() const { return static_cast<bool>(emitters_); }
     bool hasLights() const { return static_cast<bool>(lights_); }
     bool hasEnvironment() const { return static_cast<bool>(environment_); }
+    // The driver's acceleration structures (variants with rayTracing), else null.
+    const AccelerationStructureSet* acceleration() const { return acceleration_.get(); }
     // (binding, buffer) pairs for the descriptor table.
     void appendBindings(DescriptorBindings& bindings) const;
     void appendMemoryReport(std::vector<std::pair<std::string, uint64_t>>& report) const;
@@ -67,6 +71,7 @@ private:
     Buffer environment_;
     Buffer environmentAlias_;
     SurfaceBuffers surface_; // normals, tangents, UVs, textures: what the scene uses
+    std::unique_ptr<AccelerationStructureSet> acceleration_;
 };
 
 } // namespace wf
