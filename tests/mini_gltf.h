@@ -118,6 +118,7 @@ struct MiniGltf {
     std::vector<std::string> images, textures; // written only when a test adds some
     std::string scenes = R"([{"nodes":[0]}])";
     std::string bufferUri; // empty: the buffer is embedded as a data: URI
+    std::string extra;     // more top-level members, e.g. ",\"animations\":[...]"
 
     int addView(const void* data, size_t bytes, size_t stride = 0) {
         while (bin.size() % 4) {
@@ -168,7 +169,7 @@ struct MiniGltf {
                ",\"nodes\":" + join(nodes) + ",\"meshes\":" + join(meshes) +
                ",\"materials\":" + join(materials) + ",\"cameras\":" + join(cameras) +
                (images.empty() ? "" : ",\"images\":" + join(images)) +
-               (textures.empty() ? "" : ",\"textures\":" + join(textures)) +
+               (textures.empty() ? "" : ",\"textures\":" + join(textures)) + extra +
                ",\"accessors\":" + join(accessors) + ",\"bufferViews\":" + join(views) +
                ",\"buffers\":[" + buffer + "}]}";
     }

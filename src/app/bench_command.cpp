@@ -57,6 +57,7 @@ const CommandSpec& benchSpec() {
                 envOption(),
                 instancingOption(),
             },
+            animationOptions(),
         }),
         "Exit codes: 0 done, 2 bad usage or bad input, 1 internal or device failure.\n"};
     return spec;

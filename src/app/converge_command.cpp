@@ -67,6 +67,9 @@ const CommandSpec& convergeSpec() {
                                           "half of the image)"},
                 {"--no-plot", "", "", "write CSV and JSON only, no charts"},
                 instancingOption(),
+            },
+            animationOptions(),
+            {
                 deviceOption(),
                 quietOption(),
             },

@@ -70,6 +70,9 @@ const CommandSpec& renderSpec() {
                 cameraOption(),
                 envOption(),
                 instancingOption(),
+            },
+            animationOptions(),
+            {
                 {"--verbose", "-v", "",
                  "print the scene summary and load time, BVH build, shader variant, GPU and "
                  "peak host memory"},

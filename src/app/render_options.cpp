@@ -89,6 +89,27 @@ OptionSpec instancingOption() {
                                         "more), on (always) or off (flattened); default auto"};
 }
 
+std::vector<OptionSpec> animationOptions() {
+    return {{"--time", "", "SECONDS", "pose the scene's animations, skins and morph targets at "
+                                      "this time (default 0: their start; clamped to each "
+                                      "animation's keys)"},
+            {"--frame", "", "N", "pose at frame N, the time N / --fps (instead of --time)"},
+            {"--fps", "", "F", "frames per second of --frame (default 24)"},
+            {"--animation", "", "NAME|INDEX", "play only this animation of the file (default: "
+                                              "every animation at once, as viewers do)"}};
+}
+
+double sceneTimeFrom(const ParsedArgs& parsed) {
+    if (parsed.has("--time") && parsed.has("--frame"))
+        throw UsageError("--time and --frame both set the scene's time: give one");
+    if (parsed.has("--fps") && !parsed.has("--frame") && !parsed.has("--frames"))
+        throw UsageError("--fps applies to --frame or --frames");
+    const double fps = parsed.floatValue("--fps", 24.0f, 1e-3f, 1e6f);
+    if (parsed.has("--frame"))
+        return double(parsed.uintValue("--frame", 0, 0, 1u << 30)) / fps;
+    return parsed.floatValue("--time", 0.0f, -1e9f, 1e9f);
+}
+
 OptionSpec envOption() {
     return {"--env", "", "FILE.exr", "equirectangular environment map, linear RGB, +Y up "
                                      "(default: none; uniform white if nothing emits)"};
@@ -152,9 +173,11 @@ void applyLensFlags(const ParsedArgs& parsed, Scene& scene) {
 } // namespace
 
 Scene loadSceneWithFlags(const ParsedArgs& parsed, const std::string& path,
-                         SceneSummary* summary) {
+                         SceneSummary* summary, std::optional<double> time) {
     std::vector<std::string> warnings; // printed once the scene and flags are accepted
     GltfOptions options;
+    options.time = time ? *time : sceneTimeFrom(parsed);
+    options.animation = parsed.value("--animation").value_or("");
     if (auto mode = parsed.value("--instancing"))
         options.instancing = parseInstancing(*mode);
     const auto start = std::chrono::steady_clock::now();

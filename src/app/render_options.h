@@ -31,6 +31,10 @@ OptionSpec cameraOption();      // --camera: one of the file's cameras
 OptionSpec envOption();
 OptionSpec instancingOption(); // --instancing auto|on|off         // --env
 std::vector<OptionSpec> lensOptions(); // --aperture, --focus-distance
+std::vector<OptionSpec> animationOptions(); // --time, --frame, --fps, --animation
+
+// The scene's time in seconds from --time, or --frame / --fps (UsageError when both are given).
+double sceneTimeFrom(const ParsedArgs& parsed);
 
 // depthOptions, samplingOptions and --no-randomize into `settings` (UsageError on a bad value).
 void applyRenderFlags(const ParsedArgs& parsed, uint32_t defaultMaxDepth,
@@ -43,9 +47,12 @@ ContextOptions contextOptionsFrom(const ParsedArgs& parsed);
 // environment map --env names, prints the loader's warnings once those are accepted, then
 // frames the scene when it has no camera and sets its lens from --aperture and
 // --focus-distance. `summary`, when given, describes the scene as loaded
-// (before framing) and how long loading took. Throws InputError for a bad file, camera or map.
+// (before framing) and how long loading took. The scene is posed at `time` seconds when given,
+// else at sceneTimeFrom(parsed), playing --animation's choice. Throws InputError for a bad
+// file, camera or map.
 Scene loadSceneWithFlags(const ParsedArgs& parsed, const std::string& path,
-                         SceneSummary* summary = nullptr);
+                         SceneSummary* summary = nullptr,
+                         std::optional<double> time = std::nullopt);
 
 // How a command sizes its image from --width, --height and the camera's aspect ratio.
 struct ImageSizeRule {

@@ -140,9 +140,11 @@ static const unsigned char* checkedRange(const tinygltf::Model& model, const std
 AccessorReader::Dense AccessorReader::dense(int index, const std::string& name,
                                             unsigned allowedTypes, int components) {
     const tinygltf::Accessor& acc = model_.accessors[index];
-    static const char* typeNames[] = {"", "SCALAR", "VEC2", "VEC3", "VEC4"};
     if (tinygltf::GetNumComponentsInType(uint32_t(acc.type)) != components) {
-        fail(file_, name + " has the wrong type (" + typeNames[components] + " expected)");
+        const std::string expected = components == 1    ? "SCALAR"
+                                     : components == 16 ? "MAT4"
+                                                        : "VEC" + std::to_string(components);
+        fail(file_, name + " has the wrong type (" + expected + " expected)");
     }
     if (!allowed(allowedTypes, acc.componentType)) {
         fail(file_, name + " has componentType " + std::to_string(acc.componentType) +
@@ -242,7 +244,7 @@ std::vector<T> AccessorReader::read(int index, const std::string& name, unsigned
 
 const FloatArray& AccessorReader::floats(int accessor, const std::string& role, int components) {
     checkIndex(file_, accessor, model_.accessors.size(), "accessor", role);
-    const long long key = (long long)accessor * 8 + components;
+    const long long key = (long long)accessor * 32 + components; // components <= 16
     auto cached = floatCache_.find(key);
     if (cached != floatCache_.end()) {
         return cached->second;

@@ -73,13 +73,14 @@ public:
     AccessorReader(const tinygltf::Model& model, const std::string& file)
         : model_(model), file_(file) {}
 
-    // An attribute of `components` (2, 3 or 4) values per element. Meshes instanced by many
+    // An attribute of `components` (1 to 4, or 16 for MAT4) values per element. Meshes instanced by many
     // nodes share accessors, so each is read once; the reference stays valid for the reader's
     // lifetime. Non-finite values fail, naming the accessor and element.
     const FloatArray& floats(int accessor, const std::string& role, int components);
     // u8/u16/u32 indices widened to u32, each below vertexCount.
     std::vector<std::uint32_t> indices(int accessor, std::size_t vertexCount,
                                        const std::string& where);
+    const tinygltf::Model& model() const { return model_; }
     // Total elements read so far, for the loader's overall budget.
     std::size_t elementsRead() const { return elementsRead_; }
 

@@ -18,6 +18,7 @@
 
 #include "errors.h"
 #include "scene/gltf/gltf_accessors.h"
+#include "scene/gltf/gltf_animation.h"
 #include "scene/gltf/gltf_buffer_streaming.h"
 #include "scene/gltf/compression/gltf_compression.h"
 #include "scene/gltf/gltf_file_access.h"
@@ -87,7 +88,7 @@ class Converter {
 public:
     Converter(const tinygltf::Model& model, const std::string& file, gltf::FsPolicy& policy,
               const GltfOptions& options)
-        : model_(model), file_(file), policy_(policy), options_(options) {}
+        : model_(model), file_(file), policy_(policy), options_(options), reader_(model, file) {}
     Scene run();
 
 private:
@@ -103,6 +104,8 @@ private:
     std::vector<std::size_t> countPlacements() const;
     std::size_t checkPlacedTriangles(const std::vector<std::size_t>& placements) const;
     void addDefaultEnvironment();
+    void poseNodes();
+    gltf::Deformation deformationOf(int nodeIndex);
 
     const tinygltf::Model& model_;
     const std::string& file_;
@@ -111,6 +114,9 @@ private:
     Scene scene_;
     std::vector<int> parent_;
     std::vector<bool> instanced_; // per mesh (gltf_instancing.h)
+    gltf::AccessorReader reader_; // animations and skins
+    std::vector<gltf::NodeAnimation> animated_; // per node, at options_.time
+    std::vector<glm::dmat4> nodeWorld_;         // per node, every node (joints may be anywhere)
 };
 
 // Unknown extensions: one warning each, refused when required (the file says it cannot be
@@ -189,7 +195,32 @@ glm::dmat4 Converter::localTransform(int nodeIndex) const {
     const tinygltf::Node& node = model_.nodes[nodeIndex];
     const std::string name = "node " + std::to_string(nodeIndex);
     glm::dmat4 m(1.0);
-    if (!node.matrix.empty()) {
+    const gltf::NodeAnimation* animated =
+        std::size_t(nodeIndex) < animated_.size() ? &animated_[nodeIndex] : nullptr;
+    if (animated && (animated->translation || animated->rotation || animated->scale)) {
+        // The channels replace the node's own T, R or S (gltf_animation checked it has no matrix).
+        const auto& t = node.translation;
+        const auto& r = node.rotation;
+        const auto& s = node.scale;
+        if ((!t.empty() && t.size() != 3) || (!r.empty() && r.size() != 4) ||
+            (!s.empty() && s.size() != 3)) {
+            fail(name + ": translation and scale need 3 numbers, rotation 4");
+        }
+        glm::dvec3 tv = t.empty() ? glm::dvec3(0.0) : glm::dvec3(t[0], t[1], t[2]);
+        glm::dquat rq = r.empty() ? glm::dquat(1, 0, 0, 0) : glm::dquat(r[3], r[0], r[1], r[2]);
+        glm::dvec3 sv = s.empty() ? glm::dvec3(1.0) : glm::dvec3(s[0], s[1], s[2]);
+        tv = animated->translation.value_or(tv);
+        rq = animated->rotation.value_or(rq);
+        sv = animated->scale.value_or(sv);
+        const double len = glm::length(rq);
+        if (!(len > 0.0) || !std::isfinite(len))
+            fail(name + ": rotation is not a usable quaternion");
+        rq /= len;
+        m[3] = glm::dvec4(tv, 1.0);
+        m = m * rotationMatrix(rq.x, rq.y, rq.z, rq.w) *
+            glm::dmat4(glm::dvec4(sv.x, 0, 0, 0), glm::dvec4(0, sv.y, 0, 0),
+                       glm::dvec4(0, 0, sv.z, 0), glm::dvec4(0, 0, 0, 1));
+    } else if (!node.matrix.empty()) {
         if (node.matrix.size() != 16) {
             fail(name + ": matrix needs 16 numbers");
         }
@@ -298,13 +329,17 @@ void Converter::walkNodes(gltf::PrimitiveBuilder& builder) {
             const auto& primitives = model_.meshes[node.mesh].primitives;
             // An instanced mesh is read once, in its own space, at its first placement.
             const bool instanced = instanced_[node.mesh];
+            const gltf::Deformation deformation = deformationOf(index);
+            // A skinned mesh sits where its joints put it; its node's transform is ignored.
+            const glm::dmat4 placed =
+                deformation.jointMatrices.empty() ? world : glm::dmat4(1.0);
             const bool firstPlacement = instanced && meshSlot[node.mesh] == gltf::kWorldGeometry;
             if (firstPlacement)
                 meshSlot[node.mesh] = builder.newMesh();
             for (size_t p = 0; p < primitives.size() && (!instanced || firstPlacement); ++p) {
                 builder.add(primitives[p], "mesh " + std::to_string(node.mesh) + " primitive " +
-                            std::to_string(p), instanced ? glm::dmat4(1.0) : world,
-                            meshSlot[node.mesh]);
+                            std::to_string(p), instanced ? glm::dmat4(1.0) : placed,
+                            meshSlot[node.mesh], &deformation);
             }
             if (instanced)
                 builder.place(meshSlot[node.mesh], world, name);
@@ -313,6 +348,55 @@ void Converter::walkNodes(gltf::PrimitiveBuilder& builder) {
             stack.emplace_back(*child, world);
         }
     }
+}
+
+// Samples the animations at the time, then every node's world transform (joints outside the
+// scene's tree included), parents before children via the checked parent links.
+void Converter::poseNodes() {
+    animated_ = gltf::sampleAnimations(model_, file_, reader_, options_.time, options_.animation);
+    const std::size_t n = model_.nodes.size();
+    nodeWorld_.assign(n, glm::dmat4(1.0));
+    std::vector<bool> done(n, false);
+    std::vector<int> chain;
+    for (std::size_t i = 0; i < n; ++i) {
+        for (int node = int(i); node != -1 && !done[node]; node = parent_[node])
+            chain.push_back(node);
+        for (auto node = chain.rbegin(); node != chain.rend(); ++node) {
+            const int parent = parent_[*node];
+            nodeWorld_[*node] =
+                (parent == -1 ? glm::dmat4(1.0) : nodeWorld_[parent]) * localTransform(*node);
+            done[*node] = true;
+        }
+        chain.clear();
+    }
+}
+
+// The node's morph weights (animated, else the node's, else the mesh's) and its skin's joint
+// matrices; empty when the mesh has neither.
+gltf::Deformation Converter::deformationOf(int nodeIndex) {
+    const tinygltf::Node& node = model_.nodes[nodeIndex];
+    gltf::Deformation out;
+    const std::string name = "node " + std::to_string(nodeIndex);
+    const std::size_t targets = gltf::morphTargetCount(model_, node.mesh);
+    if (targets > 0) {
+        const gltf::NodeAnimation& a = animated_[nodeIndex];
+        const std::vector<double>& meshWeights = model_.meshes[node.mesh].weights;
+        out.morphWeights = a.weights             ? *a.weights
+                           : !node.weights.empty() ? node.weights
+                                                   : meshWeights;
+        if (out.morphWeights.size() > targets)
+            fail(name + ": " + std::to_string(out.morphWeights.size()) + " morph weights for " +
+                 std::to_string(targets) + " targets of mesh " + std::to_string(node.mesh));
+        out.morphWeights.resize(targets, 0.0);
+        for (double w : out.morphWeights)
+            if (!std::isfinite(w))
+                fail(name + ": a morph weight is not finite");
+    }
+    if (node.skin != -1) {
+        checkIndex(node.skin, model_.skins.size(), "skin", name);
+        out.jointMatrices = gltf::jointMatrices(model_, file_, reader_, node.skin, nodeWorld_);
+    }
+    return out;
 }
 
 // "A scene without any light gets a uniform white environment": no emissive triangle and no
@@ -334,10 +418,16 @@ Scene Converter::run() {
     checkExtensions();
     gltf::MaterialTables tables = gltf::convertMaterials(model_, file_);
     checkNodeTree();
+    poseNodes();
     const uint32_t defaultIndex = uint32_t(tables.materials.size());
     gltf::PrimitiveBuilder builder(model_, file_, tables, defaultIndex);
     const std::vector<std::size_t> placements = countPlacements();
     instanced_ = gltf::meshesToInstance(model_, placements, tables, options_.instancing);
+    // Skinned and morphed meshes are posed per node, so each placement is its own copy.
+    for (const tinygltf::Node& node : model_.nodes)
+        if (node.mesh >= 0 && std::size_t(node.mesh) < instanced_.size() &&
+            (node.skin != -1 || gltf::morphTargetCount(model_, node.mesh) > 0))
+            instanced_[node.mesh] = false;
     builder.reserve(checkPlacedTriangles(placements));
     walkNodes(builder);
     builder.finish(scene_);

@@ -13,6 +13,10 @@ namespace wf {
 
 struct GltfOptions {
     Instancing instancing = Instancing::Auto; // which multiply placed meshes stay instanced
+    // The scene at this time in seconds: its animations' node transforms and morph weights,
+    // skins posed by their joints (gltf_animation.h). 0 poses animated files at their start.
+    double time = 0.0;
+    std::string animation; // "" plays every animation at once; else one's name or index
 };
 
 // Loads triangle lists, strips and fans (points and lines are skipped with one warning on

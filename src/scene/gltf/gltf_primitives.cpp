@@ -176,7 +176,8 @@ std::vector<uint32_t> PrimitiveBuilder::corners(int mode, size_t vertexCount, in
 }
 
 void PrimitiveBuilder::add(const tinygltf::Primitive& primitive, const std::string& where,
-                           const glm::dmat4& world, uint32_t mesh) {
+                           const glm::dmat4& world, uint32_t mesh,
+                           const Deformation* deformation) {
     if (mesh != kWorldGeometry && !grouping_) {
         meshOf_.assign(triangles_.size(), kWorldGeometry);
         grouping_ = true;
@@ -197,7 +198,7 @@ void PrimitiveBuilder::add(const tinygltf::Primitive& primitive, const std::stri
     if (attribute("POSITION") == -1) {
         fail(file_, where + " has no POSITION attribute");
     }
-    const FloatArray& points = reader_.floats(attribute("POSITION"), "POSITION of " + where, 3);
+    const FloatArray* points = &reader_.floats(attribute("POSITION"), "POSITION of " + where, 3);
     uint32_t material = defaultMaterial_;
     MaterialNeeds needs;
     if (primitive.material == -1) {
@@ -214,9 +215,9 @@ void PrimitiveBuilder::add(const tinygltf::Primitive& primitive, const std::stri
         }
         const FloatArray& array =
             reader_.floats(attribute(key), std::string(key) + " of " + where, components);
-        if (array.count != points.count) {
+        if (array.count != points->count) {
             fail(file_, where + ": " + key + " has " + std::to_string(array.count) +
-                            " elements but POSITION has " + std::to_string(points.count));
+                            " elements but POSITION has " + std::to_string(points->count));
         }
         return &array;
     };
@@ -225,6 +226,22 @@ void PrimitiveBuilder::add(const tinygltf::Primitive& primitive, const std::stri
                                 optional("TEXCOORD_1", 2, needs.uv1)};
     const bool normalMap = needs.normalMapTexCoord >= 0;
     const FloatArray* tangents = optional("TANGENT", 4, normalMap);
+    // Morph targets and skins pose copies of the attributes (accessors may be shared).
+    FloatArray posed[3];
+    if (deformation && deformation->active()) {
+        posed[0] = *points;
+        points = &posed[0];
+        if (normals) {
+            posed[1] = *normals;
+            normals = &posed[1];
+        }
+        if (tangents) {
+            posed[2] = *tangents;
+            tangents = &posed[2];
+        }
+        deformPrimitive(reader_, file_, primitive, where, *deformation, posed[0],
+                        normals ? &posed[1] : nullptr, tangents ? &posed[2] : nullptr);
+    }
     if ((needs.uv0 && !uvs[0]) || (needs.uv1 && !uvs[1])) {
         ++missingUvs_;
     }
@@ -232,14 +249,14 @@ void PrimitiveBuilder::add(const tinygltf::Primitive& primitive, const std::stri
     needUv1_ |= needs.uv1;
     needTangents_ |= normalMap;
 
-    const std::vector<uint32_t> order = corners(mode, points.count, primitive.indices, where);
+    const std::vector<uint32_t> order = corners(mode, points->count, primitive.indices, where);
     // A mirroring transform turns counter-clockwise into clockwise; swapping two corners keeps
     // the front face where the file meant it. Normals transform by the inverse transpose.
     const glm::dmat3 linear(world);
     const bool mirrored = glm::determinant(linear) < 0.0;
     const glm::dmat3 normalMatrix = glm::inverseTranspose(linear);
     const std::vector<glm::vec4> generated =
-        normalMap && !tangents ? mikkTangents(points, normals, uvs[needs.normalMapTexCoord], order)
+        normalMap && !tangents ? mikkTangents(*points, normals, uvs[needs.normalMapTexCoord], order)
                                : std::vector<glm::vec4>{};
     for (size_t t = 0; t < order.size(); t += 3) {
         uint32_t idx[3] = {order[t], order[t + 1], order[t + 2]};
@@ -250,7 +267,7 @@ void PrimitiveBuilder::add(const tinygltf::Primitive& primitive, const std::stri
         }
         glm::vec3 p[3];
         for (int k = 0; k < 3; ++k) {
-            const float* q = points[idx[k]];
+            const float* q = (*points)[idx[k]];
             p[k] = glm::vec3(world * glm::dvec4(q[0], q[1], q[2], 1.0));
             if (!finite(p[k])) {
                 fail(file_, where + ": a vertex is not finite after the node transforms");

@@ -10,6 +10,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "scene/gltf/gltf_accessors.h"
+#include "scene/gltf/gltf_deformation.h"
 #include "scene/gltf/gltf_materials.h"
 #include "scene/scene.h"
 
@@ -55,8 +56,11 @@ public:
 
     // Flattened geometry comes with its world transform and kWorldGeometry; an instanced mesh's
     // with the identity and the slot newMesh() gave it, and place() adds its placements.
+    // `deformation` (morph weights, a skin's joint matrices) poses the vertices first; a skinned
+    // primitive comes with the identity as `world` (its joints place it).
     void add(const tinygltf::Primitive& primitive, const std::string& where,
-             const glm::dmat4& world, uint32_t mesh = kWorldGeometry);
+             const glm::dmat4& world, uint32_t mesh = kWorldGeometry,
+             const Deformation* deformation = nullptr);
     uint32_t newMesh() { return meshCount_++; }
     // Room for the triangles the accessors' counts promise, so the arrays never grow by copying.
     void reserve(size_t triangles) { triangles_.reserve(triangles); }
