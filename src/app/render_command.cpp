@@ -9,6 +9,7 @@
 #include "app/cli.h"
 #include "app/host_memory.h"
 #include "app/commands.h"
+#include "app/frame_sequence.h"
 #include "app/progress_line.h"
 #include "app/render_flags.h"
 #include "app/render_options.h"
@@ -206,6 +207,8 @@ int runRenderCommand(const std::vector<std::string>& args) {
                          " does not exist");
 
     RenderRequest request = renderRequestFrom(parsed);
+    if (parsed.has("--frames"))
+        return runFrameSequence(parsed, request);
     RenderSettings& settings = request.settings;
     const bool adaptive = request.targetError > 0.0;
     const double targetError = request.targetError;

@@ -23,6 +23,10 @@ const CommandSpec& renderSpec() {
         joinOptions({
             {
                 {"--output", "-o", "OUT.exr", "output OpenEXR file (required; must end in .exr)"},
+                {"--frames", "", "A..B[:STEP]", "a sequence: frames A to B (every STEP-th), each "
+                                               "posed at frame / --fps seconds and written to "
+                                               "-o's pattern (e.g. out/frame_%04d.exr); the "
+                                               "device and shaders are made once"},
                 {"--spp", "", "N", "samples per pixel (default 64); with --target-error, the "
                                   "most any pixel gets (default 1024)"},
                 {"--time-limit", "", "SECONDS", "stop before the sample pass that would end past "
@@ -138,7 +142,13 @@ std::string renderSettingsKey(const RenderSettings& s, const ParsedArgs& parsed)
            (parsed.has("--aperture") ? " aperture " + *parsed.value("--aperture") : "") +
            (parsed.has("--focus-distance") ? " focus " + *parsed.value("--focus-distance") : "") +
            (parsed.has("--target-error") ? " target-error " + *parsed.value("--target-error")
-                                         : "");
+                                         : "") +
+           // Parts of different times or animations are different renders.
+           (parsed.has("--time") ? " time " + *parsed.value("--time") : "") +
+           (parsed.has("--frame") ? " frame " + *parsed.value("--frame") + " fps " +
+                                        parsed.value("--fps").value_or("24")
+                                  : "") +
+           (parsed.has("--animation") ? " animation " + *parsed.value("--animation") : "");
 }
 
 // --target-error refuses what would need a sample range it does not have.

@@ -94,7 +94,7 @@ std::vector<OptionSpec> animationOptions() {
                                       "this time (default 0: their start; clamped to each "
                                       "animation's keys)"},
             {"--frame", "", "N", "pose at frame N, the time N / --fps (instead of --time)"},
-            {"--fps", "", "F", "frames per second of --frame (default 24)"},
+            {"--fps", "", "F", "frames per second of --frame and --frames (default 24)"},
             {"--animation", "", "NAME|INDEX", "play only this animation of the file (default: "
                                               "every animation at once, as viewers do)"}};
 }

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <mutex>
 #include <sstream>
 
@@ -117,10 +118,16 @@ std::string defaultShaderCacheDir() {
     return {};
 }
 
+struct ShaderCompiler::MemoryCache {
+    std::mutex mutex;
+    std::map<std::string, std::vector<uint32_t>> spirv; // by file and cache key
+};
+
 ShaderCompiler::ShaderCompiler() : ShaderCompiler(defaultShaderDir(), defaultShaderCacheDir()) {}
 
 ShaderCompiler::ShaderCompiler(std::string shaderDir, std::string cacheDir)
-    : shaderDir_(fs::weakly_canonical(shaderDir).string()), cacheDir_(std::move(cacheDir)) {
+    : shaderDir_(fs::weakly_canonical(shaderDir).string()), cacheDir_(std::move(cacheDir)),
+      memory_(std::make_shared<MemoryCache>()) {
     if (!fs::is_regular_file(fs::path(shaderDir_) / "raygen.comp"))
         throw InternalError("shader folder " + shaderDir_ +
                             " has no raygen.comp; set WAVEFRONT_SHADER_DIR");
@@ -155,12 +162,26 @@ CompiledShader ShaderCompiler::compile(const std::string& file,
                                        const ShaderDefines& defines) const {
     fs::path path = fs::path(shaderDir_) / file;
     std::string source = readText(path);
+    const std::string key = file + "-" + cacheKey(source, defines);
+    if (!memory_)
+        throw InternalError("shader compiler used before construction");
+    {
+        std::lock_guard<std::mutex> lock(memory_->mutex);
+        if (auto found = memory_->spirv.find(key); found != memory_->spirv.end())
+            return {found->second, true};
+    }
+    auto remember = [&](const std::vector<uint32_t>& words) {
+        std::lock_guard<std::mutex> lock(memory_->mutex);
+        memory_->spirv.emplace(key, words);
+    };
     fs::path cached;
     if (!cacheDir_.empty()) {
         cached = fs::path(cacheDir_) / (path.stem().string() + "-" + cacheKey(source, defines) +
                                         ".spv");
-        if (auto words = readSpirv(cached); !words.empty())
+        if (auto words = readSpirv(cached); !words.empty()) {
+            remember(words);
             return {std::move(words), true};
+        }
     }
 
     ensureGlslangInitialized();
@@ -189,6 +210,7 @@ CompiledShader ShaderCompiler::compile(const std::string& file,
     glslang::SpvOptions options;
     options.disableOptimizer = false;
     glslang::GlslangToSpv(*program.getIntermediate(EShLangCompute), result.spirv, &options);
+    remember(result.spirv);
 
     if (!cached.empty()) {
         // A cache that cannot be written costs time, not correctness: warn and go on.

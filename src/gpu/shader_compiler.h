@@ -3,6 +3,7 @@
 // compiler version, so a second run of the same scene compiles nothing.
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -37,6 +38,10 @@ private:
     std::string shaderDir_;
     std::string cacheDir_;
     uint64_t sourcesHash_ = 0; // every file under the shader folder, read once
+    // SPIR-V compiled or read by this compiler (and its copies), so the renderers of a frame
+    // sequence read neither glslang nor the disk again.
+    struct MemoryCache;
+    std::shared_ptr<MemoryCache> memory_;
 };
 
 std::string defaultShaderDir();

@@ -2,7 +2,8 @@
 # The Slurm farm end to end on this machine: installs slurm-wlm and munge if missing (root),
 # starts munged, slurmctld and slurmd on localhost with a generated one-node configuration,
 # renders the Cornell box as 4 parts with scripts/slurm_render.sh, and checks that the merged
-# image equals a single-machine render; then stops the daemons it started, by their pids.
+# image equals a single-machine render, and a 4-frame sequence (--frames, 2 parts a frame)
+# against render --frames; then stops the daemons it started, by their pids.
 # Usage: test_slurm.sh PATH/TO/wavefront PATH/TO/wf_compare_images PROJECT_ROOT
 set -u
 wavefront=$(realpath "$1")
@@ -82,4 +83,19 @@ WAVEFRONT="$wavefront" timeout 300 bash "$root/scripts/slurm_render.sh" \
 "$compare" "$work/farm.exr" "$work/one.exr" --spp 18 --tolerance 1e-5 ||
     fail "the farm's image differs from one machine's"
 echo "4 parts on Slurm merged into one run's image"
-echo "1 passed, 0 failed"
+
+# A 4-frame sequence of the animated scene, each frame in 2 parts: every merged frame equals
+# that frame of one machine's render --frames.
+flags=(--width 32 --max-depth 3)
+WAVEFRONT="$wavefront" timeout 300 bash "$root/scripts/slurm_render.sh" \
+    "$root/scenes/animated_arm.gltf" "$work/anim/frame_%04d.exr" --frames 0..18:6 --parts 2 \
+    --spp 6 --wait "${flags[@]}" -- --time=5 ||
+    { cat "$work"/anim/*.parts/*.log; fail "slurm_render.sh --frames"; }
+"$wavefront" render "$root/scenes/animated_arm.gltf" -o "$work/seq_%d.exr" --frames 0..18:6 \
+    --spp 6 --quiet "${flags[@]}" || fail "single-machine --frames"
+for f in 0 6 12 18; do
+    "$compare" "$work/anim/frame_$(printf %04d $f).exr" "$work/seq_$f.exr" --spp 6 \
+        --tolerance 1e-5 || fail "frame $f of the farm differs from one machine's"
+done
+echo "a 4-frame sequence on Slurm (8 tasks) equals one machine's render --frames"
+echo "2 passed, 0 failed"
