@@ -473,7 +473,8 @@ def broken(name, substring, g):
     case("invalid/" + name, "refused " + substring, g)
 
 
-case("invalid/not_json.gltf", "refused ", b"{ this is not json")
+case("invalid/not_json.gltf", "refused is not valid JSON (a syntax error at line 1, column 4)",
+     b"{ this is not json")
 case("invalid/empty_file.gltf", "refused ", b"")
 case("invalid/bad_magic.glb", "refused magic", b"gLTf" + bytes(40))
 case("invalid/truncated.glb", "refused ", tri().glb()[:40])
@@ -698,6 +699,90 @@ broken("attenuation_distance_zero.gltf", "attenuationDistance", quad(g, m, uv=Fa
 g = Gltf()
 m = g.material(extensions={"KHR_materials_sheen": {"sheenColorFactor": [0.5, -1, 0.5]}})
 broken("sheen_color_negative.gltf", "sheenColorFactor", quad(g, m, uv=False))
+
+
+# --- Time: animations, skins and morph targets (issue 35). ---
+def animated(interpolation="LINEAR", output_count=None, sampler=0, path="translation",
+             channel_sampler=True):
+    """A triangle on a node that an animation moves over a second."""
+    g = tri()
+    times = g.floats([0, 1], "SCALAR")
+    values = [0, 0, 0, 1, 0, 0] * (3 if interpolation == "CUBICSPLINE" else 1)
+    if output_count is not None:
+        values = values[:output_count * 3]
+    out = g.floats(values, "VEC3")
+    channel = {"target": {"node": 0, "path": path}}
+    if channel_sampler:
+        channel["sampler"] = sampler
+    g.doc["animations"] = [{"channels": [channel], "samplers": [
+        {"input": times, "output": out, "interpolation": interpolation}]}]
+    return g
+
+
+def skinned(joint=1):
+    """A triangle on two joints (no inverse bind matrices: identity), its third corner on the
+    second; a morph target lifting it, its weight animated (STEP)."""
+    g = Gltf()
+    pos = g.floats([0, 0, 0, 1, 0, 0, 0, 1, 0], "VEC3")
+    joints = g.accessor(struct.pack("<12B", 0, 0, 0, 0, 0, 0, 0, 0, joint, 0, 0, 0), U8, 3,
+                        "VEC4")
+    weights = g.floats([1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0], "VEC4")
+    lift = g.floats([0, 0, 1, 0, 0, 1, 0, 0, 1], "VEC3")
+    g.doc["meshes"].append({"primitives": [{"attributes": {"POSITION": pos, "JOINTS_0": joints,
+                                                           "WEIGHTS_0": weights},
+                                            "targets": [{"POSITION": lift}]}],
+                            "weights": [0.5]})
+    g.doc["scenes"] = [{"nodes": [0, 2]}]
+    g.node(children=[1])
+    g.node(translation=[0, 1, 0])
+    g.node(mesh=0, skin=0)
+    g.doc["skins"] = [{"joints": [0, 1]}]
+    times = g.floats([0, 1], "SCALAR")
+    g.doc["animations"] = [{"channels": [
+        {"sampler": 0, "target": {"node": 1, "path": "rotation"}},
+        {"sampler": 1, "target": {"node": 2, "path": "weights"}}], "samplers": [
+        {"input": times, "output": g.floats([0, 0, 0, 1, 0, 0, 0.7071068, 0.7071068], "VEC4")},
+        {"input": times, "output": g.floats([0, 1], "SCALAR"), "interpolation": "STEP"}]}]
+    return g
+
+
+case("valid/animation_translation.gltf", "loads 1", animated())
+case("valid/animation_cubic_spline.gltf", "loads 1", animated("CUBICSPLINE"))
+case("valid/skin_and_morph_animated.gltf", "loads 1", skinned())
+broken("animation_sampler_missing.gltf", "channel 0: sampler 3 does not exist",
+       animated(sampler=3))
+broken("animation_output_count.gltf", "output has 1 elements, but 2 keys of LINEAR",
+       animated(output_count=1))
+broken("animation_cubic_output_count.gltf", "keys of CUBICSPLINE need 6",
+       animated("CUBICSPLINE", output_count=2))
+broken("animation_bad_interpolation.gltf", "interpolation 'SMOOTH' is not LINEAR",
+       animated("SMOOTH"))
+broken("animation_bad_path.gltf", "target path 'color'", animated(path="color"))
+broken("animation_weights_without_targets.gltf", "which has no mesh with morph targets",
+       animated(path="weights"))
+broken("animation_channel_without_sampler.gltf", "the required member 'sampler' is missing",
+       animated(channel_sampler=False))
+broken("skin_joint_out_of_range.gltf", "names joint 5 at vertex 2, but the skin has 2",
+       skinned(joint=5))
+
+# --- Refusals that once came in tinygltf's or its JSON parser's words. ---
+g = tri()
+g.more_buffers = [{"byteLength": 16}]
+broken("buffer_without_uri.gltf", "a buffer has no uri", g)
+g = tri()
+g.doc["nodes"][0]["translation"] = [0, 0, "HUGE"]
+case("invalid/number_overflow.gltf", "refused the number 1e309, which no double can hold",
+     json.dumps(g.finish()).replace('"HUGE"', "1e309").encode())
+g = tri()
+del g.doc["accessors"][0]["componentType"]
+broken("accessor_without_component_type.gltf", "the required member 'componentType' is missing",
+       g)
+g = tri()
+g.doc["cameras"] = [{"type": "perspective"}]
+broken("camera_without_perspective.gltf", "a perspective camera has no 'perspective' object", g)
+g = tri()
+g.doc["accessors"][0]["type"] = "VEC7"
+broken("accessor_type_unknown.gltf", "type 'VEC7' is not SCALAR", g)
 
 
 def main():

@@ -103,5 +103,31 @@ TEST(GltfCorpus, EveryFileLoadsOrIsRefusedAsExpected) {
     EXPECT_GE(invalid, 30u);
 }
 
+// Every refusal and warning over the corpus in the project's words: none passes another
+// library's message through (tinygltf's, its JSON parser's).
+TEST(GltfCorpus, NoMessageSpeaksAnotherLibrarysWords) {
+    const char* foreign[] = {"tinygltf", "json.exception", "File not found :", "[json",
+                             "Failed to load external", "property is missing", "` field"};
+    size_t messages = 0;
+    for (const Expectation& e : readExpectations()) {
+        const std::string path = std::string(WF_TEST_CORPUS_DIR) + "/" + e.file;
+        std::vector<std::string> lines;
+        try {
+            loadGltf(path, &lines);
+        } catch (const InputError& error) {
+            lines.push_back(error.what());
+        }
+        for (const std::string& line : lines) {
+            ++messages;
+            // What follows the file's name (one corpus file is named after tinygltf).
+            const size_t at = line.find(path);
+            const std::string said = at == std::string::npos ? line : line.substr(at + path.size());
+            for (const char* words : foreign)
+                EXPECT_EQ(said.find(words), std::string::npos) << e.file << ": " << line;
+        }
+    }
+    EXPECT_GE(messages, 80u);
+}
+
 } // namespace
 } // namespace wf

@@ -25,6 +25,7 @@
 #include "scene/gltf/gltf_images.h"
 #include "scene/gltf/gltf_instancing.h"
 #include "scene/gltf/gltf_lights_cameras.h"
+#include "scene/gltf/gltf_parse_errors.h"
 #include "scene/gltf/gltf_materials.h"
 #include "scene/gltf/gltf_primitives.h"
 
@@ -506,18 +507,22 @@ Scene loadModel(std::vector<unsigned char> bytes, const std::string& path,
     } catch (const std::exception& e) {
         err += e.what();
     }
-    const std::string messages = collapseLines(err + "\n" + warn);
-    if (!loaded) {
-        // A refused path explains a "File not found" better than tinygltf can.
-        std::string problem = messages.empty() ? "cannot parse glTF" : messages;
-        if (!policy.refusal.empty()) {
-            problem = policy.refusal + " (tinygltf: " + problem + ")";
-        }
+    // tinygltf drops some broken objects (an animation channel without its sampler) and goes
+    // on, saying so in `err`: such a file is refused like the others.
+    if (loaded)
+        err = gltf::droppedByTinygltf(err);
+    if (!loaded || !err.empty()) {
+        // A path the policy refused explains a "File not found" better than tinygltf can; the
+        // rest is tinygltf's and its JSON parser's, in the project's words.
+        const bool unreadFile = err.find("File not found") != std::string::npos &&
+                                err.find("'uri' is missing") == std::string::npos;
+        const std::string problem = !policy.refusal.empty() && unreadFile
+                                        ? policy.refusal
+                                        : collapseLines(gltf::parseFailureInOwnWords(err));
         throw InputError(path + ": " + problem);
     }
-    if (!messages.empty()) {
-        gltf::warn(path, messages);
-    }
+    for (const std::string& line : gltf::parseWarningsInOwnWords(warn))
+        gltf::warn(path, collapseLines(line));
     std::vector<unsigned char>().swap(bytes); // tinygltf holds no pointer into the document
     gltf::returnBuffers(model, taken, path);
     gltf::decompress(model, compression, path);

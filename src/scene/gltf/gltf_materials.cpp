@@ -4,6 +4,8 @@
 
 #include <tiny_gltf.h>
 
+#include <cstdio>
+
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -73,8 +75,13 @@ private:
     void checkRange(const std::string& name, const char* what, double value, double lo,
                     double hi) const {
         if (!(value >= lo && value <= hi)) { // NaN fails too
-            fail(file_, name + ": " + what + " must lie in [" + std::to_string(lo) + ", " +
-                            std::to_string(hi) + "]");
+            auto text = [](double x) { // %g: "1e+30", not thirty digits of float noise
+                char out[32];
+                std::snprintf(out, sizeof out, "%g", x);
+                return std::string(out);
+            };
+            fail(file_, name + ": " + what + " must lie in [" + text(lo) + ", " + text(hi) +
+                            "] (it is " + text(value) + ")");
         }
     }
     uint32_t extensionTexture(const tinygltf::Value& extension, const char* key, bool srgb,
