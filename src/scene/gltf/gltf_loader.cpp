@@ -509,6 +509,7 @@ Scene loadModel(std::vector<unsigned char> bytes, const std::string& path,
     }
     // tinygltf drops some broken objects (an animation channel without its sampler) and goes
     // on, saying so in `err`: such a file is refused like the others.
+    const std::string kept = loaded ? gltf::keptByTinygltf(err) : std::string();
     if (loaded)
         err = gltf::droppedByTinygltf(err);
     if (!loaded || !err.empty()) {
@@ -521,7 +522,7 @@ Scene loadModel(std::vector<unsigned char> bytes, const std::string& path,
                                         : collapseLines(gltf::parseFailureInOwnWords(err));
         throw InputError(path + ": " + problem);
     }
-    for (const std::string& line : gltf::parseWarningsInOwnWords(warn))
+    for (const std::string& line : gltf::parseWarningsInOwnWords(kept + warn))
         gltf::warn(path, collapseLines(line));
     std::vector<unsigned char>().swap(bytes); // tinygltf holds no pointer into the document
     gltf::returnBuffers(model, taken, path);

@@ -20,7 +20,7 @@ const std::set<std::string> SUPPORTED_EXTENSIONS = {
     "KHR_materials_specular", "KHR_materials_clearcoat", "KHR_materials_sheen",
     "KHR_materials_volume", "KHR_texture_transform", "KHR_lights_punctual",
     "KHR_mesh_quantization", "KHR_draco_mesh_compression", "EXT_meshopt_compression",
-    "KHR_meshopt_compression"};
+    "KHR_meshopt_compression", "KHR_materials_unlit"};
 
 double number(const tinygltf::Value& object, const char* key, double fallback) {
     if (!object.IsObject() || !object.Has(key)) {
@@ -90,6 +90,7 @@ private:
                         const std::string& name) const;
     void convertLayers(const tinygltf::Material& m, const std::string& name, Material& out);
     Material convert(const tinygltf::Material& m, const std::string& name, MaterialNeeds& needs);
+    void makeUnlit(Material& out) const;
 
     const tinygltf::Model& model_;
     const std::string& file_;
@@ -305,7 +306,26 @@ Material MaterialConverter::convert(const tinygltf::Material& m, const std::stri
         const TextureRef& ref = tables_.refs[out.normalTexture];
         needs.normalMapTexCoord = (ref.flags & WF_TEXTURE_TEXCOORD1) ? 1 : 0;
     }
+    if (extension(m.extensions, "KHR_materials_unlit").IsObject())
+        makeUnlit(out);
     return out;
+}
+
+// KHR_materials_unlit: the surface shows its base colour whatever lights it. A path tracer has
+// that as emission (base colour factor x texture, sRGB-decoded, front faces unless
+// doubleSided) over a black, non-reflecting surface; the base colour texture stays for its
+// alpha. Like any emitter, it also lights what it faces.
+void MaterialConverter::makeUnlit(Material& out) const {
+    out.emission = glm::vec3(out.baseColor);
+    out.emissiveTexture = out.baseColorTexture;
+    out.baseColor = glm::vec4(0.0f, 0.0f, 0.0f, out.baseColor.w);
+    out.metallic = 0.0f;
+    out.specular = 0.0f; // exact Lambert of a black base: no reflection at all
+    out.transmission = 0.0f;
+    out.transmissionTexture = out.specularTexture = out.specularColorTexture =
+        out.metallicRoughnessTexture = out.normalTexture = WF_NO_TEXTURE;
+    out.clearcoat = 0.0f;
+    out.sheenColor = glm::vec3(0.0f);
 }
 
 MaterialTables MaterialConverter::run() {

@@ -132,7 +132,16 @@ std::string parseFailureInOwnWords(const std::string& tinygltfErrors) {
 std::string droppedByTinygltf(const std::string& tinygltfErrors) {
     std::string out;
     for (const std::string& line : lines(tinygltfErrors))
-        if (line.find("'inverseBindMatrices' property is missing") == std::string::npos)
+        if (line.find("animation") != std::string::npos)
+            out += line + "\n";
+    return out;
+}
+
+std::string keptByTinygltf(const std::string& tinygltfErrors) {
+    std::string out;
+    for (const std::string& line : lines(tinygltfErrors))
+        if (line.find("animation") == std::string::npos &&
+            line.find("'inverseBindMatrices' property is missing") == std::string::npos)
             out += line + "\n";
     return out;
 }

@@ -11,10 +11,13 @@ namespace wf::gltf {
 // The problem of a file tinygltf refused, from its error text (one or more lines).
 std::string parseFailureInOwnWords(const std::string& tinygltfErrors);
 
-// The lines of tinygltf's error text on a model it did load that mean something was dropped
-// (an animation channel without its sampler): the loader refuses the file for them. tinygltf
-// 2.7.0 also calls some optional members required ("inverseBindMatrices"); those lines go.
+// The lines of tinygltf's error text on a model it did load that mean an animation lost a
+// channel or sampler: the loader refuses the file for them, as for any broken animation.
 std::string droppedByTinygltf(const std::string& tinygltfErrors);
+// The other lines (a required member missing that the renderer does not use, such as a
+// camera's znear), which the loader passes on as warnings; tinygltf 2.7.0 also calls some
+// optional members required ("inverseBindMatrices"), and those lines go.
+std::string keptByTinygltf(const std::string& tinygltfErrors);
 
 // tinygltf's warnings (one or more lines) as lines of our own; empty for none.
 std::vector<std::string> parseWarningsInOwnWords(const std::string& tinygltfWarnings);
