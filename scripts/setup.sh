@@ -14,6 +14,7 @@ packages=(
     libvulkan-dev vulkan-validationlayers
     glslang-dev glslang-tools libglm-dev libtinygltf-dev libopenexr-dev libstb-dev
     libdraco-dev libmeshoptimizer-dev nlohmann-json3-dev # compressed glTF meshes
+    libwebp-dev # EXT_texture_webp images
     libglfw3-dev libimgui-dev # wavefront view (WF_BUILD_VIEWER)
     python3-matplotlib # wavefront converge's charts (scripts/plot_convergence.py)
     python3-dev pybind11-dev python3-numpy # the Python module (python/, WF_BUILD_PYTHON)

@@ -1,8 +1,10 @@
-// Image bytes to RGBA8 texels with stb_image (Debian's libstb), every size checked first.
+// Image bytes to RGBA8 texels with stb_image (Debian's libstb; PNG, JPEG) and libwebp (WebP,
+// EXT_texture_webp), every size checked first.
 #include "scene/gltf/gltf_images.h"
 
 #include <stb_image.h>
 #include <tiny_gltf.h>
+#include <webp/decode.h>
 
 #include <climits>
 #include <cstring>
@@ -21,6 +23,45 @@ bool isJpeg(const unsigned char* b, size_t n) {
     return n >= 3 && b[0] == 0xff && b[1] == 0xd8 && b[2] == 0xff;
 }
 
+bool isWebp(const unsigned char* b, size_t n) {
+    return n >= 12 && std::memcmp(b, "RIFF", 4) == 0 && std::memcmp(b + 8, "WEBP", 4) == 0;
+}
+
+bool sizeAllowed(int width, int height, std::string& why) {
+    if (width <= 0 || height <= 0 || unsigned(width) > MAX_TEXTURE_SIDE ||
+        unsigned(height) > MAX_TEXTURE_SIDE || size_t(width) * height > MAX_TEXTURE_PIXELS) {
+        why = "image of " + std::to_string(width) + "x" + std::to_string(height) +
+              " pixels is over the limit of " + std::to_string(MAX_TEXTURE_SIDE) +
+              " per side and " + std::to_string(MAX_TEXTURE_PIXELS >> 20) + " Mpixels";
+        return false;
+    }
+    return true;
+}
+
+// EXT_texture_webp with Debian's libwebp: the size from the header first, then RGBA8.
+bool decodeWebp(const unsigned char* bytes, size_t size, TextureImage& out, std::string& why) {
+    int width = 0, height = 0;
+    if (!WebPGetInfo(bytes, size, &width, &height)) {
+        why = "unreadable WebP header";
+        return false;
+    }
+    if (!sizeAllowed(width, height, why))
+        return false;
+    int w = 0, h = 0;
+    uint8_t* pixels = WebPDecodeRGBA(bytes, size, &w, &h);
+    if (!pixels || w != width || h != height) {
+        why = pixels ? "WebP image changed size while decoding" : "the WebP data does not decode";
+        WebPFree(pixels);
+        return false;
+    }
+    out.width = uint32_t(w);
+    out.height = uint32_t(h);
+    out.rgba.resize(size_t(w) * size_t(h));
+    std::memcpy(out.rgba.data(), pixels, out.rgba.size() * 4);
+    WebPFree(pixels);
+    return true;
+}
+
 // A 2x2 magenta and black checker, stretched over the surface: a missing image is obvious in
 // the render instead of silently white.
 TextureImage fallbackChecker() {
@@ -35,8 +76,10 @@ TextureImage fallbackChecker() {
 } // namespace
 
 bool decodeImage(const unsigned char* bytes, size_t size, TextureImage& out, std::string& why) {
+    if (isWebp(bytes, size))
+        return decodeWebp(bytes, size, out, why);
     if (!isPng(bytes, size) && !isJpeg(bytes, size)) {
-        why = "not a PNG or JPEG image (only those are supported)";
+        why = "not a PNG, JPEG or WebP image (only those are supported)";
         return false;
     }
     if (size > size_t(INT_MAX)) {
@@ -48,13 +91,8 @@ bool decodeImage(const unsigned char* bytes, size_t size, TextureImage& out, std
         why = std::string("unreadable image header (") + stbi_failure_reason() + ")";
         return false;
     }
-    if (width <= 0 || height <= 0 || unsigned(width) > MAX_TEXTURE_SIDE ||
-        unsigned(height) > MAX_TEXTURE_SIDE || size_t(width) * height > MAX_TEXTURE_PIXELS) {
-        why = "image of " + std::to_string(width) + "x" + std::to_string(height) +
-              " pixels is over the limit of " + std::to_string(MAX_TEXTURE_SIDE) +
-              " per side and " + std::to_string(MAX_TEXTURE_PIXELS >> 20) + " Mpixels";
+    if (!sizeAllowed(width, height, why))
         return false;
-    }
     int w = 0, h = 0, n = 0;
     unsigned char* pixels = stbi_load_from_memory(bytes, int(size), &w, &h, &n, 4);
     if (!pixels || w != width || h != height) { // the header must not change its mind

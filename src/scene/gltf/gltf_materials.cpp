@@ -20,7 +20,7 @@ const std::set<std::string> SUPPORTED_EXTENSIONS = {
     "KHR_materials_specular", "KHR_materials_clearcoat", "KHR_materials_sheen",
     "KHR_materials_volume", "KHR_texture_transform", "KHR_lights_punctual",
     "KHR_mesh_quantization", "KHR_draco_mesh_compression", "EXT_meshopt_compression",
-    "KHR_meshopt_compression", "KHR_materials_unlit"};
+    "KHR_meshopt_compression", "KHR_materials_unlit", "EXT_texture_webp"};
 
 double number(const tinygltf::Value& object, const char* key, double fallback) {
     if (!object.IsObject() || !object.Has(key)) {
@@ -106,11 +106,22 @@ uint32_t MaterialConverter::textureRef(int texture, int texCoord,
     checkIndex(file_, texture, model_.textures.size(), "texture", slot);
     const tinygltf::Texture& t = model_.textures[texture];
     const std::string textureName = "texture " + std::to_string(texture);
-    if (t.source == -1) { // e.g. only an EXT_texture_webp source, which tinygltf drops
-        warn(file_, textureName + " has no PNG or JPEG source; " + slot + " is ignored");
+    // EXT_texture_webp names its WebP image in the extension; `source`, when present, is the
+    // fallback for viewers without WebP, which this one does not need.
+    int source = t.source;
+    const tinygltf::Value& webp = extension(t.extensions, "EXT_texture_webp");
+    if (webp.IsObject() && webp.Has("source")) {
+        const double index = number(webp, "source", -1.0);
+        if (!(index >= 0.0 && index < double(model_.images.size())))
+            fail(file_, textureName + ": EXT_texture_webp source must name one of the " +
+                            std::to_string(model_.images.size()) + " images");
+        source = int(index);
+    }
+    if (source == -1) {
+        warn(file_, textureName + " has no image source; " + slot + " is ignored");
         return WF_NO_TEXTURE;
     }
-    checkIndex(file_, t.source, model_.images.size(), "image", textureName);
+    checkIndex(file_, source, model_.images.size(), "image", textureName);
     TextureRef ref{};
     ref.uRow = glm::vec3(1, 0, 0);
     ref.vRow = glm::vec3(0, 1, 0);
@@ -146,9 +157,9 @@ uint32_t MaterialConverter::textureRef(int texture, int texCoord,
     }
     ref.flags |= texCoord == 1 ? WF_TEXTURE_TEXCOORD1 : 0u;
     (texCoord == 1 ? needs.uv1 : needs.uv0) = true;
-    tables_.imageUsed[t.source] = true;
+    tables_.imageUsed[source] = true;
     tables_.refs.push_back(ref);
-    tables_.refImage.push_back(uint32_t(t.source));
+    tables_.refImage.push_back(uint32_t(source));
     return uint32_t(tables_.refs.size() - 1);
 }
 
