@@ -5,7 +5,11 @@
 #if WF_RAY_CONES
 #include "surface/ray_cones.h"
 
-vec2 cameraCone() { return cameraCone(params.tanHalfFovY, params.height); }
+// An orthographic camera's cone keeps the pixel's width and does not spread.
+vec2 cameraCone() {
+    return params.orthoHalfHeight > 0.0 ? vec2(2.0 * params.orthoHalfHeight / float(params.height), 0.0)
+                                        : cameraCone(params.tanHalfFovY, params.height);
+}
 
 #endif
 #endif

@@ -112,7 +112,7 @@ struct RenderParams {
     float clampRadiance; // --clamp (0: off)
     float lensRadius;    // thin lens (WF_THIN_LENS): half the aperture
     float focusDistance; // along cameraForward, to the plane in focus
-    uint pad0;
+    float orthoHalfHeight; // an orthographic camera's half height (glTF ymag); 0: perspective
     uint pad1;
 };
 

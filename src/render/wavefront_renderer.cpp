@@ -124,6 +124,7 @@ void WavefrontRenderer::uploadParams() {
     params.clampRadiance = settings_.clampRadiance;
     params.lensRadius = 0.5f * camera.aperture;
     params.focusDistance = camera.focusDistance;
+    params.orthoHalfHeight = camera.orthoHalfHeight;
     pathBuffers_->params.upload(&params, sizeof params);
 }
 

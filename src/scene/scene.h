@@ -32,6 +32,9 @@ struct Camera {
     // extras "aperture" and "focusDistance", or --aperture and --focus-distance.
     float aperture = 0.0f;
     float focusDistance = 0.0f;
+    // Orthographic (glTF ymag): half the view's height in scene units, rays parallel to
+    // `forward` (the lens is not used); 0 is a perspective camera.
+    float orthoHalfHeight = 0.0f;
 };
 
 // An equirectangular environment map (longitude along x, +Y up), linear RGB radiance.

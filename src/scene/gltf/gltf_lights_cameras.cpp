@@ -20,12 +20,21 @@ void addNodeCamera(const tinygltf::Model& model, const std::string& file, int no
     checkIndex(file, node.camera, model.cameras.size(), "camera", nodeName);
     const tinygltf::Camera& camera = model.cameras[node.camera];
     const std::string name = "camera " + std::to_string(node.camera);
-    if (camera.type != "perspective") {
-        warn(file, name + " is " + camera.type + "; only perspective cameras are supported");
+    const bool orthographic = camera.type == "orthographic";
+    if (camera.type != "perspective" && !orthographic) {
+        warn(file, name + " is skipped: type '" + camera.type +
+                       "' is not perspective or orthographic");
         return;
     }
-    const double yfov = camera.perspective.yfov;
-    const double aspect = camera.perspective.aspectRatio;
+    const double yfov = orthographic ? 0.8 : camera.perspective.yfov;
+    const double aspect = orthographic ? camera.orthographic.xmag / camera.orthographic.ymag
+                                       : camera.perspective.aspectRatio;
+    if (orthographic && !(camera.orthographic.xmag > 0.0 && camera.orthographic.ymag > 0.0 &&
+                          camera.orthographic.ymag < 1e30 && std::isfinite(aspect))) {
+        warn(file, name + " is skipped: an orthographic camera's xmag and ymag must be "
+                          "positive and finite");
+        return;
+    }
     if (!(yfov > 0.0 && yfov < M_PI) || !(aspect >= 0.0 && std::isfinite(aspect))) {
         warn(file, name + " is skipped: yfov must lie in (0, pi) and aspectRatio be positive");
         return;
@@ -44,6 +53,7 @@ void addNodeCamera(const tinygltf::Model& model, const std::string& file, int no
     out.up = glm::vec3(up);
     out.yfov = float(yfov);
     out.aspect = float(aspect);
+    out.orthoHalfHeight = orthographic ? float(camera.orthographic.ymag) : 0.0f;
     // A thin lens from extras (glTF has none of its own); a bad value is ignored with a warning.
     for (const char* key : {"aperture", "focusDistance"}) {
         if (!camera.extras.IsObject() || !camera.extras.Has(key))
