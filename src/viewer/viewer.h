@@ -50,6 +50,8 @@ struct ViewerOptions {
     std::optional<std::string> camera;
     std::string environmentPath; // --env, replacing the scene's environment
     Instancing instancing = Instancing::Auto; // --instancing
+    double time = 0.0;                        // --time, --frame: the pose shown (static)
+    std::string animation;                    // --animation
     std::optional<int> device;
     bool overlay = true;
     bool quiet = false;
