@@ -173,7 +173,8 @@ void applyLensFlags(const ParsedArgs& parsed, Scene& scene) {
 } // namespace
 
 Scene loadSceneWithFlags(const ParsedArgs& parsed, const std::string& path,
-                         SceneSummary* summary, std::optional<double> time) {
+                         SceneSummary* summary, std::optional<double> time,
+                         bool printWarnings) {
     std::vector<std::string> warnings; // printed once the scene and flags are accepted
     GltfOptions options;
     options.time = time ? *time : sceneTimeFrom(parsed);
@@ -195,7 +196,8 @@ Scene loadSceneWithFlags(const ParsedArgs& parsed, const std::string& path,
         summary->loadSeconds = loadSeconds;
     }
     for (const std::string& line : warnings)
-        std::fprintf(stderr, "%s\n", line.c_str());
+        if (printWarnings)
+            std::fprintf(stderr, "%s\n", line.c_str());
     if (!scene.hasCamera)
         scene.camera = frameBounds(scene);
     applyLensFlags(parsed, scene);
