@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Renders each failure scene with each method at equal samples for the README's gallery:
-# docs/images/failures/<scene>_<method>.png. Usage: scenes/render_gallery.sh [build/wavefront]
+# docs/images/failures/<scene>_<method>.png, and three frames of the animated scene
+# (docs/images/animation/). Usage: scenes/render_gallery.sh [build/wavefront]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 wavefront=${1:-build/wavefront}
@@ -26,3 +27,10 @@ done
 render sphere_near_floor area --light-sampling nee --sphere-sampling area
 render sphere_near_floor solid-angle --light-sampling nee --sphere-sampling solid-angle
 echo "wrote $(ls "$out" | wc -l) images to $out"
+# The animated scene at three times (render --frames: frames 0, 12 and 24 at 24 fps).
+anim=docs/images/animation
+mkdir -p "$anim"
+"$wavefront" render scenes/animated_arm.gltf --frames 0..24:12 -o "$tmp/arm_%04d.exr" \
+    --width 300 --spp 64 --seed 1 --quiet
+for f in 0000 0012 0024; do mv "$tmp/arm_$f.png" "$anim/arm_$f.png"; done
+echo "wrote 3 frames to $anim"

@@ -5,11 +5,10 @@
 #if WF_RAY_CONES
 #include "surface/ray_cones.h"
 
+// An orthographic camera's cone keeps the pixel's width and does not spread.
 vec2 cameraCone() {
-    // An orthographic camera's cone keeps a pixel's width and does not spread.
-    return params.orthoHalfHeight > 0.0
-               ? vec2(2.0 * params.orthoHalfHeight / float(params.height), 0.0)
-               : cameraCone(params.tanHalfFovY, params.height);
+    return params.orthoHalfHeight > 0.0 ? vec2(2.0 * params.orthoHalfHeight / float(params.height), 0.0)
+                                        : cameraCone(params.tanHalfFovY, params.height);
 }
 
 #endif

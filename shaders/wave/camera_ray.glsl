@@ -9,7 +9,7 @@ void cameraRay(uint pixel, uint sampleIndex, out vec3 origin, out vec3 direction
     // Box filter: a uniform point inside the pixel; row 0 is the top of the image.
     vec2 jitter = sample2D(pixel, sampleIndex, WF_DIM_PIXEL, params.seed);
     vec2 ndc = (vec2(x, y) + jitter) / vec2(params.width, params.height) * 2.0 - 1.0;
-    if (params.orthoHalfHeight > 0.0) { // parallel rays from the view rectangle (no lens)
+    if (params.orthoHalfHeight > 0.0) { // orthographic: parallel rays from the view's plane
         origin = params.cameraPosition +
                  params.cameraRight * (ndc.x * params.orthoHalfHeight * params.aspect) -
                  params.cameraUp * (ndc.y * params.orthoHalfHeight);

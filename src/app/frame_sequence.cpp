@@ -130,7 +130,7 @@ int runFrameSequence(const ParsedArgs& parsed, const RenderRequest& request) {
         const uint32_t frame = frames[i];
         const double time = double(frame) / fps;
         const auto start = std::chrono::steady_clock::now();
-        Scene scene = loadSceneWithFlags(parsed, scenePath, nullptr, time);
+        Scene scene = loadSceneWithFlags(parsed, scenePath, nullptr, time, i == 0);
         RenderSettings settings = request.settings;
         applyImageSize(parsed, scene.camera,
                        {.width = kRenderDefaultWidth, .widthFollowsHeight = true}, settings);

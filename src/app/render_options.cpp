@@ -180,10 +180,12 @@ namespace {
 // focuses on the scene's centre (its bounding sphere's, along the view).
 void applyLensFlags(const ParsedArgs& parsed, Scene& scene) {
     Camera& camera = scene.camera;
-    camera.aperture = parsed.floatValue("--aperture", camera.aperture, 0.0f, 1e30f);
-    if (camera.orthoHalfHeight > 0.0f && camera.aperture > 0.0f) {
-        throw UsageError("--aperture: the chosen camera is orthographic, which has no lens");
+    if (camera.orthoHalfHeight > 0.0f) { // parallel rays: no lens, whatever extras say
+        if (parsed.floatValue("--aperture", 0.0f, 0.0f, 1e30f) > 0.0f)
+            throw UsageError("--aperture: the chosen camera is orthographic, which has no lens");
+        camera.aperture = 0.0f;
     }
+    camera.aperture = parsed.floatValue("--aperture", camera.aperture, 0.0f, 1e30f);
     camera.focusDistance =
         parsed.floatValue("--focus-distance", camera.focusDistance, 1e-30f, 1e30f);
     if (camera.aperture <= 0.0f || camera.focusDistance > 0.0f)
@@ -197,7 +199,8 @@ void applyLensFlags(const ParsedArgs& parsed, Scene& scene) {
 } // namespace
 
 Scene loadSceneWithFlags(const ParsedArgs& parsed, const std::string& path,
-                         SceneSummary* summary, std::optional<double> time) {
+                         SceneSummary* summary, std::optional<double> time,
+                         bool printWarnings) {
     std::vector<std::string> warnings; // printed once the scene and flags are accepted
     GltfOptions options;
     options.time = time ? *time : sceneTimeFrom(parsed);
@@ -222,7 +225,8 @@ Scene loadSceneWithFlags(const ParsedArgs& parsed, const std::string& path,
         scene.camera = frameBounds(scene);
     applyLensFlags(parsed, scene);
     for (const std::string& line : warnings)
-        std::fprintf(stderr, "%s\n", line.c_str());
+        if (printWarnings)
+            std::fprintf(stderr, "%s\n", line.c_str());
     return scene;
 }
 

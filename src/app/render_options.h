@@ -53,11 +53,12 @@ ContextOptions contextOptionsFrom(const ParsedArgs& parsed);
 // frames the scene when it has no camera and sets its lens from --aperture and
 // --focus-distance. `summary`, when given, describes the scene as loaded
 // (before framing) and how long loading took. The scene is posed at `time` seconds when given,
-// else at sceneTimeFrom(parsed), playing --animation's choice. Throws InputError for a bad
+// else at sceneTimeFrom(parsed), playing --animation's choice (a sequence prints the loader's
+// warnings for its first frame only: printWarnings). Throws InputError for a bad
 // file, camera or map.
 Scene loadSceneWithFlags(const ParsedArgs& parsed, const std::string& path,
                          SceneSummary* summary = nullptr,
-                         std::optional<double> time = std::nullopt);
+                         std::optional<double> time = std::nullopt, bool printWarnings = true);
 
 // How a command sizes its image from --width, --height and the camera's aspect ratio.
 struct ImageSizeRule {

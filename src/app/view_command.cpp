@@ -36,6 +36,9 @@ const CommandSpec& viewSpec() {
             {
                 envOption(),
                 instancingOption(),
+            },
+            animationOptions(),
+            {
                 {"--exposure", "", "EV", "display exposure in stops: radiance x 2^EV (default 0)"},
                 {"--tonemap", "", "MODE", "linear (clamp, as render's PNG) or aces (filmic) "
                                           "(default linear)"},
@@ -102,6 +105,8 @@ int runViewCommand(const std::vector<std::string>& args) {
     options.environmentPath = parsed.value("--env").value_or("");
     if (auto mode = parsed.value("--instancing"))
         options.instancing = parseInstancing(*mode);
+    options.time = sceneTimeFrom(parsed);
+    options.animation = parsed.value("--animation").value_or("");
     options.overlay = !parsed.has("--no-overlay");
     options.device = contextOptionsFrom(parsed).deviceIndex;
     options.rayTracing = traversalRequest(parsed);

@@ -108,7 +108,6 @@ void WavefrontRenderer::uploadParams() {
     RenderParams params{};
     params.cameraPosition = camera.position;
     params.tanHalfFovY = std::tan(0.5f * camera.yfov);
-    params.orthoHalfHeight = camera.orthoHalfHeight;
     params.cameraForward = camera.forward;
     params.aspect = float(settings_.width) / float(settings_.height);
     params.cameraUp = camera.up;
@@ -132,6 +131,7 @@ void WavefrontRenderer::uploadParams() {
     params.clampRadiance = settings_.clampRadiance;
     params.lensRadius = 0.5f * camera.aperture;
     params.focusDistance = camera.focusDistance;
+    params.orthoHalfHeight = camera.orthoHalfHeight;
     pathBuffers_->params.upload(&params, sizeof params);
 }
 

@@ -27,14 +27,14 @@ struct Camera {
     glm::vec3 up{0.0f, 1.0f, 0.0f};       // unit, orthogonal to forward
     float yfov = 0.8f;                    // vertical field of view, radians
     float aspect = 0.0f;                  // width / height from the file; 0 if it gives none
-    // > 0: an orthographic camera (glTF's ymag): parallel rays along `forward` from a view
-    // this many scene units above and below its centre; yfov is then unused.
-    float orthoHalfHeight = 0.0f;
     // Thin lens: the lens's diameter (0: a pinhole) and the distance along `forward` to the
     // plane in focus (0: chosen by loadSceneWithFlags), in scene units; from the camera's
     // extras "aperture" and "focusDistance", or --aperture and --focus-distance.
     float aperture = 0.0f;
     float focusDistance = 0.0f;
+    // Orthographic (glTF ymag): half the view's height in scene units, rays parallel to
+    // `forward` (the lens is not used); 0 is a perspective camera.
+    float orthoHalfHeight = 0.0f;
 };
 
 // An equirectangular environment map (longitude along x, +Y up), linear RGB radiance.

@@ -51,6 +51,8 @@ struct ViewerOptions {
     std::optional<std::string> camera;
     std::string environmentPath; // --env, replacing the scene's environment
     Instancing instancing = Instancing::Auto; // --instancing
+    double time = 0.0;                        // --time, --frame: the pose shown (static)
+    std::string animation;                    // --animation
     std::optional<int> device;
     RayTracingRequest rayTracing = RayTracingRequest::Off; // --traversal
     bool overlay = true;

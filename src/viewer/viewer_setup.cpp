@@ -18,7 +18,8 @@ uint32_t ViewSettings::effectiveSppLimit() const {
 
 ViewerScene loadViewerScene(const ViewerOptions& options) {
     std::vector<std::string> warnings;
-    Scene scene = loadGltf(options.scenePath, &warnings, GltfOptions{options.instancing});
+    Scene scene = loadGltf(options.scenePath, &warnings,
+                           GltfOptions{options.instancing, options.time, options.animation});
     if (!options.environmentPath.empty())
         scene.environment = loadEnvironmentExr(options.environmentPath);
     for (const std::string& line : warnings)

@@ -31,10 +31,10 @@ for file in texture_png.gltf texture_jpeg_in_bufferview.glb alpha_mask_all_textu
 done
 cameras=$corpus/valid/cameras_some_invalid.gltf
 check "--camera by name" 0 render "$cameras" -o "$work/cam.exr" --camera cam3
-check "--camera by index" 0 render "$cameras" -o "$work/cam.exr" --camera 2
-check "an orthographic camera" 0 render "$cameras" -o "$work/ortho.exr" --camera cam1
-check "--aperture with an orthographic camera" 2 render "$cameras" -o "$work/noortho.exr" \
-    --camera cam1 --aperture 0.1
+check "--camera by index" 0 render "$cameras" -o "$work/cam.exr" --camera 1
+check "an orthographic camera" 0 render "$corpus/valid/camera_orthographic.gltf" -o "$work/ortho.exr"
+check "--aperture with an orthographic camera" 2 render "$corpus/valid/camera_orthographic.gltf" \
+    -o "$work/noortho.exr" --aperture 0.1
 expect "--aperture with an orthographic camera: one line" one_line_error
 check "--camera unknown" 2 render "$cameras" -o "$work/nocam.exr" --camera side
 expect "--camera unknown: one line" one_line_error

@@ -453,7 +453,7 @@ case("valid/lights_punctual_and_sphere.gltf", "loads 1 lights=4 env=0", g)
 g = tri()
 g.doc["cameras"] = [{"type": "perspective", "name": "front",
                      "perspective": {"yfov": 0.7, "znear": 0.1}},
-                    {"type": "orthographic", "orthographic": {"xmag": 1, "ymag": 1, "znear": 0,
+                    {"type": "orthographic", "orthographic": {"xmag": 1, "ymag": 0, "znear": 0,
                                                               "zfar": 1}},
                     {"type": "perspective", "perspective": {"yfov": 0, "znear": 0.1}},
                     {"type": "perspective", "perspective": {"yfov": 1.2, "aspectRatio": 2,
@@ -461,7 +461,13 @@ g.doc["cameras"] = [{"type": "perspective", "name": "front",
 for i in range(4):
     g.node(camera=i, translation=[0, 0, 3 + i], name="cam%d" % i)
 g.doc["scenes"][0]["nodes"] = list(range(5))
-case("valid/cameras_some_invalid.gltf", "loads 1 cameras=3", g)
+case("valid/cameras_some_invalid.gltf", "loads 1 cameras=2", g)
+g = tri()
+g.doc["cameras"] = [{"type": "orthographic", "orthographic": {"xmag": 2, "ymag": 1, "znear": 0.1,
+                                                              "zfar": 100}}]
+g.node(camera=0, translation=[0, 0, 3])
+g.doc["scenes"][0]["nodes"] = [0, 1]
+case("valid/camera_orthographic.gltf", "loads 1 cameras=1", g)
 g = tri()
 g.doc["extensionsUsed"] = ["EXT_unknown_thing", "KHR_materials_iridescence"]
 case("valid/unknown_extensions_warn.gltf", "loads 1", g)

@@ -9,7 +9,6 @@
 
 #include "analytic_scenes.h"
 #include "gpu_test_util.h"
-#include "scene/gltf/gltf_materials.h"
 
 namespace wf::test {
 namespace {
@@ -85,54 +84,6 @@ TEST(ThinLens, InFocusStaysSharp) {
     EXPECT_LT(lens.meanR2, 1.2 * pinhole.meanR2 + 0.05)
         << "in focus " << lens.meanR2 << ", pinhole " << pinhole.meanR2;
     EXPECT_NEAR(lens.flux / pinhole.flux, 1.0, 0.03);
-}
-
-} // namespace
-} // namespace wf::test
-
-namespace wf::test {
-namespace {
-
-// An orthographic camera (glTF's xmag, ymag) sends parallel rays: an emissive square of half
-// size 0.5 seen through a view of half height 1 covers the middle half of the image at any
-// distance, where a perspective camera would shrink it with distance.
-std::vector<float> orthographicSquare(float depth) {
-    Scene scene;
-    Material glow = gltf::defaultMaterial();
-    glow.baseColor = glm::vec4(0, 0, 0, 1);
-    glow.emission = glm::vec3(1.0f, 0.5f, 0.25f);
-    scene.materials.push_back(glow);
-    const glm::vec3 a(-0.5f, -0.5f, -depth), b(0.5f, -0.5f, -depth), c(0.5f, 0.5f, -depth),
-        d(-0.5f, 0.5f, -depth);
-    scene.triangles.push_back({a, 0, b, WF_NO_EMITTER, c, 0});
-    scene.triangles.push_back({a, 0, c, WF_NO_EMITTER, d, 0});
-    scene.camera = Camera{};
-    scene.camera.position = {0.0f, 0.0f, 0.0f};
-    scene.camera.forward = {0.0f, 0.0f, -1.0f};
-    scene.camera.up = {0.0f, 1.0f, 0.0f};
-    scene.camera.orthoHalfHeight = 1.0f;
-    scene.camera.aspect = 1.0f;
-    scene.hasCamera = true;
-    RenderSettings settings;
-    settings.width = settings.height = 16;
-    settings.samplesPerPixel = 4;
-    settings.maxDepth = 1;
-    return renderScene(scene, settings).rgb;
-}
-
-TEST(Orthographic, ParallelRaysKeepSizesAtAnyDistance) {
-    for (float depth : {2.0f, 50.0f}) {
-        SCOPED_TRACE(depth);
-        const std::vector<float> rgb = orthographicSquare(depth);
-        for (uint32_t y = 0; y < 16; ++y) {
-            for (uint32_t x = 0; x < 16; ++x) {
-                const bool inside = x >= 4 && x < 12 && y >= 4 && y < 12; // pixel edges align
-                EXPECT_NEAR(rgb[3 * (y * 16 + x)], inside ? 1.0f : 0.0f, 1e-4f)
-                    << "pixel " << x << ", " << y;
-            }
-        }
-    }
-    EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
 }
 
 } // namespace

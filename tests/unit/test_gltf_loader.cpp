@@ -351,29 +351,30 @@ TEST(GltfLoader, NonTriangleModesAreSkipped) {
     EXPECT_TRUE(loadGltf(g.write(dir)).triangles.empty());
 }
 
-TEST(GltfLoader, PerspectiveAndOrthographicCameras) {
+TEST(GltfLoader, FirstCameraIsUsedOrthographicOrPerspective) {
     TempDir dir;
     MiniGltf g = oneTriangle();
-    g.cameras.push_back(R"({"type":"perspective","perspective":{"yfov":0.5,"znear":0.1}})");
-    g.cameras.push_back(R"({"type":"orthographic","orthographic":{"xmag":3,"ymag":1.5,
+    g.cameras.push_back(R"({"type":"orthographic","orthographic":{"xmag":1,"ymag":1,
                             "znear":0.1,"zfar":10}})");
-    // Node 1: turned 90 degrees about +Y, so it looks to -X. Node 2: orthographic.
-    g.nodes.push_back(R"({"camera":0,"translation":[1,2,3],
+    g.cameras.push_back(R"({"type":"perspective","perspective":{"yfov":0.5,"znear":0.1}})");
+    // Node 1: orthographic (the first, so the default). Node 2: turned 90 degrees about +Y, so
+    // it looks to -X.
+    g.nodes.push_back(R"({"camera":0})");
+    g.nodes.push_back(R"({"camera":1,"translation":[1,2,3],
                           "rotation":[0,0.70710678,0,0.70710678]})");
-    g.nodes.push_back(R"({"camera":1})");
     g.scenes = R"([{"nodes":[0,1,2]}])";
     Scene scene = loadGltf(g.write(dir));
     ASSERT_TRUE(scene.hasCamera);
     ASSERT_EQ(scene.cameras.size(), 2u);
-    expectNear(scene.camera.position, {1, 2, 3}); // the first is the default
-    expectNear(scene.camera.forward, {-1, 0, 0});
-    expectNear(scene.camera.up, {0, 1, 0});
-    EXPECT_FLOAT_EQ(scene.camera.yfov, 0.5f);
-    EXPECT_EQ(scene.camera.aspect, 0.0f);
-    EXPECT_EQ(scene.camera.orthoHalfHeight, 0.0f);
-    EXPECT_FLOAT_EQ(scene.cameras[1].orthoHalfHeight, 1.5f); // ymag
-    EXPECT_FLOAT_EQ(scene.cameras[1].aspect, 2.0f);          // xmag / ymag
-    expectNear(scene.cameras[1].forward, {0, 0, -1});
+    EXPECT_FLOAT_EQ(scene.camera.orthoHalfHeight, 1.0f);
+    EXPECT_FLOAT_EQ(scene.camera.aspect, 1.0f);
+    const Camera& perspective = scene.cameras[1];
+    expectNear(perspective.position, {1, 2, 3});
+    expectNear(perspective.forward, {-1, 0, 0});
+    expectNear(perspective.up, {0, 1, 0});
+    EXPECT_FLOAT_EQ(perspective.yfov, 0.5f);
+    EXPECT_EQ(perspective.aspect, 0.0f);
+    EXPECT_EQ(perspective.orthoHalfHeight, 0.0f);
 }
 
 TEST(GltfLoader, UnreadableOrWrongFilesAreInputErrors) {

@@ -23,19 +23,19 @@ void addNodeCamera(const tinygltf::Model& model, const std::string& file, int no
     const bool orthographic = camera.type == "orthographic";
     if (camera.type != "perspective" && !orthographic) {
         warn(file, name + " is skipped: type '" + camera.type +
-                       "' is neither perspective nor orthographic");
+                       "' is not perspective or orthographic");
         return;
     }
-    const double yfov = camera.perspective.yfov;
+    const double yfov = orthographic ? 0.8 : camera.perspective.yfov;
     const double aspect = orthographic ? camera.orthographic.xmag / camera.orthographic.ymag
                                        : camera.perspective.aspectRatio;
-    if (orthographic) {
-        const double xmag = camera.orthographic.xmag, ymag = camera.orthographic.ymag;
-        if (!(xmag > 0.0 && xmag < 1e30 && ymag > 0.0 && ymag < 1e30)) {
-            warn(file, name + " is skipped: orthographic xmag and ymag must be positive and finite");
-            return;
-        }
-    } else if (!(yfov > 0.0 && yfov < M_PI) || !(aspect >= 0.0 && std::isfinite(aspect))) {
+    if (orthographic && !(camera.orthographic.xmag > 0.0 && camera.orthographic.ymag > 0.0 &&
+                          camera.orthographic.ymag < 1e30 && std::isfinite(aspect))) {
+        warn(file, name + " is skipped: an orthographic camera's xmag and ymag must be "
+                          "positive and finite");
+        return;
+    }
+    if (!(yfov > 0.0 && yfov < M_PI) || !(aspect >= 0.0 && std::isfinite(aspect))) {
         warn(file, name + " is skipped: yfov must lie in (0, pi) and aspectRatio be positive");
         return;
     }
@@ -51,12 +51,9 @@ void addNodeCamera(const tinygltf::Model& model, const std::string& file, int no
     out.position = glm::vec3(world[3]);
     out.forward = glm::vec3(forward);
     out.up = glm::vec3(up);
+    out.yfov = float(yfov);
     out.aspect = float(aspect);
-    if (orthographic) {
-        out.orthoHalfHeight = float(camera.orthographic.ymag);
-    } else {
-        out.yfov = float(yfov);
-    }
+    out.orthoHalfHeight = orthographic ? float(camera.orthographic.ymag) : 0.0f;
     // A thin lens from extras (glTF has none of its own); a bad value is ignored with a warning.
     for (const char* key : {"aperture", "focusDistance"}) {
         if (!camera.extras.IsObject() || !camera.extras.Has(key))
@@ -68,10 +65,6 @@ void addNodeCamera(const tinygltf::Model& model, const std::string& file, int no
             continue;
         }
         (std::string(key) == "aperture" ? out.aperture : out.focusDistance) = float(value);
-    }
-    if (orthographic && out.aperture > 0.0f) {
-        warn(file, name + ": an orthographic camera has no lens; extras.aperture ignored");
-        out.aperture = 0.0f;
     }
     scene.cameras.push_back(out);
     scene.cameraNames.push_back(!camera.name.empty() ? camera.name

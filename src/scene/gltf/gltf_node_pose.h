@@ -1,0 +1,22 @@
+// A node's local transform at the time the animations were sampled.
+#pragma once
+#include <string>
+
+#include <glm/mat4x4.hpp>
+
+#include "scene/gltf/gltf_animation.h"
+
+namespace tinygltf {
+class Model;
+}
+
+namespace wf::gltf {
+
+// The node's matrix, or its translation x rotation (renormalised) x scale with the parts that
+// `animated` (may be null) sets replaced. Fails (one line naming the node) on a matrix that is
+// not 16 numbers, TRS of the wrong sizes, a rotation that is no usable quaternion or a
+// transform that is not finite.
+glm::dmat4 nodeLocalTransform(const tinygltf::Model& model, const std::string& file,
+                              int nodeIndex, const NodeAnimation* animated);
+
+} // namespace wf::gltf
