@@ -42,6 +42,30 @@ struct GuideDirNode {
     vec4 prob;
 };
 
+// What the passes need beside the trees (one storage buffer, WF_BINDING_GUIDE_PARAMS).
+struct GuideParams {
+    vec3 boxLo;         // the spatial tree's (cubic) box
+    float bsdfFraction; // share of BSDF sampling in the one-sample mixture
+    vec3 invBoxSize;
+    uint training;      // 1: keep training records and splat them into the building tree
+};
+
+// A guided vertex of a path, kept until the path ends (WF_GUIDE_RECORDS per path): the
+// radiance that reaches the camera after it, (path radiance at the end - radianceBefore) x
+// scale, is the incident radiance along `direction` divided by the mixture pdf that chose it,
+// which is what the building quadtree sums.
+struct GuideRecord {
+    vec3 position;
+    uint pending;        // 1: radianceBefore not yet taken (the next shade pass takes it)
+    vec3 direction;
+    float pad0;
+    vec3 scale;          // per channel 1 / (throughput after the bounce x mixture pdf); 0 if none
+    float pad1;
+    vec3 radianceBefore; // the path's radiance once this vertex's own light (NEE) was in
+    float pad2;
+};
+#define WF_GUIDE_RECORDS 4u
+
 #define WF_GUIDE_SPATIAL_NODE_TEXELS 1u
 #define WF_GUIDE_DIR_NODE_TEXELS 2u
 
@@ -50,6 +74,12 @@ struct GuideDirNode {
 static_assert(sizeof(wf::gpu_types::GuideSpatialNode) == 16 * WF_GUIDE_SPATIAL_NODE_TEXELS);
 static_assert(sizeof(wf::gpu_types::GuideDirNode) == 16 * WF_GUIDE_DIR_NODE_TEXELS);
 static_assert(offsetof(wf::gpu_types::GuideDirNode, prob) == 16);
+static_assert(sizeof(wf::gpu_types::GuideParams) == 32);
+static_assert(offsetof(wf::gpu_types::GuideParams, invBoxSize) == 16);
+static_assert(sizeof(wf::gpu_types::GuideRecord) == 64);
+static_assert(offsetof(wf::gpu_types::GuideRecord, direction) == 16);
+static_assert(offsetof(wf::gpu_types::GuideRecord, scale) == 32);
+static_assert(offsetof(wf::gpu_types::GuideRecord, radianceBefore) == 48);
 #endif
 
 #endif

@@ -72,6 +72,15 @@ namespace wf::gpu_types {
 // 71-98: pages 1-7 of the per-triangle attributes (texture_types.h)
 #define WF_BINDING_KIND_QUEUES 99      // WF_SHADE_BINS: per bin, pathCapacity queue slots
 #define WF_BINDING_KIND_QUEUE_TEXELS 100 // the same, read as R32UI texels
+// WF_GUIDING (shaders/guiding/guide_bindings.glsl): the path guide's SD-tree and records.
+#define WF_BINDING_GUIDE_PARAMS 101   // GuideParams
+#define WF_BINDING_GUIDE_SPATIAL 102  // GuideSpatialNode[]
+#define WF_BINDING_GUIDE_SAMPLING 103 // GuideDirNode[]: the frozen quadtrees
+#define WF_BINDING_GUIDE_BUILDING 104 // GuideDirNode[]: the quadtrees being built
+#define WF_BINDING_GUIDE_SPLATS 105   // uint[]: 64-bit fixed-point sums, 2 per building cell
+#define WF_BINDING_GUIDE_LEAF_SAMPLES 106 // uint[]: splats per spatial leaf
+#define WF_BINDING_GUIDE_RECORDS 107  // GuideRecord[WF_GUIDE_RECORDS per path]
+#define WF_BINDING_GUIDE_COUNTS 108   // uint per path: records kept
 #define WF_BINDING_LIGHTS 17
 #define WF_BINDING_ENVIRONMENT 18       // vec4 radiance per texel
 #define WF_BINDING_ENVIRONMENT_ALIAS 19 // Emitter-shaped alias table over texels

@@ -50,6 +50,7 @@ struct ShaderVariant {
     bool thinLens = false;            // WF_THIN_LENS: the camera has an aperture
     bool instances = false;           // WF_HAS_INSTANCES: a two-level BVH over instances
     bool rayCones = false;            // WF_RAY_CONES: texture LOD by ray cones (textured scenes)
+    bool guiding = false;             // WF_GUIDING: the path guide's mixture and training
     TablePages trianglePages;         // WF_TRIANGLE_PAGES, _SHIFT: set by the renderer
     TablePages bvhPages;              // WF_BVH_PAGES, _SHIFT: set by the renderer
     TablePages instancePages;         // WF_INSTANCE_PAGES, _SHIFT: set by the renderer
