@@ -29,6 +29,7 @@ class Buffer;
 class Context;
 class DescriptorTable;
 class WaveRecorder;
+class PathGuide;
 struct PreparedScene;
 class SceneBuffers;
 struct PathBuffers;
@@ -93,6 +94,9 @@ public:
 
 private:
     void uploadParams();
+    void renderGuided(const std::function<void(const WaveProgress&)>& onWave,
+                      const std::atomic<bool>* stop);
+    void clearFilm();
     uint32_t advance(uint32_t maxSamples);
     // Samples [firstSample, firstSample + samples) of sppOffset on, of pixels [pixelBase,
     // pixelBase + pixels) of the image or (pixelList) of the list.
@@ -118,6 +122,7 @@ private:
     std::unique_ptr<DescriptorTable> table_;
     std::unique_ptr<WaveRecorder> waves_; // the passes, recorded wave by wave
     std::unique_ptr<Buffer> samplerTable_; // only for samplers that read it
+    std::unique_ptr<PathGuide> guide_;     // --guiding only
 };
 
 // The camera looking at the scene: the file's, with the image's aspect.

@@ -59,11 +59,13 @@ std::uint32_t DirTree::depth() const {
     return deepest;
 }
 
-DirTree DirTree::refined(double threshold, std::uint32_t maxDepth) const {
+DirTree DirTree::refined(double threshold, std::uint32_t maxDepth, bool keepSums) const {
     DirTree out;
     const double whole = total();
     if (!(whole > 0.0))
         return out; // nothing learnt: one uniform node
+    if (keepSums)
+        out.nodes[0].sum = nodes[0].sum;
     // Each entry: a node of `out`, the source sums for its quadrants, the source node (or -1
     // when the sums were spread evenly from a source leaf quadrant), and its depth.
     struct Item {
@@ -82,6 +84,13 @@ DirTree DirTree::refined(double threshold, std::uint32_t maxDepth) const {
             std::uint32_t created = std::uint32_t(out.nodes.size());
             out.nodes.emplace_back();
             out.nodes[item.outNode].child[q] = created;
+            if (keepSums) {
+                double quarter = 0.25 * item.sums[q];
+                std::int64_t c = item.source >= 0 ? nodes[size_t(item.source)].child[q] : 0;
+                out.nodes[created].sum = c != 0 ? nodes[size_t(c)].sum
+                                                : std::array<double, 4>{quarter, quarter,
+                                                                        quarter, quarter};
+            }
             std::int64_t child = item.source >= 0 ? nodes[size_t(item.source)].child[q] : 0;
             if (child != 0) {
                 stack.push_back({created, nodes[size_t(child)].sum, child, item.depth + 1});
@@ -141,10 +150,11 @@ void SDTree::addSplats(const FlatGuide& flat, const std::vector<std::uint32_t>& 
     }
 }
 
-void SDTree::split(std::uint32_t node, std::uint32_t depth, double threshold) {
+void SDTree::split(std::uint32_t node, std::uint32_t depth, double threshold,
+                   std::size_t maxLeaves) {
     if (nodes_[node].isLeaf) {
         if (!(leaves_[nodes_[node].leaf].samples > threshold) ||
-            depth + 1 >= WF_GUIDE_MAX_SPATIAL_DEPTH)
+            depth + 1 >= WF_GUIDE_MAX_SPATIAL_DEPTH || leaves_.size() >= maxLeaves)
             return;
         std::uint32_t leafIndex = nodes_[node].leaf;
         leaves_[leafIndex].samples *= 0.5;
@@ -160,19 +170,26 @@ void SDTree::split(std::uint32_t node, std::uint32_t depth, double threshold) {
         nodes_[node].child = first;
     }
     std::uint32_t child = nodes_[node].child;
-    split(child, depth + 1, threshold);
-    split(child + 1, depth + 1, threshold);
+    split(child, depth + 1, threshold, maxLeaves);
+    split(child + 1, depth + 1, threshold, maxLeaves);
 }
 
 void SDTree::endIteration(double splitThreshold, double energyThreshold,
-                          std::uint32_t maxDirDepth) {
-    split(0, 0, splitThreshold);
+                          std::uint32_t maxDirDepth, std::size_t maxLeaves) {
+    split(0, 0, splitThreshold, maxLeaves);
     for (SpatialLeaf& l : leaves_) {
         l.building.propagate();
         DirTree next = l.building.refined(energyThreshold, maxDirDepth);
         l.sampling = std::move(l.building);
         l.building = std::move(next);
         l.samples = 0.0;
+    }
+}
+
+void SDTree::coarsen(double energyThreshold, std::uint32_t maxDirDepth) {
+    for (SpatialLeaf& l : leaves_) {
+        l.sampling = l.sampling.refined(energyThreshold, maxDirDepth, true);
+        l.building = l.sampling.refined(energyThreshold, maxDirDepth);
     }
 }
 

@@ -37,8 +37,9 @@ struct DirTree {
     // A tree whose quadrants holding more than `threshold` of the total energy are subdivided
     // (down to maxDepth; a quadrant that was a leaf spreads its energy evenly over its four
     // parts to decide further), the rest merged into leaves; all sums zero. Propagated sums
-    // expected.
-    DirTree refined(double threshold, std::uint32_t maxDepth) const;
+    // expected. keepSums: the new nodes keep their source's sums instead (a coarser copy of
+    // a frozen tree, when the trees outgrow their buffers).
+    DirTree refined(double threshold, std::uint32_t maxDepth, bool keepSums = false) const;
 };
 
 struct SpatialLeaf {
@@ -91,7 +92,12 @@ public:
     // leaf propagates the building quadtree, freezes it for sampling and starts a refined,
     // empty one (energyThreshold: the share of a leaf's energy past which a quadrant
     // subdivides).
-    void endIteration(double splitThreshold, double energyThreshold, std::uint32_t maxDirDepth);
+    // No split makes more than maxLeaves leaves.
+    void endIteration(double splitThreshold, double energyThreshold, std::uint32_t maxDirDepth,
+                      std::size_t maxLeaves = std::size_t(1) << 14);
+    // Coarsens every leaf's quadtrees (frozen ones keeping their sums) with a higher energy
+    // threshold, for trees that outgrew their buffers.
+    void coarsen(double energyThreshold, std::uint32_t maxDirDepth);
 
     FlatGuide flatten() const;
     SDTreeStats stats() const;
@@ -102,7 +108,7 @@ private:
         std::uint32_t leaf = 0;  // leaf: index into leaves_
         bool isLeaf = true;
     };
-    void split(std::uint32_t node, std::uint32_t depth, double threshold);
+    void split(std::uint32_t node, std::uint32_t depth, double threshold, std::size_t maxLeaves);
 
     glm::vec3 lo_, size_;
     std::vector<Node> nodes_;
