@@ -73,6 +73,9 @@ struct RenderSettings {
     // Sample indices continue across iterations, so the image's samples never trained it.
     bool guiding = false;
     float guideBsdfFraction = 0.5f; // the BSDF's share of the one-sample mixture
+    // At most this many training iterations (tests set 0 to render with a guide they froze
+    // themselves through WavefrontRenderer::guide()).
+    uint32_t guideMaxIterations = 0xffffffffu;
 };
 
 } // namespace wf

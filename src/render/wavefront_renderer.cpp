@@ -299,7 +299,9 @@ void WavefrontRenderer::renderGuided(const std::function<void(const WaveProgress
     guide_->setTraining(true);
     // Train while the iteration after this one still gets at least half the budget.
     for (uint32_t spp = 1, iteration = 0;
-         2ull * (samplesDone_ + spp) <= budget && !(stop && stop->load()); spp *= 2, ++iteration) {
+         iteration < settings_.guideMaxIterations && 2ull * (samplesDone_ + spp) <= budget &&
+         !(stop && stop->load());
+         spp *= 2, ++iteration) {
         clearFilm();
         const auto start = std::chrono::steady_clock::now();
         renderSamples(spp);

@@ -88,6 +88,7 @@ public:
     // Starts the longest-submit record afresh (the bench, after its warm-up frames).
     void resetLongestSubmit() { stats_.longestSubmitSeconds = 0.0; }
     uint32_t pathCapacity() const { return pathCapacity_; } // most paths in one wave
+    PathGuide* guide() { return guide_.get(); }              // --guiding only, else null
     uint32_t pathsPerWave() const { return wavePaths_; }    // the current target
     std::vector<std::pair<std::string, uint64_t>> memoryReport() const;
     std::shared_ptr<const SceneBuffers> sceneBuffers() const { return sceneBuffers_; }

@@ -67,6 +67,12 @@ void PathGuide::reset() {
     upload();
 }
 
+void PathGuide::setTree(guiding::SDTree tree) {
+    tree_ = std::move(tree);
+    flat_ = tree_.flatten();
+    upload();
+}
+
 void PathGuide::setTraining(bool training) {
     training_ = training;
     GuideParams p{};

@@ -34,6 +34,9 @@ public:
     void appendMemoryReport(std::vector<std::pair<std::string, uint64_t>>& report) const;
     void setTraining(bool training);
     void reset(); // forget what was learnt: one uniform quadtree over the whole box
+    // Samples from `tree` from now on (tests: a deliberately wrong guide). Its box must be
+    // this guide's.
+    void setTree(guiding::SDTree tree);
     // Ends training iteration `iteration` (0-based) of an image of `pixels` pixels: reads the
     // splats back, rebuilds the trees and uploads them. Returns the rebuild's seconds.
     double endIteration(uint32_t iteration, uint64_t pixels);
