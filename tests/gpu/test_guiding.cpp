@@ -70,6 +70,20 @@ TEST(Guiding, SameSeedSameImage) {
     EXPECT_GT(a.stats.guideIterations.size(), 0u);
 }
 
+// The megakernel baseline guides with the same GLSL functions: the same training, the same
+// guide, the same samples as the wavefront.
+TEST(Guiding, MegakernelTracesTheSameGuidedImage) {
+    Scene scene = loadScene("glass_caustic");
+    RenderSettings settings = settingsFor(16, 5, true);
+    RenderResult wavefront = renderScene(scene, settings);
+    settings.megakernel = true;
+    RenderResult megakernel = renderScene(scene, settings);
+    MeanAndError a = imageMean(wavefront.rgb), b = imageMean(megakernel.rgb);
+    EXPECT_NEAR(a.mean, b.mean, 1e-4 * a.mean);
+    EXPECT_EQ(megakernel.stats.nonFiniteSamples, 0u);
+    EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
+}
+
 // A frozen guide that sends all of its share straight down (-y, the Cornell box's floor),
 // whatever the light: the BSDF's share still covers every direction the BSDF does.
 TEST(Guiding, WrongFrozenGuideStaysUnbiased) {
