@@ -12,6 +12,10 @@
 layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "wave/bindings.glsl"
 #include "wave/wave_paths.glsl"
+#if WF_GUIDING
+#include "guiding/guide_bindings.glsl"
+#include "guiding/guide_path.glsl"
+#endif
 
 layout(push_constant) uniform Push { PassConstants pass; };
 
@@ -39,6 +43,9 @@ void main() {
         vec3 value = radianceAt(path).rgb;
         if (isFiniteBits(value)) {
             sum.rgb += value;
+#if WF_GUIDING
+            guideSplatPath(path, value); // the path is done: credit its guided vertices
+#endif
 #if WF_SECOND_MOMENT
             squares.rgb += value * value;
             squares.a = max(squares.a, max(value.r, max(value.g, value.b)));

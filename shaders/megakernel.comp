@@ -14,6 +14,10 @@ layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "bsdf/bsdf.h"
 #include "surface/surface.glsl"
 #include "lights/lights.glsl"
+#if WF_GUIDING
+#include "guiding/guide_bindings.glsl"
+#include "guiding/guide_path.glsl"
+#endif
 #include "wave/path_vertex.glsl"
 #include "traversal/scene_intersect.glsl"
 #include "wave/wave_paths.glsl"
@@ -52,11 +56,18 @@ void main() {
         v.cone = cameraCone();
 #endif
         vec3 total = vec3(0.0);
+#if WF_GUIDING
+        v.path = path;
+        guideStartPath(path);
+#endif
         // Same order of additions as shade then shadow, so sums round alike.
         for (uint depth = 0u; depth < params.maxDepth; ++depth) {
             lastDepth = depth;
             v.depth = depth;
             v.hit = intersectClosest(v.origin, v.direction);
+#if WF_GUIDING
+            guideTakeRadianceBefore(path, total);
+#endif
             shadePathVertex(v);
             total += v.radiance;
 #if WF_HAS_EMITTERS

@@ -12,6 +12,10 @@ layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "wave/wave_paths.glsl"
 #include "wave/camera_ray.glsl"
 #include "surface/ray_cones.glsl"
+#if WF_GUIDING
+#include "guiding/guide_bindings.glsl"
+#include "guiding/guide_path.glsl"
+#endif
 
 layout(push_constant) uniform Push { PassConstants pass; };
 
@@ -26,6 +30,9 @@ void main() {
     throughput[path] = wfPack(vec4(1.0));
     radiance[path] = wfPack(vec4(0.0));
     rayQueues[path] = path;
+#if WF_GUIDING
+    guideStartPath(path);
+#endif
 #if WF_RAY_CONES
     rayCone[path] = cameraCone();
 #endif

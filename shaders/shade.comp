@@ -19,6 +19,10 @@ layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "bsdf/bsdf.h"
 #include "surface/surface.glsl"
 #include "lights/lights.glsl"
+#if WF_GUIDING
+#include "guiding/guide_bindings.glsl"
+#include "guiding/guide_path.glsl"
+#endif
 #include "wave/path_vertex.glsl"
 #include "wave/wave_paths.glsl"
 
@@ -46,6 +50,10 @@ void main() {
         v.pixel = wavePathPixel(pass, path);
         v.sampleIndex = wavePathSample(pass, path);
         v.depth = pass.depth;
+#if WF_GUIDING
+        v.path = path;
+        guideTakeRadianceBefore(path, radianceAt(path).rgb);
+#endif
         v.hit = hitAt(index);
         vec4 origin = rayOriginAt(path);
         v.origin = origin.xyz;

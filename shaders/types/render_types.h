@@ -73,6 +73,15 @@ namespace wf::gpu_types {
 #define WF_BINDING_KIND_QUEUES 99      // WF_SHADE_BINS: per bin, pathCapacity queue slots
 #define WF_BINDING_KIND_QUEUE_TEXELS 100 // the same, read as R32UI texels
 #define WF_BINDING_TOP_LEVEL 101 // WF_RAY_TRACING: the scene's top-level acceleration structure
+// WF_GUIDING (shaders/guiding/guide_bindings.glsl): the path guide's SD-tree and records.
+#define WF_BINDING_GUIDE_PARAMS 120   // GuideParams
+#define WF_BINDING_GUIDE_SPATIAL 121  // GuideSpatialNode[]
+#define WF_BINDING_GUIDE_SAMPLING 122 // GuideDirNode[]: the frozen quadtrees
+#define WF_BINDING_GUIDE_BUILDING 123 // GuideDirNode[]: the quadtrees being built
+#define WF_BINDING_GUIDE_SPLATS 124   // uint[]: 64-bit fixed-point sums, 2 per building cell
+#define WF_BINDING_GUIDE_LEAF_SAMPLES 125 // uint[]: splats per spatial leaf
+#define WF_BINDING_GUIDE_RECORDS 126  // GuideRecord[WF_GUIDE_RECORDS per path]
+#define WF_BINDING_GUIDE_COUNTS 127   // uint per path: records kept
 #define WF_BINDING_LIGHTS 17
 #define WF_BINDING_ENVIRONMENT 18       // vec4 radiance per texel
 #define WF_BINDING_ENVIRONMENT_ALIAS 19 // Emitter-shaped alias table over texels

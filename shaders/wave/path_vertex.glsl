@@ -4,6 +4,10 @@
 // trace the same paths. Includers provide bindings, geometry, rng, sampling, light_sampling,
 // bsdf, lights and surface.
 // Estimator: WF_LIGHT_SAMPLING 0 = BSDF sampling only, 1 = NEE only, 2 = MIS (power heuristic).
+// WF_GUIDING (includers add guiding/guide_bindings.glsl and guide_path.glsl first): at vertices
+// with a non-delta BSDF, directions come from a one-sample mixture of the BSDF's sampling
+// (share guide.bsdfFraction) and the path guide's quadtree, and the mixture's pdf is what MIS
+// weighs against next-event estimation on both sides.
 #include "surface/ray_cones.glsl"
 // Scenes with a clear coat or sheen shade with bsdf_layers.h's layered BSDF instead of bsdf.h's,
 // except in the shade passes of kinds that hold no layered material (WF_BSDF_NO_LAYERS).
@@ -22,6 +26,9 @@ struct PathVertex {
     uint pixel;
     uint sampleIndex;
     uint depth;        // bounce index: this ray is path segment depth + 1
+#if WF_GUIDING
+    uint path;         // where its training records live
+#endif
     uvec4 hit;         // from intersectClosest
     // In and out: the ray, and after shading the continuation ray.
     vec3 origin;
@@ -199,6 +206,15 @@ void shadePathVertex(inout PathVertex v) {
 #else
     float receiver = 0.0;
 #endif
+#if WF_GUIDING
+#if WF_BSDF_LAYERS
+    bool guideHere = layeredHasNonDelta(bsdf, layers);
+#else
+    bool guideHere = bsdfHasNonDelta(bsdf);
+#endif
+    uint guideRoot = guideHere ? guideSpatial[guideLeafNode(surface.p)].samplingRoot : 0u;
+    float guideFraction = guide.bsdfFraction;
+#endif
 
 #if WF_HAS_EMITTERS && WF_LIGHT_SAMPLING != 0
     // Next-event estimation: the connection adds one more path segment.
@@ -221,7 +237,19 @@ void shadePathVertex(inout PathVertex v) {
             vec3 f = bsdfEval(bsdf, woLocal, wiLocal);
 #endif
             float weight = 1.0;
-#if WF_LIGHT_SAMPLING == 2
+#if WF_LIGHT_SAMPLING == 2 && WF_GUIDING
+            if (!light.isDelta) {
+#if WF_BSDF_LAYERS
+                float directionPdf = layeredPdf(bsdf, layers, woLocal, wiLocal);
+#else
+                float directionPdf = bsdfPdf(bsdf, woLocal, wiLocal);
+#endif
+                if (guideHere)
+                    directionPdf = guideMixturePdf(
+                        directionPdf, guidePdf(guideRoot, light.direction), guideFraction);
+                weight = powerHeuristic(light.pdf, directionPdf);
+            }
+#elif WF_LIGHT_SAMPLING == 2
 #if WF_BSDF_LAYERS
             if (!light.isDelta)
                 weight = powerHeuristic(light.pdf, layeredPdf(bsdf, layers, woLocal, wiLocal));
@@ -244,6 +272,48 @@ void shadePathVertex(inout PathVertex v) {
     if (v.depth + 1u >= params.maxDepth)
         return;
     BsdfSample s;
+#if WF_GUIDING
+    // The mixture's choice reuses the lobe dimension (rescaled), so the sample dimensions per
+    // bounce stay those of the unguided renderer.
+    float uLobe = vertexSample1D(v, WF_DIM_BSDF_LOBE);
+    vec2 uDirection = vertexSample2D(v, WF_DIM_BSDF);
+    bool fromGuide = guideHere && uLobe >= guideFraction;
+    if (guideHere && !fromGuide)
+        uLobe = min(uLobe / guideFraction, 0.99999994);
+    if (fromGuide) {
+        float unusedPdf;
+        vec3 w = guideSample(guideRoot, uDirection, unusedPdf);
+        s.wi = vec3(dot(w, tangent), dot(w, bitangent), dot(w, n));
+        s.isDelta = false;
+        s.eta = 1.0; // only Russian roulette reads it: any value stays unbiased
+    } else {
+#if WF_BSDF_LAYERS
+        if (!layeredSample(bsdf, layers, woLocal, uLobe, uDirection, s))
+            return;
+#else
+        if (!bsdfSample(bsdf, woLocal, uLobe, uDirection, s))
+            return;
+#endif
+    }
+    vec3 wi = normalize(tangent * s.wi.x + bitangent * s.wi.y + n * s.wi.z);
+    if (guideHere) {
+        if (s.isDelta) {
+            s.weight /= guideFraction; // a Dirac lobe only the BSDF's share can choose
+        } else {
+            // Either branch: f |cos| over the mixture's pdf, the guide's evaluated (not the
+            // sampled value), so that both sides of MIS see one function of the direction.
+#if WF_BSDF_LAYERS
+            vec3 f = layeredEval(bsdf, layers, woLocal, s.wi);
+            float directionPdf = layeredPdf(bsdf, layers, woLocal, s.wi);
+#else
+            vec3 f = bsdfEval(bsdf, woLocal, s.wi);
+            float directionPdf = bsdfPdf(bsdf, woLocal, s.wi);
+#endif
+            s.pdf = guideMixturePdf(directionPdf, guidePdf(guideRoot, wi), guideFraction);
+            s.weight = s.pdf > 0.0 ? f * (abs(s.wi.z) / s.pdf) : vec3(0.0);
+        }
+    }
+#else
 #if WF_BSDF_LAYERS
     if (!layeredSample(bsdf, layers, woLocal, vertexSample1D(v, WF_DIM_BSDF_LOBE),
                        vertexSample2D(v, WF_DIM_BSDF), s))
@@ -254,6 +324,7 @@ void shadePathVertex(inout PathVertex v) {
         return;
 #endif
     vec3 wi = normalize(tangent * s.wi.x + bitangent * s.wi.y + n * s.wi.z);
+#endif
     vec3 beta = v.beta * s.weight;
     float etaScale = v.etaScale * s.eta * s.eta;
     if (v.depth >= params.rrDepth) {
@@ -271,6 +342,10 @@ void shadePathVertex(inout PathVertex v) {
         v.direction = wi;
         v.previousPdf = s.isDelta ? 0.0 : s.pdf; // a Dirac bounce: emission counts in full
         v.previousNormal = receiver;
+#if WF_GUIDING
+        if (guideHere && !s.isDelta)
+            guideKeepRecord(v.path, surface.p, wi, s.pdf, beta);
+#endif
         v.beta = beta;
         v.etaScale = etaScale;
 #if WF_RAY_CONES

@@ -98,6 +98,8 @@ int runBenchCommand(const std::vector<std::string>& args) {
     const uint32_t spp = parsed.uintValue("--spp", 1, 1, 1u << 16);
     RenderSettings settings;
     applyRenderFlags(parsed, kDefaultMaxDepth, settings);
+    if (settings.guiding)
+        throw UsageError("--guiding on: only `render` guides yet (bench does not)");
     settings.submitBudgetSeconds = parsed.uintValue("--budget-ms", 250, 0, 600000) * 1e-3;
     settings.maxPathsPerWave = parsed.uintValue("--wave-paths", 1u << 20, 1024, 1u << 26);
     if (uint64_t(frames + warmup) * spp > (1u << 24))

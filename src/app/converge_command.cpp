@@ -167,6 +167,8 @@ int runConvergeCommand(const std::vector<std::string>& args) {
         size.height = uint32_t(given.height);
     applyImageSize(parsed, scene.camera, size, base);
     applyRenderFlags(parsed, kDefaultMaxDepth, base); // --max-depth and --rr-depth here
+    if (base.guiding)
+        throw UsageError("--guiding on: only `render` guides yet (converge does not)");
     if (given.width && (uint32_t(given.width) != base.width ||
                         uint32_t(given.height) != base.height))
         throw InputError("reference " + *parsed.value("--reference") + " is " +

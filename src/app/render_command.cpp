@@ -110,6 +110,36 @@ int validationExitCode(const Context& context) {
     return 1;
 }
 
+// --guiding: one --verbose line per training iteration, and the JSON's "guiding" object.
+void reportGuiding(bool verbose, const RenderStats& stats, StatsContext& statsContext) {
+    std::string iterations;
+    double training = 0.0;
+    for (size_t i = 0; i < stats.guideIterations.size(); ++i) {
+        const auto& it = stats.guideIterations[i];
+        training += it.seconds + it.rebuildSeconds;
+        if (verbose)
+            std::fprintf(stderr, "wavefront: guiding iteration %zu: %u spp, %llu spatial leaves, "
+                                 "%llu directional nodes, %.3f s render + %.3f s rebuild\n",
+                         i, it.samplesPerPixel, static_cast<unsigned long long>(it.spatialLeaves),
+                         static_cast<unsigned long long>(it.directionalNodes), it.seconds,
+                         it.rebuildSeconds);
+        iterations += std::string(i ? ", " : "") + "{\"spp\": " +
+                      std::to_string(it.samplesPerPixel) + ", \"spatialLeaves\": " +
+                      std::to_string(it.spatialLeaves) + ", \"directionalNodes\": " +
+                      std::to_string(it.directionalNodes) + ", \"seconds\": " +
+                      jsonNumber(it.seconds) + ", \"rebuildSeconds\": " +
+                      jsonNumber(it.rebuildSeconds) + "}";
+    }
+    if (verbose)
+        std::fprintf(stderr, "wavefront: guiding: %.3f s training, the image from the last %u spp\n",
+                     training, stats.guideFinalSamples);
+    statsContext.extraFields.push_back(
+        {"guiding", "{\"iterations\": [" + iterations + "], \"trainingSeconds\": " +
+                        jsonNumber(training) + ", \"imageSpp\": " +
+                        std::to_string(stats.guideFinalSamples) + ", \"memoryBytes\": " +
+                        std::to_string(stats.guideBytes) + "}"});
+}
+
 struct OutputRequest {
     std::string exr;
     std::optional<std::string> json;
@@ -254,6 +284,9 @@ int runRenderCommand(const std::vector<std::string>& args) {
                              " samples per pixel, --spp asks for " +
                              std::to_string(settings.samplesPerPixel));
     }
+    if (settings.guiding && (resumed || parsed.has("--checkpoint")))
+        throw UsageError("--guiding does not combine with --checkpoint or --resume yet (the "
+                         "guide is not saved)");
     const uint32_t resumedSpp = resumed ? resumed->spp : 0u;
     RenderSettings rest = settings;
     rest.sppOffset += resumedSpp;
@@ -337,7 +370,14 @@ int runRenderCommand(const std::vector<std::string>& args) {
     finished.sppOffset = settings.sppOffset;
     const std::vector<float> counts(size_t(settings.width) * settings.height,
                                     float(finished.spp));
-    writeRenderPart(*output, finished, {}, true,
+    std::vector<std::pair<std::string, std::string>> guideAttributes;
+    if (settings.guiding) {
+        guideAttributes = {{"guiding", "on"},
+                           {"guidingIterations", std::to_string(stats.guideIterations.size())},
+                           {"guidingImageSpp", std::to_string(stats.guideFinalSamples)}};
+        reportGuiding(verbose, stats, statsContext);
+    }
+    writeRenderPart(*output, finished, guideAttributes, true,
                     aovs.empty() ? std::vector<ExrChannel>{}
                                  : aovChannels(aovs, settings.aov ? renderer.readAovs()
                                                                   : AovImages{},

@@ -46,6 +46,9 @@ std::vector<OptionSpec> samplingOptions() {
         {"--clamp", "", "X", "clamp each contribution to X per channel (biased; default 0: "
                              "off)"},
         {"--seed", "", "S", "random seed; same seed, same image bit for bit (default 0)"},
+        {"--guiding", "", "MODE", "off (default) or on: path guiding (an SD-tree trained over "
+                                  "1, 2, 4, ... spp, the image from the last half of the "
+                                  "samples; render only for now)"},
         {"--sampler", "", "NAME", "sample pattern: independent, stratified, multijitter, "
                                   "halton, hammersley, sobol (default) or bluenoise"},
         {"--texture-filter", "", "MODE", "cone (mip levels chosen by ray cones; default) or "
@@ -154,6 +157,7 @@ void applyRenderFlags(const ParsedArgs& parsed, uint32_t defaultMaxDepth,
     settings.sampler = parseSampler(
         parsed.choiceValue("--sampler", samplerName(kDefaultSampler), samplerNames()));
     settings.randomizeSamples = !parsed.has("--no-randomize");
+    settings.guiding = parsed.choiceValue("--guiding", "off", {"off", "on"}) == "on";
     settings.textureLod =
         parsed.choiceValue("--texture-filter", "cone", {"cone", "none"}) == "cone";
     const std::string split = parsed.choiceValue("--shade-split", "auto", {"auto", "on", "off"});

@@ -73,6 +73,15 @@ struct RenderSettings {
     // Most bytes of the triangle or BVH table in one buffer (0: the device's limit); a test
     // sets it low to spread a small scene over pages as a large one spreads.
     uint64_t tablePageBytes = 0;
+    // --guiding on: path guiding (render/guiding/path_guide.h, WF_GUIDING). render() trains the
+    // guide over iterations of 1, 2, 4, ... spp (images discarded) while the last iteration
+    // keeps at least half of samplesPerPixel, then renders the rest with the frozen guide.
+    // Sample indices continue across iterations, so the image's samples never trained it.
+    bool guiding = false;
+    float guideBsdfFraction = 0.5f; // the BSDF's share of the one-sample mixture
+    // At most this many training iterations (tests set 0 to render with a guide they froze
+    // themselves through WavefrontRenderer::guide()).
+    uint32_t guideMaxIterations = 0xffffffffu;
 };
 
 } // namespace wf

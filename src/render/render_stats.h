@@ -23,6 +23,17 @@ struct RenderStats {
     // each depth; the last entry also counts every deeper bounce (WF_TRACKED_DEPTHS entries).
     std::vector<uint64_t> depthRays;
     std::vector<uint64_t> depthShadowRays;
+    // --guiding: the training iterations (the image is the last, untraining one's).
+    struct GuideIterationStats {
+        uint32_t samplesPerPixel = 0;
+        uint64_t spatialLeaves = 0;
+        uint64_t directionalNodes = 0;
+        double seconds = 0.0;        // rendering the iteration
+        double rebuildSeconds = 0.0; // reading back, rebuilding and uploading the trees
+    };
+    std::vector<GuideIterationStats> guideIterations;
+    uint32_t guideFinalSamples = 0; // samples per pixel in the image
+    uint64_t guideBytes = 0;        // device memory of the guide
 };
 
 // Adds `more`'s counts and times to `total`: sums, except the longest submit (the larger).

@@ -96,6 +96,7 @@ ShaderDefines ShaderVariant::defines() const {
             {"WF_HAS_NORMAL_MAPS", flag(surface.normalMaps)},
             {"WF_HAS_ALPHA_MASK", flag(surface.alphaMask)},
             {"WF_RAY_CONES", flag(rayCones)},
+            {"WF_GUIDING", flag(guiding)},
             {"WF_SAMPLER", std::to_string(static_cast<uint32_t>(sampler))},
             {"WF_SAMPLER_RANDOMIZE", flag(randomizeSamples)},
             {"WF_PACKED_STORES", flag(packedStores)},

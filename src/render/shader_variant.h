@@ -53,6 +53,7 @@ struct ShaderVariant {
     // WF_RAY_TRACING: intersect and shadow trace through the driver's acceleration structures
     // (--traversal rt); defined only then, so the BVH variants' shaders are as before.
     bool rayTracing = false;
+    bool guiding = false;             // WF_GUIDING: the path guide's mixture and training
     TablePages trianglePages;         // WF_TRIANGLE_PAGES, _SHIFT: set by the renderer
     TablePages bvhPages;              // WF_BVH_PAGES, _SHIFT: set by the renderer
     TablePages instancePages;         // WF_INSTANCE_PAGES, _SHIFT: set by the renderer

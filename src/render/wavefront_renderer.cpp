@@ -7,6 +7,7 @@
 #include "errors.h"
 #include "gpu/compute_program.h"
 #include "gpu/context.h"
+#include "render/guiding/path_guide.h"
 #include "render/path_buffers.h"
 #include "render/samplers/sampler_tables.h"
 #include "render/gpu_scene/scene_buffers.h"
@@ -41,8 +42,11 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
         throw UsageError("image of " + std::to_string(pixels) + " pixels is over this device's "
                          "limit of " + std::to_string(maxPixels) + " pixels");
     pixelCount_ = static_cast<uint32_t>(pixels);
+    // Guided renders keep 4 training records of 64 bytes per path: at most 2^19 paths keep
+    // them within a 128 MiB storage buffer.
+    const uint64_t guideMaxPaths = settings.guiding ? uint64_t(1) << 19 : maxPaths;
     pathCapacity_ = static_cast<uint32_t>(std::max<uint64_t>(
-        1, std::min({uint64_t(settings.maxPathsPerWave), maxPaths,
+        1, std::min({uint64_t(settings.maxPathsPerWave), maxPaths, guideMaxPaths,
                      pixels * settings.samplesPerPixel})));
     // The first wave's size is a guess (a CPU device traces ~1e5-1e6 paths/s, a GPU far more);
     // later waves follow the measured time.
@@ -57,6 +61,9 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
     if (variant_.rayTracing && !context.rayTracingEnabled())
         throw UsageError("--traversal rt: ray tracing is not enabled on device '" +
                          context.deviceName() + "'");
+    if (settings.guiding && settings.pixelList)
+        throw UsageError("--guiding does not combine with --target-error yet");
+    variant_.guiding = settings.guiding;
     const VkPhysicalDeviceLimits& limits = context.properties().limits;
     const uint64_t pageBytes =
         settings.tablePageBytes > 0
@@ -87,6 +94,13 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
         samplerTable_ = std::make_unique<Buffer>(makeSamplerTableBuffer(context, setSize()));
         bindings.push_back(
             {WF_BINDING_SAMPLER_TABLES, samplerTable_.get(), BufferAccess::Uint1Texels});
+    }
+    if (settings.guiding) {
+        const glm::vec3 radius(scene.bounds.radius);
+        guide_ = std::make_unique<PathGuide>(context, scene.bounds.center - radius,
+                                             scene.bounds.center + radius, pathCapacity_,
+                                             settings.guideBsdfFraction);
+        guide_->appendBindings(bindings);
     }
     AccelerationBinding acceleration;
     if (const AccelerationStructureSet* structures = sceneBuffers_->acceleration())
@@ -256,6 +270,10 @@ uint32_t WavefrontRenderer::renderSamples(uint32_t samples) {
 
 void WavefrontRenderer::render(const std::function<void(const WaveProgress&)>& onWave,
                                const std::atomic<bool>* stop) {
+    if (guide_) {
+        renderGuided(onWave, stop);
+        return;
+    }
     const auto start = std::chrono::steady_clock::now();
     const uint32_t first = samplesDone_;
     while (samplesDone_ < settings_.samplesPerPixel && !(stop && stop->load())) {
@@ -303,13 +321,55 @@ void WavefrontRenderer::renderPixelList(const std::vector<uint32_t>& pixels,
     }
 }
 
-void WavefrontRenderer::reset() {
+void WavefrontRenderer::renderGuided(const std::function<void(const WaveProgress&)>& onWave,
+                                     const std::atomic<bool>* stop) {
+    if (settings_.timeLimitSeconds > 0.0)
+        throw UsageError("--guiding does not combine with --time-limit yet");
+    const uint32_t budget = settings_.samplesPerPixel;
+    guide_->setTraining(true);
+    // Train while the iteration after this one still gets at least half the budget.
+    for (uint32_t spp = 1, iteration = 0;
+         iteration < settings_.guideMaxIterations && 2ull * (samplesDone_ + spp) <= budget &&
+         !(stop && stop->load());
+         spp *= 2, ++iteration) {
+        clearFilm();
+        const auto start = std::chrono::steady_clock::now();
+        renderSamples(spp);
+        RenderStats::GuideIterationStats it;
+        it.samplesPerPixel = spp;
+        it.seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        it.rebuildSeconds = guide_->endIteration(iteration, pixelCount_);
+        guiding::SDTreeStats tree = guide_->tree().stats();
+        it.spatialLeaves = tree.spatialLeaves;
+        it.directionalNodes = tree.samplingNodes;
+        stats_.guideIterations.push_back(it);
+        if (onWave)
+            onWave({samplesDone_, budget, stats_.seconds});
+    }
+    guide_->setTraining(false);
+    clearFilm();
+    const uint32_t first = samplesDone_;
+    while (samplesDone_ < budget && !(stop && stop->load())) {
+        advance(budget - samplesDone_);
+        if (onWave)
+            onWave({samplesDone_, budget, stats_.seconds});
+    }
+    stats_.guideFinalSamples = samplesDone_ - first;
+    stats_.guideBytes = guide_->deviceBytes();
+}
+
+void WavefrontRenderer::clearFilm() {
     std::vector<float> zeros(size_t(pixelCount_) * 4, 0.0f);
     pathBuffers_->film.upload(zeros);
     if (pathBuffers_->momentFilm)
         pathBuffers_->momentFilm.upload(zeros);
     if (pathBuffers_->aovFilm)
         pathBuffers_->aovFilm.upload(std::vector<float>(size_t(pixelCount_) * 8, 0.0f));
+}
+
+void WavefrontRenderer::reset() {
+    clearFilm();
     samplesDone_ = 0;
     pixelCursor_ = 0;
     stats_ = {};
@@ -324,6 +384,8 @@ void WavefrontRenderer::restart(uint32_t seed, uint32_t sppOffset, uint32_t samp
     uploadParams();
     if (samplerTable_)
         setSamplerSetSize(*samplerTable_, setSize());
+    if (guide_)
+        guide_->reset(); // each seed trains its own guide
     reset();
 }
 
@@ -356,6 +418,8 @@ std::vector<std::pair<std::string, uint64_t>> WavefrontRenderer::memoryReport() 
     if (samplerTable_)
         report.emplace_back(samplerTable_->name(), samplerTable_->size());
     pathBuffers_->appendMemoryReport(report);
+    if (guide_)
+        guide_->appendMemoryReport(report);
     return report;
 }
 

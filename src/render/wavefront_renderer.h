@@ -29,6 +29,7 @@ class Buffer;
 class Context;
 class DescriptorTable;
 class WaveRecorder;
+class PathGuide;
 struct PreparedScene;
 class SceneBuffers;
 struct PathBuffers;
@@ -92,6 +93,7 @@ public:
     // Starts the longest-submit record afresh (the bench, after its warm-up frames).
     void resetLongestSubmit() { stats_.longestSubmitSeconds = 0.0; }
     uint32_t pathCapacity() const { return pathCapacity_; } // most paths in one wave
+    PathGuide* guide() { return guide_.get(); }              // --guiding only, else null
     uint32_t pathsPerWave() const { return wavePaths_; }    // the current target
     std::vector<std::pair<std::string, uint64_t>> memoryReport() const;
     std::shared_ptr<const SceneBuffers> sceneBuffers() const { return sceneBuffers_; }
@@ -102,6 +104,9 @@ public:
 
 private:
     void uploadParams();
+    void renderGuided(const std::function<void(const WaveProgress&)>& onWave,
+                      const std::atomic<bool>* stop);
+    void clearFilm();
     uint32_t advance(uint32_t maxSamples);
     // Samples [firstSample, firstSample + samples) of sppOffset on, of pixels [pixelBase,
     // pixelBase + pixels) of the image or (pixelList) of the list.
@@ -127,6 +132,7 @@ private:
     std::unique_ptr<DescriptorTable> table_;
     std::unique_ptr<WaveRecorder> waves_; // the passes, recorded wave by wave
     std::unique_ptr<Buffer> samplerTable_; // only for samplers that read it
+    std::unique_ptr<PathGuide> guide_;     // --guiding only
 };
 
 // The camera looking at the scene: the file's, with the image's aspect.

@@ -65,6 +65,23 @@ TEST(Shaders, RayTracingShadersCompileInEveryVariant) {
     EXPECT_GE(compiled, 6 * 16 + 8);
 }
 
+// The path guide's code (WF_GUIDING) in every shader that holds it, with MIS, with and
+// without the layered BSDF.
+TEST(Shaders, GuidedPassesCompile) {
+    ShaderCompiler compiler(defaultShaderDir(), "");
+    for (const char* file : {"raygen.comp", "shade.comp", "accumulate.comp", "megakernel.comp"})
+        for (const char* layers : {"0", "1"}) {
+            ShaderDefines defines = {{"WF_WORKGROUP_SIZE", std::to_string(kWorkgroupSize)},
+                                     {"WF_HAS_EMITTERS", "1"},
+                                     {"WF_HAS_TRIANGLE_EMITTERS", "1"},
+                                     {"WF_LIGHT_SAMPLING", "2"},
+                                     {"WF_HAS_CLEARCOAT", layers},
+                                     {"WF_GUIDING", "1"}};
+            CompiledShader shader = compiler.compile(file, defines);
+            ASSERT_GT(shader.spirv.size(), 5u) << file;
+        }
+}
+
 TEST(Shaders, ABrokenShaderReportsGlslangLogWithFileName) {
     auto dir = std::filesystem::temp_directory_path() / "wf_broken_shader_test";
     std::filesystem::create_directories(dir);

@@ -1,0 +1,190 @@
+// Looking up, sampling and evaluating the path guide's SD-tree (types/guide_types.h): shared by
+// the shade pass and the megakernel (GLSL) and by the host builder and CPU tests (C++), so the
+// chi-square tests check exactly the pdf the GPU divides by.
+//
+// GLSL includers define WF_GUIDE_SPATIAL(i), WF_GUIDE_SAMPLING(i) and WF_GUIDE_BUILDING(i),
+// expressions yielding node i of the three arrays; in C++ the tree walks are members of
+// GuideTreeView, which reads vectors.
+#ifndef WF_GUIDE_TREE_H
+#define WF_GUIDE_TREE_H
+
+#include "types/glsl_cpp.h"
+#include "types/guide_types.h"
+
+#ifdef __cplusplus
+#include <vector>
+namespace wf::gpu_types {
+using namespace glm;
+#endif
+
+#define WF_GUIDE_INV_4PI 0.07957747154594767f
+#define WF_GUIDE_ONE_MINUS_EPS 0.99999994f
+
+// World direction -> the unit square ((cos theta + 1) / 2, phi / 2 pi): equal areas map to
+// equal solid angles (4 pi per unit area).
+WF_INLINE vec2 guideDirToSquare(vec3 w) {
+    float cosTheta = clamp(w.z, -1.0f, 1.0f);
+    float phi = atan(w.y, w.x);
+    if (phi < 0.0f)
+        phi += 2.0f * 3.14159265358979323846f;
+    vec2 x = vec2(0.5f * (cosTheta + 1.0f), phi * 0.15915494309189535f);
+    return clamp(x, vec2(0.0f), vec2(WF_GUIDE_ONE_MINUS_EPS));
+}
+
+WF_INLINE vec3 guideSquareToDir(vec2 x) {
+    float cosTheta = 2.0f * x.x - 1.0f;
+    float sinTheta = sqrt(max(0.0f, 1.0f - cosTheta * cosTheta));
+    float phi = 2.0f * 3.14159265358979323846f * x.y;
+    return vec3(sinTheta * cos(phi), sinTheta * sin(phi), cosTheta);
+}
+
+// The mixture of BSDF sampling (share bsdfFraction) and the guide: its pdf is what both sides
+// of multiple importance sampling against next-event estimation weigh. Positive wherever the
+// BSDF's is, as long as bsdfFraction > 0.
+WF_INLINE float guideMixturePdf(float bsdfPdf, float guidePdf, float bsdfFraction) {
+    return bsdfFraction * bsdfPdf + (1.0f - bsdfFraction) * guidePdf;
+}
+
+// One quadrant choice: x-half by u.x, then y-half within it by u.y, each u rescaled to [0, 1)
+// for the next level. Returns the quadrant (x-half | y-half << 1).
+WF_INLINE uint guideChooseQuadrant(vec4 prob, WF_INOUT(vec2) u) {
+    float left = prob.x + prob.z;
+    uint xh = 0u;
+    if (u.x < left) {
+        u.x = min(u.x / left, WF_GUIDE_ONE_MINUS_EPS);
+    } else {
+        xh = 1u;
+        u.x = min((u.x - left) / max(1.0f - left, 1e-30f), WF_GUIDE_ONE_MINUS_EPS);
+    }
+    float lower = xh == 0u ? prob.x : prob.y;
+    float upper = xh == 0u ? prob.z : prob.w;
+    float bottom = lower / max(lower + upper, 1e-30f);
+    uint yh = 0u;
+    if (u.y < bottom) {
+        u.y = min(u.y / bottom, WF_GUIDE_ONE_MINUS_EPS);
+    } else {
+        yh = 1u;
+        u.y = min((u.y - bottom) / max(1.0f - bottom, 1e-30f), WF_GUIDE_ONE_MINUS_EPS);
+    }
+    return xh | (yh << 1u);
+}
+
+WF_INLINE float guideQuadrantProb(vec4 prob, uint q) {
+    return q == 0u ? prob.x : (q == 1u ? prob.y : (q == 2u ? prob.z : prob.w));
+}
+
+WF_INLINE uint guideQuadrantChild(uvec4 child, uint q) {
+    return q == 0u ? child.x : (q == 1u ? child.y : (q == 2u ? child.z : child.w));
+}
+
+#ifdef __cplusplus
+struct GuideTreeView {
+    const std::vector<GuideSpatialNode>* spatial = nullptr;
+    const std::vector<GuideDirNode>* sampling = nullptr;
+    const std::vector<GuideDirNode>* building = nullptr;
+#define WF_GUIDE_SPATIAL(i) (*spatial)[i]
+#define WF_GUIDE_SAMPLING(i) (*sampling)[i]
+#define WF_GUIDE_BUILDING(i) (*building)[i]
+#endif
+
+// The spatial leaf (its node index) holding the point whose position in the tree's box is
+// p01 (each coordinate in [0, 1]).
+WF_INLINE uint guideSpatialLeaf(vec3 p01) {
+    vec3 p = clamp(p01, vec3(0.0f), vec3(WF_GUIDE_ONE_MINUS_EPS));
+    uint node = 0u;
+    for (uint depth = 0u; depth < WF_GUIDE_MAX_SPATIAL_DEPTH; ++depth) {
+        uint child = WF_GUIDE_SPATIAL(node).child;
+        if ((child & WF_GUIDE_LEAF) != 0u)
+            return node;
+        uint axis = depth % 3u;
+        float c = axis == 0u ? p.x : (axis == 1u ? p.y : p.z);
+        bool second = c >= 0.5f;
+        c = second ? 2.0f * c - 1.0f : 2.0f * c;
+        c = min(c, WF_GUIDE_ONE_MINUS_EPS);
+        if (axis == 0u)
+            p.x = c;
+        else if (axis == 1u)
+            p.y = c;
+        else
+            p.z = c;
+        node = second ? child + 1u : child;
+    }
+    return node;
+}
+
+// Draws a point of the unit square from the frozen quadtree at `root`; squarePdf is its
+// density on the square (4 pi times the density on the sphere).
+WF_INLINE vec2 guideSampleSquare(uint root, vec2 u, WF_OUT(float) squarePdf) {
+    squarePdf = 1.0f;
+    vec2 origin = vec2(0.0f);
+    float size = 1.0f;
+    uint node = root;
+    for (uint depth = 0u; depth < WF_GUIDE_MAX_DIR_DEPTH; ++depth) {
+        GuideDirNode n = WF_GUIDE_SAMPLING(node);
+        uint q = guideChooseQuadrant(n.prob, u);
+        squarePdf *= 4.0f * guideQuadrantProb(n.prob, q);
+        size *= 0.5f;
+        origin += size * vec2(float(q & 1u), float(q >> 1u));
+        node = guideQuadrantChild(n.child, q);
+        if (node == 0u)
+            break;
+    }
+    return origin + size * u;
+}
+
+// The density on the square of guideSampleSquare at the point x.
+WF_INLINE float guidePdfSquare(uint root, vec2 x) {
+    float pdf = 1.0f;
+    uint node = root;
+    for (uint depth = 0u; depth < WF_GUIDE_MAX_DIR_DEPTH; ++depth) {
+        GuideDirNode n = WF_GUIDE_SAMPLING(node);
+        uint xh = x.x >= 0.5f ? 1u : 0u;
+        uint yh = x.y >= 0.5f ? 1u : 0u;
+        uint q = xh | (yh << 1u);
+        pdf *= 4.0f * guideQuadrantProb(n.prob, q);
+        x = min(2.0f * x - vec2(float(xh), float(yh)), vec2(WF_GUIDE_ONE_MINUS_EPS));
+        node = guideQuadrantChild(n.child, q);
+        if (node == 0u)
+            break;
+    }
+    return pdf;
+}
+
+// A world direction from the frozen quadtree at `root`, with its solid-angle pdf.
+WF_INLINE vec3 guideSample(uint root, vec2 u, WF_OUT(float) pdf) {
+    float squarePdf;
+    vec2 x = guideSampleSquare(root, u, squarePdf);
+    pdf = squarePdf * WF_GUIDE_INV_4PI;
+    return guideSquareToDir(x);
+}
+
+WF_INLINE float guidePdf(uint root, vec3 w) {
+    return guidePdfSquare(root, guideDirToSquare(w)) * WF_GUIDE_INV_4PI;
+}
+
+// The building quadtree's cell (node * 4 + quadrant, a leaf quadrant) holding square point x:
+// where a splat for that direction lands.
+WF_INLINE uint guideBuildingCell(uint root, vec2 x) {
+    uint node = root;
+    for (uint depth = 0u; depth < WF_GUIDE_MAX_DIR_DEPTH; ++depth) {
+        uint xh = x.x >= 0.5f ? 1u : 0u;
+        uint yh = x.y >= 0.5f ? 1u : 0u;
+        uint q = xh | (yh << 1u);
+        x = min(2.0f * x - vec2(float(xh), float(yh)), vec2(WF_GUIDE_ONE_MINUS_EPS));
+        uint child = guideQuadrantChild(WF_GUIDE_BUILDING(node).child, q);
+        if (child == 0u || depth + 1u == WF_GUIDE_MAX_DIR_DEPTH)
+            return node * 4u + q;
+        node = child;
+    }
+    return node * 4u;
+}
+
+#ifdef __cplusplus
+#undef WF_GUIDE_SPATIAL
+#undef WF_GUIDE_SAMPLING
+#undef WF_GUIDE_BUILDING
+}; // struct GuideTreeView
+} // namespace wf::gpu_types
+#endif
+
+#endif
