@@ -38,6 +38,14 @@ bool sizeAllowed(int width, int height, std::string& why) {
     return true;
 }
 
+// Decoded RGBA8 rows (R first) into the image.
+void copyRgba(const unsigned char* pixels, int width, int height, TextureImage& out) {
+    out.width = uint32_t(width);
+    out.height = uint32_t(height);
+    out.rgba.resize(size_t(width) * size_t(height));
+    std::memcpy(out.rgba.data(), pixels, out.rgba.size() * 4);
+}
+
 // EXT_texture_webp with Debian's libwebp: the size from the header first, then RGBA8.
 bool decodeWebp(const unsigned char* bytes, size_t size, TextureImage& out, std::string& why) {
     int width = 0, height = 0;
@@ -54,10 +62,7 @@ bool decodeWebp(const unsigned char* bytes, size_t size, TextureImage& out, std:
         WebPFree(pixels);
         return false;
     }
-    out.width = uint32_t(w);
-    out.height = uint32_t(h);
-    out.rgba.resize(size_t(w) * size_t(h));
-    std::memcpy(out.rgba.data(), pixels, out.rgba.size() * 4);
+    copyRgba(pixels, w, h, out);
     WebPFree(pixels);
     return true;
 }
@@ -101,10 +106,7 @@ bool decodeImage(const unsigned char* bytes, size_t size, TextureImage& out, std
         stbi_image_free(pixels);
         return false;
     }
-    out.width = uint32_t(w);
-    out.height = uint32_t(h);
-    out.rgba.resize(size_t(w) * size_t(h));
-    std::memcpy(out.rgba.data(), pixels, out.rgba.size() * 4);
+    copyRgba(pixels, w, h, out);
     stbi_image_free(pixels);
     return true;
 }
