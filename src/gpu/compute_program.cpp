@@ -183,26 +183,38 @@ void DescriptorTable::release() {
     layout_ = VK_NULL_HANDLE;
 }
 
+VkPipelineLayout createPipelineLayout(VkDevice device, const DescriptorTable& table,
+                                      VkShaderStageFlags stages, uint32_t pushBytes) {
+    VkPushConstantRange range{stages, 0, pushBytes};
+    VkDescriptorSetLayout setLayout = table.layout();
+    VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    layoutInfo.setLayoutCount = 1;
+    layoutInfo.pSetLayouts = &setLayout;
+    layoutInfo.pushConstantRangeCount = pushBytes ? 1 : 0;
+    layoutInfo.pPushConstantRanges = &range;
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    VK_CHECK(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &layout));
+    return layout;
+}
+
+VkShaderModule createShaderModule(VkDevice device, const std::vector<uint32_t>& spirv) {
+    VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+    moduleInfo.codeSize = spirv.size() * sizeof(uint32_t);
+    moduleInfo.pCode = spirv.data();
+    VkShaderModule module = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateShaderModule(device, &moduleInfo, nullptr, &module));
+    return module;
+}
+
 ComputeProgram::ComputeProgram(const Context& context, std::string name,
                                const std::vector<uint32_t>& spirv, const DescriptorTable& table,
                                uint32_t pushConstantBytes)
     : device_(context.device()), name_(std::move(name)), set_(table.set()),
       pushBytes_(pushConstantBytes) {
     try {
-        VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, pushConstantBytes};
-        VkDescriptorSetLayout setLayout = table.layout();
-        VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-        layoutInfo.setLayoutCount = 1;
-        layoutInfo.pSetLayouts = &setLayout;
-        layoutInfo.pushConstantRangeCount = pushConstantBytes ? 1 : 0;
-        layoutInfo.pPushConstantRanges = &range;
-        VK_CHECK(vkCreatePipelineLayout(device_, &layoutInfo, nullptr, &layout_));
-
-        VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-        moduleInfo.codeSize = spirv.size() * sizeof(uint32_t);
-        moduleInfo.pCode = spirv.data();
-        VkShaderModule module = VK_NULL_HANDLE;
-        VK_CHECK(vkCreateShaderModule(device_, &moduleInfo, nullptr, &module));
+        layout_ = createPipelineLayout(device_, table, VK_SHADER_STAGE_COMPUTE_BIT,
+                                       pushConstantBytes);
+        VkShaderModule module = createShaderModule(device_, spirv);
 
         VkComputePipelineCreateInfo pipelineInfo{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
         pipelineInfo.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};

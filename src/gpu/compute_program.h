@@ -67,6 +67,12 @@ private:
     std::vector<VkBufferView> views_; // one per texel-buffer binding
 };
 
+// A pipeline layout over the table's one descriptor set, with `pushBytes` of push constants
+// for `stages` (none when 0), and a shader module: what compute and ray-tracing pipelines share.
+VkPipelineLayout createPipelineLayout(VkDevice device, const DescriptorTable& table,
+                                      VkShaderStageFlags stages, uint32_t pushBytes);
+VkShaderModule createShaderModule(VkDevice device, const std::vector<uint32_t>& spirv);
+
 class ComputeProgram {
 public:
     ComputeProgram(const Context& context, std::string name, const std::vector<uint32_t>& spirv,

@@ -38,25 +38,14 @@ void RayTracingProgram::create(const Context& context, const RayTracingShaders& 
                                const DescriptorTable& table) {
     VkDevice device = context.device();
     const RayTracingFunctions& rt = context.rt();
-    VkPushConstantRange range{VK_SHADER_STAGE_RAYGEN_BIT_KHR, 0, pushBytes_};
-    VkDescriptorSetLayout setLayout = table.layout();
-    VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    layoutInfo.setLayoutCount = 1;
-    layoutInfo.pSetLayouts = &setLayout;
-    layoutInfo.pushConstantRangeCount = pushBytes_ ? 1 : 0;
-    layoutInfo.pPushConstantRanges = &range;
-    VK_CHECK(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &layout_));
+    layout_ = createPipelineLayout(device, table, VK_SHADER_STAGE_RAYGEN_BIT_KHR, pushBytes_);
 
     std::vector<VkShaderModule> modules;
     std::vector<VkPipelineShaderStageCreateInfo> stages;
     const auto stage = [&](const Spirv& spirv, VkShaderStageFlagBits bit) -> uint32_t {
         if (spirv.empty())
             return VK_SHADER_UNUSED_KHR;
-        VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-        moduleInfo.codeSize = spirv.size() * sizeof(uint32_t);
-        moduleInfo.pCode = spirv.data();
-        VkShaderModule module = VK_NULL_HANDLE;
-        VK_CHECK(vkCreateShaderModule(device, &moduleInfo, nullptr, &module));
+        VkShaderModule module = createShaderModule(device, spirv);
         modules.push_back(module);
         VkPipelineShaderStageCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
         info.stage = bit;
