@@ -108,6 +108,9 @@ int runViewCommand(const std::vector<std::string>& args) {
     if (auto mode = parsed.value("--instancing"))
         options.instancing = parseInstancing(*mode);
     options.time = sceneTimeFrom(parsed);
+    if (parsed.has("--shutter"))
+        throw UsageError("--shutter: the viewer shows one time (render, bench and converge "
+                         "blur motion)");
     options.animation = parsed.value("--animation").value_or("");
     options.overlay = !parsed.has("--no-overlay");
     options.device = contextOptionsFrom(parsed).deviceIndex;

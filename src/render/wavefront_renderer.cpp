@@ -61,6 +61,9 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
     if (variant_.rayTracing && !context.rayTracingEnabled())
         throw UsageError("--traversal rt: ray tracing is not enabled on device '" +
                          context.deviceName() + "'");
+    if (variant_.rayTracing && variant_.motion)
+        throw UsageError("--traversal rt: motion blur (--shutter) is traced by the project's "
+                         "BVH only; use --traversal bvh");
     if (settings.guiding && settings.pixelList)
         throw UsageError("--guiding does not combine with --target-error yet");
     variant_.guiding = settings.guiding;
@@ -146,6 +149,9 @@ void WavefrontRenderer::uploadParams() {
     params.lensRadius = 0.5f * camera.aperture;
     params.focusDistance = camera.focusDistance;
     params.orthoHalfHeight = camera.orthoHalfHeight;
+    params.motionSegments = scene_.motionSegments;
+    // A camera set since (the viewer's) has no keys: it stays where it is put.
+    params.cameraMotionKeys = camera.motion.empty() ? 0u : scene_.cameraMotionKeys;
     pathBuffers_->params.upload(&params, sizeof params);
 }
 
