@@ -75,13 +75,15 @@ OptionSpec traversalOption() {
             "auto (default: rt where the device has ray-tracing pipelines and is a GPU, else "
             "bvh; on lavapipe bvh measured faster), bvh (the project's BVH in compute) or rt "
             "(the driver's acceleration structures through ray-tracing pipelines; refused "
-            "where the device has none, and with a moving --shutter; auto takes bvh with "
-            "--shutter)"};
+            "where the device has none, and with --shutter; auto takes bvh with --shutter)"};
 }
 
 RayTracingRequest traversalRequest(const ParsedArgs& parsed) {
     const std::string mode = parsed.choiceValue("--traversal", "auto", {"auto", "bvh", "rt"});
     // Motion blur runs in the project's BVH only (motion.glsl), so auto takes it there.
+    if (mode == "rt" && parsed.has("--shutter"))
+        throw UsageError("--traversal rt: motion blur (--shutter) is traced by the project's "
+                         "BVH only; use --traversal bvh or auto");
     return mode == "rt"                           ? RayTracingRequest::Required
            : mode == "bvh" || parsed.has("--shutter") ? RayTracingRequest::Off
                                                       : RayTracingRequest::Auto;

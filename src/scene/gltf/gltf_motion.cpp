@@ -96,8 +96,11 @@ void keyNodeMotion(const ShutterKeys& shutter, int node, std::size_t cameras, st
         bool usable = true;
         for (std::size_t k = 0; k < keys.size(); ++k)
             usable = usable && cameraFrame(glm::dmat4(keys[k]), frames[k]);
-        if (usable)
+        if (usable) {
+            if (cameras == 0) // the first camera is also the one to render with
+                scene.camera.motion = frames;
             scene.cameras.back().motion = std::move(frames);
+        }
     }
     if (scene.lights.size() > lights) {
         scene.lights.back().motion = uint32_t(scene.lightMotionKeys.size()) + 1u;
