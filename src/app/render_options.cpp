@@ -252,6 +252,7 @@ Scene loadSceneWithFlags(const ParsedArgs& parsed, const std::string& path,
     options.time = time ? *time : sceneTimeFrom(parsed);
     options.animation = parsed.value("--animation").value_or("");
     applyShutter(parsed, options);
+    traversalRequest(parsed); // refuses rt with --shutter before the scene's warnings print
     if (auto mode = parsed.value("--instancing"))
         options.instancing = parseInstancing(*mode);
     const auto start = std::chrono::steady_clock::now();
