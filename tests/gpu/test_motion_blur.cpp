@@ -121,6 +121,17 @@ TEST(MotionBlur, ShutterMatchesTheMeanOfStillFramesWithin5Se) {
     EXPECT_EQ(expectRegionsUnbiased(images, reference, variance, settings.width,
                                     settings.height, 8, "shutter against still frames"),
               24);
+    // The megakernel draws the time in the same cameraRay and reads the same keys.
+    settings.megakernel = true;
+    images.clear();
+    for (uint32_t seed = 11; seed <= 14; ++seed) {
+        settings.seed = seed;
+        images.push_back(renderScene(moving, settings).rgb);
+    }
+    EXPECT_EQ(expectRegionsUnbiased(images, reference, variance, settings.width,
+                                    settings.height, 8, "megakernel shutter against still frames"),
+              24);
+    settings.megakernel = false;
     // The blur matters: the frame at the shutter's centre differs from the average.
     GltfOptions centre;
     centre.time = 0.5;
