@@ -11,6 +11,8 @@
 //   0-1               pixel position inside the pixel (box filter)
 //   2-3               with a thin lens only (WF_THIN_LENS): the point on the lens, so that
 //                     pinhole renders keep their numbering
+//   next 2            with motion blur only (WF_MOTION): the ray's time within the shutter
+//                     (the first of the pair, a 1D sample), so still renders keep theirs
 //   per bounce d:     WF_DIM_BOUNCE_BASE + d * WF_DIMS_PER_BOUNCE + offset, offset:
 //     0               light choice
 //     1-2             point on the light
