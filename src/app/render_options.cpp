@@ -116,12 +116,14 @@ OptionSpec instancingOption() {
                                         "more), on (always) or off (flattened); default auto"};
 }
 
-std::vector<OptionSpec> animationOptions() {
-    return {{"--time", "", "SECONDS", "pose the scene's animations, skins and morph targets at "
-                                      "this time (default 0: their start; clamped to each "
-                                      "animation's keys)"},
+std::vector<OptionSpec> animationOptions(bool withTime) {
+    std::vector<OptionSpec> options = {
+        {"--time", "", "SECONDS", "pose the scene's animations, skins and morph targets at this "
+                                  "time (default 0: their start; clamped to each animation's "
+                                  "keys)"},
             {"--frame", "", "N", "pose at frame N, the time N / --fps (instead of --time)"},
-            {"--fps", "", "F", "frames per second of --frame and --frames (default 24)"},
+            {"--fps", "", "F", "frames per second of --frame, --frames and --shutter (default "
+                               "24)"},
             {"--animation", "", "NAME|INDEX", "play only this animation of the file (default: "
                                               "every animation at once, as viewers do)"},
             {"--shutter", "", "OPEN:CLOSE", "motion blur: the shutter's interval in frames around "
@@ -130,6 +132,9 @@ std::vector<OptionSpec> animationOptions() {
                                             "moving nodes' meshes, cameras and lights are seen "
                                             "there; skinned, morphed or emissive meshes stay at "
                                             "its centre (warned). Default: none"}};
+    if (!withTime)
+        options.erase(options.begin());
+    return options;
 }
 
 void applyShutter(const ParsedArgs& parsed, GltfOptions& options) {
