@@ -124,7 +124,7 @@ int runFrameSequence(const ParsedArgs& parsed, const RenderRequest& request) {
     if (auto env = parsed.value("--env"))
         sceneHash += "+" + fileHash(*env);
 
-    const FrameBvh bvhMode = parseFrameBvh(parsed.value("--frame-bvh").value_or("refit"));
+    const FrameBvh bvhMode = parseFrameBvh(parsed.value("--frame-bvh").value_or("auto"));
 
     const auto setupStart = std::chrono::steady_clock::now();
     Context context(contextOptionsFrom(parsed));
@@ -160,6 +160,7 @@ int runFrameSequence(const ParsedArgs& parsed, const RenderRequest& request) {
         }
         const double setup = secondsSince(start) - loadSeconds - buildSeconds;
         renderer->render();
+        scenes.rendered(renderer->stats().seconds);
         RenderPart part;
         part.width = int(settings.width);
         part.height = int(settings.height);

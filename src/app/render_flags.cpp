@@ -28,10 +28,11 @@ const CommandSpec& renderSpec() {
                                                "-o's pattern (e.g. out/frame_%04d.exr); the "
                                                "device, pipelines and tree are kept between "
                                                "frames"},
-                {"--frame-bvh", "", "MODE", "with --frames: refit (default: the last built "
-                                            "tree's boxes fitted to the moved triangles, "
-                                            "rebuilt once it has worn out) or rebuild (a new "
-                                            "tree every frame)"},
+                {"--frame-bvh", "", "MODE", "with --frames: auto (default: refit the last "
+                                            "built tree to the moved triangles while the "
+                                            "slower tracing it brings costs less than a "
+                                            "build), refit (always, until its cost grows "
+                                            "1.5x) or rebuild (a new tree every frame)"},
                 {"--spp", "", "N", "samples per pixel (default 64); with --target-error, the "
                                   "most any pixel gets (default 1024)"},
                 {"--time-limit", "", "SECONDS", "stop before the sample pass that would end past "

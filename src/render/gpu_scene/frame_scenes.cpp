@@ -1,19 +1,25 @@
 #include "render/gpu_scene/frame_scenes.h"
 
+#include <chrono>
+
 #include "errors.h"
 #include "scene/bvh/bvh_refit.h"
 
 namespace wf {
 
 FrameBvh parseFrameBvh(const std::string& name) {
+    if (name == "auto")
+        return FrameBvh::Auto;
     if (name == "refit")
         return FrameBvh::Refit;
     if (name == "rebuild")
         return FrameBvh::Rebuild;
-    throw UsageError("--frame-bvh " + name + ": expected refit or rebuild");
+    throw UsageError("--frame-bvh " + name + ": expected auto, refit or rebuild");
 }
 
-const char* frameBvhName(FrameBvh mode) { return mode == FrameBvh::Refit ? "refit" : "rebuild"; }
+const char* frameBvhName(FrameBvh mode) {
+    return mode == FrameBvh::Auto ? "auto" : mode == FrameBvh::Refit ? "refit" : "rebuild";
+}
 
 // The previous frame's tree and triangle order over this frame's triangles, when the loader
 // produced the same triangles (count and material of each) in one-level form and the refit
@@ -37,6 +43,10 @@ bool FrameScenes::refit(Scene& scene, PreparedScene& out) {
     costRatio_ = builtCost_ > 0.0 ? pairTreeCost(pairs) / builtCost_ : 1.0;
     if (costRatio_ > rebuildRatio_)
         return false;
+    // The render time the worn tree is expected to add, against what a build would cost.
+    if (mode_ == FrameBvh::Auto &&
+        (builtRender_ < 0.0 || builtRender_ * (costRatio_ - 1.0) > buildSeconds_))
+        return false;
     out = PreparedScene{};
     out.triangles = std::move(triangles);
     out.bvhPairs = std::move(pairs);
@@ -58,14 +68,23 @@ bool FrameScenes::refit(Scene& scene, PreparedScene& out) {
 const PreparedScene& FrameScenes::prepare(Scene scene) {
     const int next = current_ < 0 ? 0 : 1 - current_;
     PreparedScene& out = scenes_[next];
-    refitted_ = mode_ == FrameBvh::Refit && current_ >= 0 && refit(scene, out);
+    refitted_ = mode_ != FrameBvh::Rebuild && current_ >= 0 && refit(scene, out);
     if (!refitted_) {
+        const auto start = std::chrono::steady_clock::now();
         out = prepareScene(std::move(scene), &order_);
+        buildSeconds_ =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         builtCost_ = out.instances.empty() ? pairTreeCost(out.bvhPairs) : 0.0;
         costRatio_ = 1.0;
+        builtRender_ = -1.0;
     }
     current_ = next;
     return out;
+}
+
+void FrameScenes::rendered(double seconds) {
+    if (!refitted_)
+        builtRender_ = seconds;
 }
 
 } // namespace wf

@@ -2,9 +2,12 @@
 // full build (prepareScene), or the last build's tree refitted to the frame's triangles where
 // they keep their count and materials (a skin, morph targets, rigid nodes moving: the loader
 // flattens them all into the same triangle list in the same order at every time). A refit
-// tree whose surface-area cost has grown past `rebuildRatio` times its cost when built is
-// rebuilt instead. Two scenes are kept, so the one a renderer still reads stays valid while
-// the next is prepared.
+// costs a fraction of a build but traces slower as its boxes grow (docs/animation.md: a tree
+// 1.17x the built one's surface-area cost rendered 1.15x slower), so Auto refits only while
+// the render time that growth is expected to add (the last built frame's render time x the
+// cost's growth) stays under the last build's time, and never past `rebuildRatio`; Refit
+// refits up to `rebuildRatio`. Two scenes are kept, so the one a renderer still reads stays
+// valid while the next is prepared.
 #pragma once
 #include <cstdint>
 #include <string>
@@ -14,7 +17,7 @@
 
 namespace wf {
 
-enum class FrameBvh { Refit, Rebuild };
+enum class FrameBvh { Auto, Refit, Rebuild };
 FrameBvh parseFrameBvh(const std::string& name); // UsageError if unknown
 const char* frameBvhName(FrameBvh mode);
 
@@ -28,6 +31,8 @@ public:
 
     // The next frame's scene, prepared; valid until the call after next.
     const PreparedScene& prepare(Scene scene);
+    // The render time of the frame last prepared (Auto weighs refits by it).
+    void rendered(double seconds);
     bool refitted() const { return refitted_; }    // by the last prepare
     double costRatio() const { return costRatio_; } // the last tree's cost / cost when built
 
@@ -40,6 +45,8 @@ private:
     int current_ = -1; // none yet
     std::vector<uint32_t> order_; // the last build's triangle permutation (prepareScene)
     double builtCost_ = 0.0;
+    double buildSeconds_ = 0.0;  // the last build's
+    double builtRender_ = -1.0;  // the render time of the last built frame; < 0: not known
     bool refitted_ = false;
     double costRatio_ = 1.0;
 };

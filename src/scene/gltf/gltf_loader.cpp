@@ -268,7 +268,8 @@ void Converter::walkNodes(gltf::PrimitiveBuilder& builder) {
 // Samples the animations at the time, then every node's world transform (joints outside the
 // scene's tree included), parents before children via the checked parent links.
 void Converter::poseNodes() {
-    animated_ = gltf::sampleAnimations(model_, file_, reader_, options_.time, options_.animation);
+    animated_ = gltf::sampleAnimations(model_, file_, reader_, options_.time, options_.animation,
+                                       &scene_.animationSeconds);
     const std::size_t n = model_.nodes.size();
     nodeWorld_.assign(n, glm::dmat4(1.0));
     std::vector<bool> done(n, false);
