@@ -143,6 +143,7 @@ int runFrameSequence(const ParsedArgs& parsed, const RenderRequest& request) {
         const auto start = std::chrono::steady_clock::now();
         Scene scene = loadSceneWithFlags(parsed, scenePath, nullptr, time, i == 0);
         RenderSettings settings = request.settings;
+        settings.traversal = traversalFor(context); // as render's: rt where the context has it
         applyImageSize(parsed, scene.camera,
                        {.width = kRenderDefaultWidth, .widthFollowsHeight = true}, settings);
         const double loadSeconds = secondsSince(start);

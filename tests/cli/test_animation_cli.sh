@@ -44,6 +44,19 @@ for mode in rebuild refit; do
             same "$work/$mode/frame_$(printf %04d "$f").exr" "$work/one_$f.exr"
     done
 done
+# --traversal rt where the device has ray-tracing pipelines: the sequence traces with them too
+# (each frame the separate rt render of that frame).
+if render --frame 0 --traversal rt -o "$work/probe.exr" 2>/dev/null; then
+    mkdir -p "$work/rt"
+    check "--frames --traversal rt" 0 render --frames 0..24:24 --traversal rt \
+        -o "$work/rt/frame_%04d.exr"
+    for f in 0 24; do
+        check "--traversal rt --frame $f alone" 0 render --frame "$f" --traversal rt \
+            -o "$work/rt/one_$f.exr"
+        expect "--frames --traversal rt: frame $f equals its own render" \
+            same "$work/rt/frame_$(printf %04d "$f").exr" "$work/rt/one_$f.exr"
+    done
+fi
 check "--frame-bvh refit says it refit" 0 "$wavefront" render "$scene" --spp 1 --width 16 \
     --max-depth 2 --frames 0..2 --frame-bvh refit -o "$work/refit/r_%d.exr"
 expect "--frame-bvh refit: frames after the first refit" \
