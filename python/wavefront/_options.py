@@ -15,7 +15,8 @@ RENDER_OPTIONS = (
     "no_randomize", "spp_offset", "spp_total",
 )
 # load()'s options: those that change the scene rather than a render.
-LOAD_OPTIONS = ("camera", "env", "instancing", "aperture", "focus_distance")
+LOAD_OPTIONS = ("camera", "env", "instancing", "aperture", "focus_distance", "time", "frame",
+                "fps", "animation")
 SWITCHES = ("no_randomize",)
 
 

@@ -1,15 +1,18 @@
 // The frame loop of render --frames; one frame is the single render's plain path (load, build,
-// render, write EXR + PNG) with the device and compiler kept between frames.
+// render, write EXR + PNG) with the device, the compiler, the renderer and its pipelines, and
+// (--frame-bvh refit) the tree kept between frames.
 #include "app/frame_sequence.h"
 
 #include <chrono>
 #include <cstdio>
+#include <memory>
 
 #include "app/render_options.h"
 #include "errors.h"
 #include "gpu/context.h"
 #include "image/render_parts.h"
 #include "render/film_error.h"
+#include "render/gpu_scene/frame_scenes.h"
 #include "render/gpu_scene/scene_buffers.h"
 #include "render/wavefront_renderer.h"
 
@@ -121,25 +124,44 @@ int runFrameSequence(const ParsedArgs& parsed, const RenderRequest& request) {
     if (auto env = parsed.value("--env"))
         sceneHash += "+" + fileHash(*env);
 
+    const FrameBvh bvhMode = parseFrameBvh(parsed.value("--frame-bvh").value_or("auto"));
+
     const auto setupStart = std::chrono::steady_clock::now();
     Context context(contextOptionsFrom(parsed));
     ShaderCompiler compiler;
     const double setupSeconds = secondsSince(setupStart);
+    // One renderer for the whole sequence while the frames need the same shaders and image
+    // size: each frame's tables replace the last one's under the same pipelines.
+    FrameScenes scenes(bvhMode);
+    std::unique_ptr<WavefrontRenderer> renderer;
+    RenderSettings rendererSettings;
     double firstSeconds = 0.0, restSeconds = 0.0;
+    uint32_t refits = 0, newRenderers = 0;
     for (size_t i = 0; i < frames.size(); ++i) {
         const uint32_t frame = frames[i];
         const double time = double(frame) / fps;
         const auto start = std::chrono::steady_clock::now();
         Scene scene = loadSceneWithFlags(parsed, scenePath, nullptr, time, i == 0);
         RenderSettings settings = request.settings;
+        settings.traversal = traversalFor(context); // as render's: rt where the context has it
         applyImageSize(parsed, scene.camera,
                        {.width = kRenderDefaultWidth, .widthFollowsHeight = true}, settings);
         const double loadSeconds = secondsSince(start);
-        PreparedScene prepared = prepareScene(std::move(scene));
+        const PreparedScene& prepared = scenes.prepare(std::move(scene));
+        refits += scenes.refitted() ? 1 : 0;
         const double buildSeconds = secondsSince(start) - loadSeconds;
-        WavefrontRenderer renderer(context, prepared, settings, compiler);
+        const bool sameImage = renderer && settings.width == rendererSettings.width &&
+                               settings.height == rendererSettings.height;
+        const bool reused = sameImage && renderer->setScene(prepared);
+        if (!reused) {
+            renderer.reset(); // its buffers go before the next renderer's are made
+            renderer = std::make_unique<WavefrontRenderer>(context, prepared, settings, compiler);
+            rendererSettings = settings;
+            ++newRenderers;
+        }
         const double setup = secondsSince(start) - loadSeconds - buildSeconds;
-        renderer.render();
+        renderer->render();
+        scenes.rendered(renderer->stats().seconds);
         RenderPart part;
         part.width = int(settings.width);
         part.height = int(settings.height);
@@ -152,9 +174,9 @@ int runFrameSequence(const ParsedArgs& parsed, const RenderRequest& request) {
         part.maxDepth = int(settings.maxDepth);
         part.sppOffset = settings.sppOffset;
         part.sppTotal = settings.sampleSetSize;
-        part.spp = renderer.samplesDone();
-        part.rgb = renderer.readImage();
-        part.renderSeconds = renderer.stats().seconds;
+        part.spp = renderer->samplesDone();
+        part.rgb = renderer->readImage();
+        part.renderSeconds = renderer->stats().seconds;
         const std::string out = framePath(pattern, frame);
         char timeText[32];
         std::snprintf(timeText, sizeof timeText, "%.9g", time);
@@ -164,17 +186,20 @@ int runFrameSequence(const ParsedArgs& parsed, const RenderRequest& request) {
         (i == 0 ? firstSeconds : restSeconds) += seconds;
         if (!quiet)
             std::fprintf(stderr,
-                         "wavefront: frame %u (t = %.4g s) %.3f s: load and pose %.3f, BVH %.3f, "
-                         "pipelines and upload %.3f, render %.3f; wrote %s\n",
-                         frame, time, seconds, loadSeconds, buildSeconds, setup,
-                         renderer.stats().seconds, out.c_str());
+                         "wavefront: frame %u (t = %.4g s) %.3f s: load and pose %.3f, BVH %.3f "
+                         "(%s, cost %.2fx built), %s %.3f, render %.3f; wrote %s\n",
+                         frame, time, seconds, loadSeconds, buildSeconds,
+                         scenes.refitted() ? "refit" : "built", scenes.costRatio(),
+                         reused ? "upload (pipelines kept)" : "pipelines and upload", setup,
+                         renderer->stats().seconds, out.c_str());
     }
     if (!quiet)
         std::fprintf(stderr,
                      "wavefront: %zu frames: device %.3f s, first frame %.3f s, the others "
-                     "%.3f s each on average\n",
+                     "%.3f s each on average; %u refit, %u with new pipelines\n",
                      frames.size(), setupSeconds, firstSeconds,
-                     frames.size() > 1 ? restSeconds / double(frames.size() - 1) : 0.0);
+                     frames.size() > 1 ? restSeconds / double(frames.size() - 1) : 0.0, refits,
+                     newRenderers);
     if (context.validationMessageCount() != 0) {
         std::fprintf(stderr, "wavefront: %u validation message(s)\n",
                      context.validationMessageCount());

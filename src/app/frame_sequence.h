@@ -1,7 +1,9 @@
 // render --frames A..B[:STEP]: a sequence of frames from one process, each the scene posed at
 // frame / --fps seconds and written to -o's pattern (printf's %d or %0Nd). The device, the
-// shader compiler (and its SPIR-V) and the validation context are made once; each frame then
-// loads and poses the scene, builds its trees and renders.
+// shader compiler (and its SPIR-V) and the validation context are made once, and so is the
+// renderer with its pipelines while the frames need the same shaders; each frame loads and
+// poses the scene, refits the last built tree or builds one (render/gpu_scene/frame_scenes.h),
+// uploads its tables and renders.
 #pragma once
 #include <cstdint>
 #include <string>

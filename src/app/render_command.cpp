@@ -240,6 +240,8 @@ int runRenderCommand(const std::vector<std::string>& args) {
     RenderRequest request = renderRequestFrom(parsed);
     if (parsed.has("--frames"))
         return runFrameSequence(parsed, request);
+    if (parsed.has("--frame-bvh"))
+        throw UsageError("--frame-bvh applies to --frames");
     RenderSettings& settings = request.settings;
     const bool adaptive = request.targetError > 0.0;
     const double targetError = request.targetError;

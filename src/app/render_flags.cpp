@@ -26,7 +26,13 @@ const CommandSpec& renderSpec() {
                 {"--frames", "", "A..B[:STEP]", "a sequence: frames A to B (every STEP-th), each "
                                                "posed at frame / --fps seconds and written to "
                                                "-o's pattern (e.g. out/frame_%04d.exr); the "
-                                               "device and shaders are made once"},
+                                               "device, pipelines and tree are kept between "
+                                               "frames"},
+                {"--frame-bvh", "", "MODE", "with --frames: auto (default: refit the last "
+                                            "built tree to the moved triangles while the "
+                                            "slower tracing it brings costs less than a "
+                                            "build), refit (always, until its cost grows "
+                                            "1.5x) or rebuild (a new tree every frame)"},
                 {"--spp", "", "N", "samples per pixel (default 64); with --target-error, the "
                                   "most any pixel gets (default 1024)"},
                 {"--time-limit", "", "SECONDS", "stop before the sample pass that would end past "

@@ -172,8 +172,8 @@ double sceneTimeFrom(const ParsedArgs& parsed) {
     if (parsed.has("--time") && parsed.has("--frame"))
         throw UsageError("--time and --frame both set the scene's time: give one");
     if (parsed.has("--fps") && !parsed.has("--frame") && !parsed.has("--frames") &&
-        !parsed.has("--shutter"))
-        throw UsageError("--fps applies to --frame, --frames or --shutter");
+        !parsed.has("--shutter") && !parsed.has("--play"))
+        throw UsageError("--fps applies to --frame, --frames or --shutter (view: and --play)");
     const double fps = parsed.floatValue("--fps", 24.0f, 1e-3f, 1e6f);
     if (parsed.has("--frame"))
         return double(parsed.uintValue("--frame", 0, 0, 1u << 30)) / fps;

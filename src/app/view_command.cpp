@@ -39,6 +39,10 @@ const CommandSpec& viewSpec() {
             },
             animationOptions(),
             {
+                {"--play", "", "", "start playing the animation (T plays and pauses; the "
+                                   "overlay's slider sets the time)"},
+            },
+            {
                 {"--exposure", "", "EV", "display exposure in stops: radiance x 2^EV (default 0)"},
                 {"--tonemap", "", "MODE", "linear (clamp, as render's PNG) or aces (filmic) "
                                           "(default linear)"},
@@ -112,6 +116,8 @@ int runViewCommand(const std::vector<std::string>& args) {
         throw UsageError("--shutter: the viewer shows one time (render, bench and converge "
                          "blur motion)");
     options.animation = parsed.value("--animation").value_or("");
+    options.fps = parsed.floatValue("--fps", 24.0f, 1e-3f, 1e6f);
+    options.play = parsed.has("--play");
     options.overlay = !parsed.has("--no-overlay");
     options.device = contextOptionsFrom(parsed).deviceIndex;
     options.rayTracing = traversalRequest(parsed);

@@ -118,6 +118,40 @@ void DescriptorTable::create(const Context& context, const DescriptorBindings& b
     allocInfo.pSetLayouts = &layout_;
     VK_CHECK(vkAllocateDescriptorSets(device_, &allocInfo, &set_));
 
+    for (const VkDescriptorSetLayoutBinding& b : layoutBindings)
+        shape_.emplace_back(b.binding, int(b.descriptorType));
+    write(context, bindings, acceleration);
+}
+
+void DescriptorTable::rewrite(const Context& context, const DescriptorBindings& bindings,
+                              const AccelerationBinding& acceleration) {
+    std::vector<std::pair<uint32_t, int>> shape;
+    for (const DescriptorBinding& entry : bindings)
+        shape.emplace_back(entry.binding, int(descriptorType(entry.access)));
+    if (acceleration.topLevel != VK_NULL_HANDLE)
+        shape.emplace_back(acceleration.binding,
+                           int(VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR));
+    if (shape != shape_)
+        throw InternalError("DescriptorTable::rewrite: other bindings than the table was made "
+                            "with");
+    std::vector<VkBufferView> old = std::move(views_);
+    views_.clear();
+    try {
+        write(context, bindings, acceleration);
+    } catch (...) {
+        for (VkBufferView view : views_)
+            vkDestroyBufferView(device_, view, nullptr);
+        views_ = std::move(old);
+        throw;
+    }
+    // The set no longer refers to the old views once the update above has returned.
+    for (VkBufferView view : old)
+        vkDestroyBufferView(device_, view, nullptr);
+}
+
+void DescriptorTable::write(const Context& context, const DescriptorBindings& bindings,
+                            const AccelerationBinding& acceleration) {
+    const bool traced = acceleration.topLevel != VK_NULL_HANDLE;
     const uint64_t maxTexels = context.properties().limits.maxTexelBufferElements;
     std::vector<VkDescriptorBufferInfo> infos(bindings.size());
     std::vector<VkWriteDescriptorSet> writes(bindings.size());

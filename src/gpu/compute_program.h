@@ -55,9 +55,17 @@ public:
     VkDescriptorSetLayout layout() const { return layout_; }
     VkDescriptorSet set() const { return set_; }
 
+    // Points the same bindings at other buffers (a new frame's scene): the layout, the set and
+    // so every pipeline made over the table stay. InternalError when `bindings` differ from the
+    // table's in number, binding or kind. No command buffer using the set may be in flight.
+    void rewrite(const Context& context, const DescriptorBindings& bindings,
+                 const AccelerationBinding& acceleration = {});
+
 private:
     void create(const Context& context, const DescriptorBindings& bindings,
                 const AccelerationBinding& acceleration);
+    void write(const Context& context, const DescriptorBindings& bindings,
+               const AccelerationBinding& acceleration);
     void release();
 
     VkDevice device_;
@@ -65,6 +73,8 @@ private:
     VkDescriptorPool pool_ = VK_NULL_HANDLE;
     VkDescriptorSet set_ = VK_NULL_HANDLE;
     std::vector<VkBufferView> views_; // one per texel-buffer binding
+    // (binding, descriptor type) as created, the acceleration binding last: what rewrite keeps.
+    std::vector<std::pair<uint32_t, int>> shape_;
 };
 
 // A pipeline layout over the table's one descriptor set, with `pushBytes` of push constants

@@ -26,11 +26,43 @@ gpu_types::vec3 cameraRight(const Camera& camera) {
     return glm::normalize(glm::cross(camera.forward, camera.up));
 }
 
+ShaderVariant WavefrontRenderer::variantFor(const PreparedScene& scene) const {
+    const RenderSettings& settings = settings_;
+    const Context& context = context_;
+    ShaderVariant variant = chooseVariant(scene, settings);
+    variant.surface = surfaceFeatures(scene.surface, scene.materials, texelPageBytes(context));
+    variant.rayCones = variant.surface.textures && settings.textureLod;
+    variant.packedStores = settings.packedStores && context.shaderInt64();
+    variant.rayTracing = settings.traversal == Traversal::RayTracing && !settings.megakernel;
+    if (variant.rayTracing && !context.rayTracingEnabled())
+        throw UsageError("--traversal rt: ray tracing is not enabled on device '" +
+                         context.deviceName() + "'");
+    if (variant.rayTracing && variant.motion)
+        throw UsageError("--traversal rt: motion blur (--shutter) is traced by the project's "
+                         "BVH only; use --traversal bvh");
+    if (settings.guiding && settings.pixelList)
+        throw UsageError("--guiding does not combine with --target-error yet");
+    variant.guiding = settings.guiding;
+    const VkPhysicalDeviceLimits& limits = context.properties().limits;
+    const uint64_t pageBytes =
+        settings.tablePageBytes > 0
+            ? settings.tablePageBytes
+            : std::min<uint64_t>(limits.maxStorageBufferRange,
+                                 uint64_t(limits.maxTexelBufferElements) * 16);
+    variant.trianglePages =
+        tablePaging(scene.triangles.size(), sizeof(Triangle), pageBytes, "triangles");
+    variant.bvhPages =
+        tablePaging(scene.bvhPairs.size(), sizeof(BvhPair), pageBytes, "BVH nodes");
+    variant.instancePages =
+        tablePaging(scene.instances.size(), sizeof(Instance), pageBytes, "instances");
+    return variant;
+}
+
 WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene& scene,
                                      const RenderSettings& settings,
                                      const ShaderCompiler& compiler,
                                      std::shared_ptr<const SceneBuffers> sharedScene)
-    : context_(context), settings_(settings), scene_(scene) {
+    : context_(context), settings_(settings), scene_(&scene) {
     if (settings.width == 0 || settings.height == 0 || settings.samplesPerPixel == 0 ||
         settings.maxDepth == 0)
         throw UsageError("width, height, spp and max depth must all be at least 1");
@@ -53,32 +85,7 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
     const bool cpu = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
     wavePaths_ = settings.submitBudgetSeconds > 0.0 && cpu ? std::min(pathCapacity_, 1u << 12)
                                                            : pathCapacity_;
-    variant_ = chooseVariant(scene, settings);
-    variant_.surface = surfaceFeatures(scene.surface, scene.materials, texelPageBytes(context));
-    variant_.rayCones = variant_.surface.textures && settings.textureLod;
-    variant_.packedStores = settings.packedStores && context.shaderInt64();
-    variant_.rayTracing = settings.traversal == Traversal::RayTracing && !settings.megakernel;
-    if (variant_.rayTracing && !context.rayTracingEnabled())
-        throw UsageError("--traversal rt: ray tracing is not enabled on device '" +
-                         context.deviceName() + "'");
-    if (variant_.rayTracing && variant_.motion)
-        throw UsageError("--traversal rt: motion blur (--shutter) is traced by the project's "
-                         "BVH only; use --traversal bvh");
-    if (settings.guiding && settings.pixelList)
-        throw UsageError("--guiding does not combine with --target-error yet");
-    variant_.guiding = settings.guiding;
-    const VkPhysicalDeviceLimits& limits = context.properties().limits;
-    const uint64_t pageBytes =
-        settings.tablePageBytes > 0
-            ? settings.tablePageBytes
-            : std::min<uint64_t>(limits.maxStorageBufferRange,
-                                 uint64_t(limits.maxTexelBufferElements) * 16);
-    variant_.trianglePages =
-        tablePaging(scene.triangles.size(), sizeof(Triangle), pageBytes, "triangles");
-    variant_.bvhPages =
-        tablePaging(scene.bvhPairs.size(), sizeof(BvhPair), pageBytes, "BVH nodes");
-    variant_.instancePages =
-        tablePaging(scene.instances.size(), sizeof(Instance), pageBytes, "instances");
+    variant_ = variantFor(scene);
     defines_ = variant_.defines();
     if (sharedScene && sharedScene->defines() != defines_)
         throw InternalError("scene buffers shared between renderers of different variants");
@@ -90,25 +97,15 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
                                        : PathStateUse::Wavefront;
     pathBuffers_ = std::make_unique<PathBuffers>(context, pathCapacity_, pixelCount_, pathState,
                                                  variant_);
-    DescriptorBindings bindings;
-    sceneBuffers_->appendBindings(bindings);
-    pathBuffers_->appendBindings(bindings);
-    if (samplerReadsTable(settings.sampler)) {
+    if (samplerReadsTable(settings.sampler))
         samplerTable_ = std::make_unique<Buffer>(makeSamplerTableBuffer(context, setSize()));
-        bindings.push_back(
-            {WF_BINDING_SAMPLER_TABLES, samplerTable_.get(), BufferAccess::Uint1Texels});
-    }
     if (settings.guiding) {
         const glm::vec3 radius(scene.bounds.radius);
         guide_ = std::make_unique<PathGuide>(context, scene.bounds.center - radius,
                                              scene.bounds.center + radius, pathCapacity_,
                                              settings.guideBsdfFraction);
-        guide_->appendBindings(bindings);
     }
-    AccelerationBinding acceleration;
-    if (const AccelerationStructureSet* structures = sceneBuffers_->acceleration())
-        acceleration = {WF_BINDING_TOP_LEVEL, structures->topLevel()};
-    table_ = std::make_unique<DescriptorTable>(context, bindings, acceleration);
+    bindTables();
     waves_ = std::make_unique<WaveRecorder>(context, compiler, defines_, *table_,
                                             pathBuffers_->counters, variant_,
                                             settings.megakernel, settings.maxDepth);
@@ -120,8 +117,52 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
 
 WavefrontRenderer::~WavefrontRenderer() = default;
 
+// Makes the descriptor table over the scene's tables and the renderer's own buffers, or points
+// the one already made (and the pipelines over it) at them.
+void WavefrontRenderer::bindTables() {
+    DescriptorBindings bindings;
+    sceneBuffers_->appendBindings(bindings);
+    pathBuffers_->appendBindings(bindings);
+    if (samplerTable_)
+        bindings.push_back(
+            {WF_BINDING_SAMPLER_TABLES, samplerTable_.get(), BufferAccess::Uint1Texels});
+    if (guide_)
+        guide_->appendBindings(bindings);
+    AccelerationBinding acceleration;
+    if (const AccelerationStructureSet* structures = sceneBuffers_->acceleration())
+        acceleration = {WF_BINDING_TOP_LEVEL, structures->topLevel()};
+    if (table_)
+        table_->rewrite(context_, bindings, acceleration);
+    else
+        table_ = std::make_unique<DescriptorTable>(context_, bindings, acceleration);
+}
+
+bool WavefrontRenderer::setScene(const PreparedScene& scene) {
+    if (guide_) // its tree spans the old scene's bounds
+        return false;
+    ShaderVariant variant = variantFor(scene);
+    if (variant.defines() != defines_)
+        return false;
+    // The new tables first: the old ones stay bound until the new ones are complete.
+    auto buffers = std::make_shared<const SceneBuffers>(context_, scene, variant);
+    std::swap(sceneBuffers_, buffers);
+    try {
+        bindTables();
+    } catch (...) {
+        std::swap(sceneBuffers_, buffers);
+        throw;
+    }
+    variant_ = std::move(variant);
+    scene_ = &scene;
+    camera_ = scene.camera;
+    uploadParams();
+    reset();
+    return true;
+}
+
 void WavefrontRenderer::uploadParams() {
     const Camera& camera = camera_;
+    const PreparedScene& scene = *scene_;
     RenderParams params{};
     params.cameraPosition = camera.position;
     params.tanHalfFovY = std::tan(0.5f * camera.yfov);
@@ -135,15 +176,15 @@ void WavefrontRenderer::uploadParams() {
     params.height = settings_.height;
     params.pixelCount = pixelCount_;
     params.rrDepth = settings_.rrDepth;
-    params.emitterCount = static_cast<uint32_t>(scene_.lights.emitters.size()) +
+    params.emitterCount = static_cast<uint32_t>(scene.lights.emitters.size()) +
                           (variant_.lightTree() ? 1u : 0u); // the tree's own slot
     params.pathCapacity = pathCapacity_;
-    params.sphereLightCount = scene_.lights.sphereLights;
-    params.environmentEmitter = scene_.lights.environmentEmitter;
-    params.sceneCenter = scene_.bounds.center;
-    params.sceneRadius = scene_.bounds.radius;
-    params.environmentWidth = scene_.environment.width;
-    params.environmentHeight = scene_.environment.height;
+    params.sphereLightCount = scene.lights.sphereLights;
+    params.environmentEmitter = scene.lights.environmentEmitter;
+    params.sceneCenter = scene.bounds.center;
+    params.sceneRadius = scene.bounds.radius;
+    params.environmentWidth = scene.environment.width;
+    params.environmentHeight = scene.environment.height;
     params.minThroughput = settings_.minThroughput;
     params.clampRadiance = settings_.clampRadiance;
     params.lensRadius = 0.5f * camera.aperture;

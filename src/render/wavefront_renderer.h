@@ -68,6 +68,13 @@ public:
     void restart(uint32_t seed, uint32_t sppOffset, uint32_t sampleSetSize = 0);
     // Moves the camera (and resets).
     void setCamera(const Camera& camera);
+    // Another frame of the same scene (render --frames, the viewer's playback): when `scene`
+    // needs the same shader variant, its tables replace this renderer's (rebinding the one
+    // descriptor set, so the pipelines stay), the camera becomes its camera and the film is
+    // reset; returns false, changing nothing, where the variant differs or the renderer guides
+    // (the caller then makes a new renderer). `scene` must outlive the renderer or the next
+    // setScene, as the constructor's.
+    bool setScene(const PreparedScene& scene);
     uint32_t samplesDone() const { return samplesDone_; }
     uint32_t pixelCount() const { return pixelCount_; }
     // The film: per pixel, RGB radiance sum and sample count (vec4), for display passes.
@@ -103,6 +110,8 @@ public:
     }
 
 private:
+    ShaderVariant variantFor(const PreparedScene& scene) const;
+    void bindTables();
     void uploadParams();
     void renderGuided(const std::function<void(const WaveProgress&)>& onWave,
                       const std::atomic<bool>* stop);
@@ -122,7 +131,7 @@ private:
     double secondsPerPath_ = 0.0; // measured, for sizing waves to the submit budget
     uint32_t pixelCursor_ = 0;    // pixels of sample samplesDone_ already traced
     ShaderVariant variant_;
-    const PreparedScene& scene_;
+    const PreparedScene* scene_; // setScene moves it on
     uint32_t samplesDone_ = 0;
     Camera camera_;
     ShaderDefines defines_;

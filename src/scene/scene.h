@@ -100,6 +100,9 @@ struct Scene {
     // positions: PunctualLight::motion is 1 + its first key); 0 when nothing moves.
     uint32_t motionSegments = 0;
     std::vector<glm::vec3> lightMotionKeys;
+    // The last key time of the animations played (--animation's choice, else all): 0 for a
+    // static scene. The viewer's time slider spans [0, animationSeconds].
+    double animationSeconds = 0.0;
 
     size_t worldTriangleCount() const {
         return meshes.empty() ? triangles.size() : meshes.front().firstTriangle;

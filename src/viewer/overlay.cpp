@@ -25,6 +25,7 @@ const char* const kViewerControlsHelp =
     "  C, 1-9               next camera, camera N (the file's, then the framing camera)\n"
     "  R                    reset the view to the current camera and restart\n"
     "  Space                pause / resume refinement\n"
+    "  T                    play / pause the animation (animated scenes)\n"
     "  F12 or P             screenshot: SCENE-NNN.exr (radiance) + .png (as shown)\n"
     "  H                    show / hide the overlay\n"
     "  Esc                  quit\n";
@@ -244,6 +245,7 @@ OverlayActions Overlay::build(const OverlayFacts& facts, ViewSettings& settings,
         ImGui::Begin(facts.scene.c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize);
         ImGui::PushItemWidth(ImGui::GetFontSize() * 7.0f);
         statsSection(facts);
+        animationSection(facts.animation, actions.animation);
         if (ImGui::CollapsingHeader("Render", ImGuiTreeNodeFlags_DefaultOpen))
             renderSection(settings, actions);
         if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen))

@@ -10,6 +10,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include "viewer/animation_overlay.h"
 #include "viewer/viewer.h"
 
 struct GLFWwindow;
@@ -33,6 +34,7 @@ struct OverlayFacts {
     bool paused = false;
     std::vector<std::string> cameraNames;
     uint32_t camera = 0;
+    AnimationFacts animation; // animation_overlay.h
 };
 
 // What the user asked for this frame, beyond the edited settings.
@@ -45,6 +47,7 @@ struct OverlayActions {
     bool restart = false;
     bool screenshot = false;
     bool togglePause = false;
+    AnimationActions animation; // animation_overlay.h
 };
 
 class Overlay {

@@ -10,7 +10,23 @@ namespace wf {
 
 RenderTargets::RenderTargets(const Context& context, const ShaderCompiler& compiler,
                              const PreparedScene& scene)
-    : context_(context), compiler_(compiler), scene_(scene) {}
+    : context_(context), compiler_(compiler), scene_(&scene) {}
+
+void RenderTargets::setScene(const PreparedScene& scene) {
+    scene_ = &scene;
+    if (preview_.renderer && !preview_.renderer->setScene(scene))
+        preview_ = {};
+    preview_.cameraVersion = ~uint64_t(0);
+    if (!full_.renderer)
+        return;
+    if (!full_.renderer->setScene(scene)) {
+        const SampleBudget budget = full_.budget;
+        full_ = {};
+        full_ = makeTarget(1);
+        full_.budget = budget;
+    }
+    full_.cameraVersion = ~uint64_t(0); // setScene took the file's camera: follow the view's
+}
 
 void RenderTargets::rebuild(VkExtent2D size, const RenderSettings& settings,
                             const Buffer& displayBuffer) {
@@ -52,7 +68,7 @@ RenderTarget RenderTargets::makeTarget(uint32_t divisor) {
     // The preview reads the full-size renderer's scene tables rather than a copy of its own.
     std::shared_ptr<const SceneBuffers> sharedScene =
         divisor > 1 && full_.renderer ? full_.renderer->sceneBuffers() : nullptr;
-    target.renderer = std::make_unique<WavefrontRenderer>(context_, scene_, settings, compiler_,
+    target.renderer = std::make_unique<WavefrontRenderer>(context_, *scene_, settings, compiler_,
                                                           std::move(sharedScene));
     target.display = std::make_unique<DisplayPass>(
         context_, compiler_, target.renderer->film(), DisplaySize{settings.width, settings.height},

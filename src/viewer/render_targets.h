@@ -45,6 +45,12 @@ public:
     // The divisor to use while the camera moves: 1 when a full sample fits the target.
     uint32_t movingDivisor() const;
 
+    // Another pose of the scene (the viewer's playback; `scene` must outlive the targets or the
+    // next call): each renderer takes its tables under the same pipelines (the preview then
+    // holds a copy of its own), or is rebuilt (the preview: dropped) where the shaders differ.
+    // Both follow the camera afresh and restart their accumulation.
+    void setScene(const PreparedScene& scene);
+
     // Moves `target` to `camera` unless it is there already (`version` counts camera changes).
     static void follow(RenderTarget& target, const Camera& camera, uint64_t version);
     // Renders this frame's samples into `target` (at most up to `sppLimit`, 0: no limit) and
@@ -56,7 +62,7 @@ private:
 
     const Context& context_;
     const ShaderCompiler& compiler_;
-    const PreparedScene& scene_;
+    const PreparedScene* scene_; // setScene moves it on
     RenderSettings settings_;
     VkExtent2D size_{};
     const Buffer* displayBuffer_ = nullptr;

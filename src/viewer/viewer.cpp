@@ -10,7 +10,9 @@
 
 #include "errors.h"
 #include "gpu/context.h"
+#include "render/gpu_scene/frame_scenes.h"
 #include "render/samplers/samplers.h"
+#include "scene/animation/animation_clock.h"
 #include "viewer/camera_controller.h"
 #include "viewer/camera_list.h"
 #include "viewer/frame_presenter.h"
@@ -57,7 +59,9 @@ public:
           overlay_(context_, window_.handle(), presenter_.overlayRenderPass(),
                    window_.contentScale()),
           targets_(context_, compiler_, scene_.prepared), input_(window_, overlay_),
-          overlayVisible_(options.overlay) {
+          overlayVisible_(options.overlay),
+          clock_(scene_.animationSeconds, options.fps, options.time) {
+        clock_.setPlaying(options.play);
         framebuffer_ = window_.framebufferSize();
         targets_.setTargetSeconds(settings_.targetMs / 1000.0);
         rebuildTargets();
@@ -72,6 +76,7 @@ private:
     void applyKeys(const WindowEvents& events);
     void applyOverlay(const OverlayActions& actions);
     void selectCamera(uint32_t index);
+    void repose();
     void cameraMoved() {
         ++cameraVersion_;
         lastMove_ = Clock::now();
@@ -111,9 +116,15 @@ private:
     uint32_t shownSamples_ = 0;
     uint32_t shownDivisor_ = 1;
     double frameMs_ = 0.0;
+    // Playback (animated scenes): the time shown, and each pose's scene (refit while the
+    // tree holds up), which the renderers read.
+    anim::AnimationClock clock_;
+    FrameScenes poses_{FrameBvh::Refit};
+    bool poseChanged_ = false;
     // For the closing summary.
     uint64_t fullSamples_ = 0;
     uint32_t previewFrames_ = 0;
+    uint32_t posesShown_ = 0;
 };
 
 VkExtent2D Viewer::waitForFramebuffer() {
@@ -172,6 +183,8 @@ void Viewer::applyKeys(const WindowEvents& events) {
             selectCamera(cameraIndex_);
         else if (key == GLFW_KEY_H)
             overlayVisible_ = !overlayVisible_;
+        else if (key == GLFW_KEY_T)
+            clock_.toggle();
         else if (key == GLFW_KEY_C)
             selectCamera((cameraIndex_ + 1) % scene_.cameras.cameras.size());
         else if (key >= GLFW_KEY_1 && key <= GLFW_KEY_9)
@@ -192,10 +205,23 @@ void Viewer::applyOverlay(const OverlayActions& actions) {
         targets_.full().renderer->reset();
     screenshotRequested_ |= actions.screenshot;
     paused_ ^= actions.togglePause;
+    if (actions.animation.togglePlay)
+        clock_.toggle();
+    if (actions.animation.seek)
+        poseChanged_ |= clock_.seek(actions.animation.seekTime);
+}
+
+// The scene at the clock's time: loaded and posed again, its tree refit, its tables under the
+// renderers' pipelines (render_targets.h); accumulation restarts.
+void Viewer::repose() {
+    targets_.setScene(poses_.prepare(loadPosedScene(options_, clock_.time())));
+    poseChanged_ = false;
+    ++posesShown_;
 }
 
 RenderTarget& Viewer::chooseTarget(bool forScreenshot) {
-    const bool moving = secondsSince(lastMove_) < kPreviewHoldSeconds;
+    // Playback shows each pose briefly: the preview while a full sample is over the target.
+    const bool moving = secondsSince(lastMove_) < kPreviewHoldSeconds || clock_.playing();
     const uint32_t divisor = moving && !forScreenshot ? targets_.movingDivisor() : 1;
     RenderTarget& target = divisor > 1 ? targets_.preview(divisor) : targets_.full();
     RenderTargets::follow(target, controller_.camera(), cameraVersion_);
@@ -217,6 +243,8 @@ OverlayFacts Viewer::facts() const {
     for (const NamedCamera& camera : scene_.cameras.cameras)
         facts.cameraNames.push_back(camera.name);
     facts.camera = cameraIndex_;
+    facts.animation = {clock_.animated(), clock_.playing(), clock_.time(), clock_.end(),
+                       clock_.frame(), clock_.fps()};
     return facts;
 }
 
@@ -271,7 +299,7 @@ int Viewer::run() {
     uint32_t frame = 0;
     while (!quitSignalled && !window_.shouldClose()) {
         const bool automated = options_.frames > 0 || options_.orbitDegrees != 0.0f;
-        if (!automated && !screenshotRequested_ && !refining())
+        if (!automated && !screenshotRequested_ && !refining() && !clock_.playing())
             window_.waitEvents(0.1); // nothing to refine: sleep until input
         else
             window_.pollEvents();
@@ -295,6 +323,9 @@ int Viewer::run() {
         if (moved)
             cameraMoved();
         applyOverlay(overlay_.build(facts(), settings_, overlayVisible_));
+        poseChanged_ |= clock_.advance(seconds);
+        if (poseChanged_)
+            repose();
 
         const bool screenshot = screenshotRequested_;
         RenderTarget& target = chooseTarget(screenshot);
@@ -344,6 +375,9 @@ int Viewer::run() {
                      targets_.fullSpp(),
                      presenter_.extent().width, presenter_.extent().height,
                      wall > 0.0 ? fullSamples_ / wall : 0.0);
+    if (!options_.quiet && posesShown_ > 0)
+        std::fprintf(stderr, "wavefront: %u poses of the animation shown, the last at t = %.4g s\n",
+                     posesShown_, clock_.time());
     if (context_.validationMessageCount() > 0) {
         std::fprintf(stderr, "wavefront: %u validation message(s)\n",
                      context_.validationMessageCount());

@@ -51,7 +51,9 @@ struct ViewerOptions {
     std::optional<std::string> camera;
     std::string environmentPath; // --env, replacing the scene's environment
     Instancing instancing = Instancing::Auto; // --instancing
-    double time = 0.0;                        // --time, --frame: the pose shown (static)
+    double time = 0.0;                        // --time, --frame: the pose shown first
+    double fps = 24.0;                        // --fps: playback shows frames of 1/fps
+    bool play = false;                        // --play: start playing (T plays / pauses)
     std::string animation;                    // --animation
     std::optional<int> device;
     RayTracingRequest rayTracing = RayTracingRequest::Off; // --traversal

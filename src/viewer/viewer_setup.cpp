@@ -16,22 +16,37 @@ uint32_t ViewSettings::effectiveSppLimit() const {
     return sppLimit == 0 && samplerIsFiniteSet(render.sampler) ? kFiniteSetSpp : sppLimit;
 }
 
-ViewerScene loadViewerScene(const ViewerOptions& options) {
-    std::vector<std::string> warnings;
-    Scene scene = loadGltf(options.scenePath, &warnings,
-                           GltfOptions{options.instancing, options.time, options.animation});
+namespace {
+
+Scene loadAt(const ViewerOptions& options, double time, std::vector<std::string>* warnings) {
+    Scene scene = loadGltf(options.scenePath, warnings,
+                           GltfOptions{options.instancing, time, options.animation});
     if (!options.environmentPath.empty())
         scene.environment = loadEnvironmentExr(options.environmentPath);
+    if (!scene.hasCamera)
+        scene.camera = frameBounds(scene); // as `wavefront render` does
+    return scene;
+}
+
+} // namespace
+
+ViewerScene loadViewerScene(const ViewerOptions& options) {
+    std::vector<std::string> warnings;
+    Scene scene = loadAt(options, options.time, &warnings);
     for (const std::string& line : warnings)
         if (!options.quiet)
             std::fprintf(stderr, "%s\n", line.c_str());
-    if (!scene.hasCamera)
-        scene.camera = frameBounds(scene); // as `wavefront render` does
     ViewerScene viewer;
     viewer.cameras = viewerCameras(scene);
     viewer.bounds = viewBounds(scene);
+    viewer.animationSeconds = scene.animationSeconds;
     viewer.prepared = prepareScene(std::move(scene));
     return viewer;
+}
+
+Scene loadPosedScene(const ViewerOptions& options, double time) {
+    std::vector<std::string> warnings;
+    return loadAt(options, time, &warnings);
 }
 
 WindowSize initialWindowSize(const ViewerOptions& options, const Camera& camera) {

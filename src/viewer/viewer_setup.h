@@ -16,10 +16,14 @@ struct ViewerScene {
     PreparedScene prepared;
     CameraList cameras;
     ViewBounds bounds;
+    double animationSeconds = 0.0; // the last key of the animations played (0: static)
 };
 
 // Loads options.scenePath (and --env), printing the loader's warnings unless quiet.
 ViewerScene loadViewerScene(const ViewerOptions& options);
+// The same scene posed at `time` (the playback's later frames), warnings dropped: they were
+// printed with the first pose.
+Scene loadPosedScene(const ViewerOptions& options, double time);
 
 // --width/--height as `wavefront render` reads them: a missing one follows the camera's aspect.
 WindowSize initialWindowSize(const ViewerOptions& options, const Camera& camera);

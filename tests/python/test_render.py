@@ -146,3 +146,24 @@ def test_traversal_as_the_cli(renderer, cornell, tmp_path):
                          "--seed", 5, "--traversal", "rt")
         assert np.array_equal(cli.view(np.uint32), out.image.view(np.uint32))
         assert rt.validation_messages == 0
+
+
+def test_animation_time_as_the_cli(renderer, tmp_path):
+    # time / frame / fps / animation pose the scene at load, as render's flags do: another time
+    # is another image, and each is the CLI's at that time bit for bit.
+    arm = CORNELL.parent / "animated_arm.gltf"
+    flags = dict(width=24, spp=2, max_depth=3, seed=4)
+    early = renderer.render(renderer.load(arm, time=0.25), **flags).image
+    late = renderer.render(renderer.load(arm, frame=30, fps=24, animation="play"), **flags).image
+    assert not np.array_equal(early, late)
+    for image, when in ((early, ["--time", "0.25"]), (late, ["--frame", "30", "--fps", "24"])):
+        out = tmp_path / "arm.exr"
+        run_cli("render", arm, "-o", out, "--quiet", "--width", 24, "--spp", 2,
+                "--max-depth", 3, "--seed", 4, *when)
+        cli = wf.read_exr(out)[0]
+        assert np.array_equal(cli.view(np.uint32), image.view(np.uint32))
+    # The same refusals as the CLI's, in keywords.
+    with pytest.raises(ValueError, match="time and frame"):
+        renderer.load(arm, time=1.0, frame=3)
+    with pytest.raises(wf.SceneError, match="no such animation"):
+        renderer.load(arm, animation="walk")

@@ -6,6 +6,7 @@
 #    seed, and that the PNG of the shown frame is that radiance through the display pass;
 #  - after a resize the viewer re-renders at the new size and matches a render of that size;
 #  - the moving-camera preview path runs (orbit every frame, a 1 ms frame target);
+#  - an animated scene plays (re-posed frame after frame) and, paused at --time, matches render;
 #  - SIGTERM quits cleanly: exit 0, screenshot written, no temporary file left;
 #  - keys and a mouse drag (xdotool) do what --help says;
 #  - --help lists every flag and key; no display or bad flags give one-line errors.
@@ -125,6 +126,21 @@ run "orbit" 0 "$wavefront" view "$cornell" --width 256 --height 192 --orbit 10 -
 check "orbit screenshot written" test -s "$work/orbit.png"
 check "orbit drew previews" grep -Eq "frames \([1-9][0-9]* previews\)" "$work/orbit.log"
 
+# 3b. Playback of an animated scene (--play, as T does): the scene is re-posed frame after
+#     frame under the same renderers (validation stays clean); paused at --time 0.5, the
+#     screenshot is render --time 0.5's image.
+arm="$scenes/animated_arm.gltf"
+run "play" 0 "$wavefront" view "$arm" --play --frames 12 --width 96 --target-ms 5 \
+    --screenshot "$work/play.exr"
+check "play re-posed the scene" grep -Eq "[1-9][0-9]* poses of the animation shown" \
+    "$work/play.log"
+run "view-time" 0 "$wavefront" view "$arm" "${common[@]}" "${slow[@]}" --time 0.5 \
+    --width 96 --height 64 --frames 12 --no-overlay --screenshot "$work/time.exr"
+run "render-time" 0 "$wavefront" render "$arm" "${common[@]}" --time 0.5 --width 96 \
+    --height 64 -o "$work/render-time.exr" --quiet
+check "view --time matches render --time" "$compare" "$work/time.exr" "$work/render-time.exr" \
+    --spp 8
+
 # 4. SIGTERM while refining: a clean quit that still writes the screenshot atomically.
 "$wavefront" view "$cornell" --width 128 --height 96 --screenshot "$work/term.exr" \
     >"$work/term.log" 2>&1 &
@@ -191,7 +207,7 @@ run "help" 0 "$wavefront" view --help
 for word in --width --height --spp --max-depth --rr-depth --light-sampling \
     --triangle-sampling --sphere-sampling --min-throughput --clamp --env --seed --sampler \
     --exposure --tonemap --target-ms --camera --no-overlay --device --frames --screenshot \
-    --resize-at --orbit --quiet F12 Space Esc orbit pan dolly fly; do
+    --resize-at --orbit --play --quiet F12 Space Esc orbit pan dolly fly; do
     check "view help lists $word" grep -q -- "$word" "$work/help.log"
 done
 run "no display" 1 env -u DISPLAY -u WAYLAND_DISPLAY "$wavefront" view "$cornell" --frames 1

@@ -40,7 +40,7 @@ void appendLightAndCameraMotion(const Scene& scene, PreparedScene& prepared) {
 
 } // namespace
 
-PreparedScene prepareScene(Scene scene) {
+PreparedScene prepareScene(Scene scene, std::vector<uint32_t>* order) {
     PreparedScene prepared;
     prepared.triangles = std::move(scene.triangles);
     prepared.materials = std::move(scene.materials);
@@ -78,7 +78,17 @@ PreparedScene prepareScene(Scene scene) {
         prepared.bounds = sceneBounds(prepared.triangles, prepared.punctualLights);
     }
     appendLightAndCameraMotion(scene, prepared);
+    if (order) {
+        order->resize(prepared.triangles.size());
+        for (size_t i = 0; i < prepared.triangles.size(); ++i)
+            (*order)[i] = prepared.triangles[i].pad;
+    }
     followTriangleOrder(prepared.triangles, prepared.surface);
+    prepareLights(prepared);
+    return prepared;
+}
+
+void prepareLights(PreparedScene& prepared) {
     prepared.lights = buildLightTable(prepared.triangles, prepared.materials,
                                       prepared.punctualLights, prepared.environment,
                                       prepared.bounds, prepared.surface);
@@ -87,7 +97,6 @@ PreparedScene prepareScene(Scene scene) {
                                         prepared.motionSegments);
     if (prepared.lightTree.lights < 2)
         prepared.lightTree = LightTree{}; // one light needs no tree
-    return prepared;
 }
 
 namespace {

@@ -45,7 +45,12 @@ struct PreparedScene {
     uint32_t cameraMotionKeys = 0; // 1 + the camera's first key; 0: it is still
 };
 
-PreparedScene prepareScene(Scene scene);
+// `order`, when given, receives the triangle permutation the build applied: entry i is the
+// loader's index of the triangle now at i (what scene_refit.h refits later frames by).
+PreparedScene prepareScene(Scene scene, std::vector<uint32_t>* order = nullptr);
+// prepareScene's last step, over triangles already in their tree's order: bounds, light table
+// and light tree (scene_refit.h, after refitting the tree).
+void prepareLights(PreparedScene& prepared);
 
 class SceneBuffers {
 public:

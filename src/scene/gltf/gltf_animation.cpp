@@ -109,8 +109,10 @@ anim::Keyframes readSampler(const tinygltf::Model& model, const std::string& fil
 
 std::vector<NodeAnimation> sampleAnimations(const tinygltf::Model& model, const std::string& file,
                                             AccessorReader& reader, double time,
-                                            const std::string& which) {
+                                            const std::string& which, double* lastKey) {
     std::vector<NodeAnimation> nodes(model.nodes.size());
+    if (lastKey)
+        *lastKey = 0.0;
     const std::vector<bool> chosen = chooseAnimations(model, file, which);
     for (std::size_t a = 0; a < model.animations.size(); ++a) {
         const tinygltf::Animation& animation = model.animations[a];
@@ -153,6 +155,8 @@ std::vector<NodeAnimation> sampleAnimations(const tinygltf::Model& model, const 
                                                      path, width);
             if (!chosen[a])
                 continue;
+            if (lastKey)
+                *lastKey = std::max(*lastKey, double(keys.times.back()));
             const std::vector<double> v = anim::sample(keys, time);
             NodeAnimation& target = nodes[channel.target_node];
             if (path == "translation")

@@ -30,9 +30,10 @@ std::size_t morphTargetCount(const tinygltf::Model& model, int mesh);
 
 // One entry per node. `which` is "" for every animation, else an animation's name or index
 // (InputError listing the file's animations when none matches). Time is clamped to each
-// sampler's keys.
+// sampler's keys. `lastKey`, when given, receives the chosen animations' last key time (0 for
+// none): how long they play.
 std::vector<NodeAnimation> sampleAnimations(const tinygltf::Model& model, const std::string& file,
                                             AccessorReader& reader, double time,
-                                            const std::string& which);
+                                            const std::string& which, double* lastKey = nullptr);
 
 } // namespace wf::gltf

@@ -277,7 +277,8 @@ void Converter::walkNodes(gltf::PrimitiveBuilder& builder) {
 // Samples the animations at the time, then every node's world transform (joints outside the
 // scene's tree included), parents before children via the checked parent links.
 void Converter::poseNodes() {
-    animated_ = gltf::sampleAnimations(model_, file_, reader_, options_.time, options_.animation);
+    animated_ = gltf::sampleAnimations(model_, file_, reader_, options_.time, options_.animation,
+                                       &scene_.animationSeconds);
     nodeWorld_ = gltf::nodeWorldTransforms(model_, file_, parent_, animated_);
 }
 
