@@ -2,7 +2,7 @@
 # --shutter on the command line: scenes/animated_arm.gltf's sliding block blurs (an image unlike
 # the sharp frame, WF_MOTION in the variant, its skinned arm and morphed tent warned as drawn at
 # the shutter's centre); a shutter within which nothing moves leaves the image bit for bit the
-# still one; converge takes --frame beside its --time budget; malformed intervals, the viewer and --traversal rt are refused in one line, exit 2.
+# still one; a sequence through a shutter equals its frames' own renders; converge takes --frame beside its --time budget; malformed intervals, the viewer and --traversal rt are refused in one line, exit 2.
 # Usage: test_motion_cli.sh PATH/TO/wavefront PATH/TO/wf_compare_images SOURCE_DIR
 set -u
 wavefront=$1
@@ -28,6 +28,16 @@ expect "nothing moving: bit for bit the still image" same "$work/late.exr" "$wor
 check "--shutter with --fps" 0 render --quiet --time 0.5 --shutter -3:3 --fps 12 \
     -o "$work/fps.exr"
 expect "--shutter -3:3 at 12 fps is -6:6 at 24" same "$work/blur.exr" "$work/fps.exr"
+
+# A sequence through a shutter: one renderer for the frames, each frame its own render's image.
+mkdir -p "$work/seq"
+check "--frames --shutter" 0 render --quiet --frames 6..18:12 --shutter -2:2 \
+    -o "$work/seq/f_%04d.exr"
+for f in 6 18; do
+    check "--frame $f --shutter" 0 render --quiet --frame "$f" --shutter -2:2 -o "$work/one_$f.exr"
+    expect "--frames --shutter: frame $f equals its own render" \
+        same "$work/seq/f_$(printf %04d "$f").exr" "$work/one_$f.exr"
+done
 
 # converge: --time is its budget, the scene's time --frame (which once clashed with it).
 check "converge --frame --shutter --time" 0 "$wavefront" converge "$scene" -o "$work/conv" \
