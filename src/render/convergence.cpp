@@ -1,6 +1,7 @@
 #include "render/convergence.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <set>
 #include <sstream>
 
@@ -19,6 +20,7 @@ void ConvergenceMethod::applyTo(RenderSettings& settings) const {
     settings.lightSelection = lightSelection;
     settings.pixelList = adaptive;
     settings.guiding = guided;
+    if (std::getenv("WFX_LAST")) settings.guideCombineIterations = false; // XXX experiment
 }
 
 std::string methodWords() {
