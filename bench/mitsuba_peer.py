@@ -9,7 +9,7 @@ needs `pip install mitsuba` (into a virtual environment of your own, not the pro
     /tmp/mi/bin/python bench/mitsuba_peer.py [--variant scalar_rgb|llvm_ad_rgb|cuda_ad_rgb]
         [--scene cornell|mirror-glass|mesh|tiny-light|lamps|instances] [--wavefront build/wavefront] [--width 256]
         [--spp 64] [--max-depth 8] [--reference-spp 512] [--repeats 3] [--sampler NAME]
-        [--json bench/results/peer.json]
+        [--guiding on|off] [--json bench/results/peer.json]
 
 `llvm_ad_rgb` (Dr.Jit's LLVM JIT, vectorised: what a CPU user would pick) needs an LLVM that
 Dr.Jit can drive: on Debian 12 `apt install libllvm19`; the script points DRJIT_LIBLLVM_PATH at
@@ -27,6 +27,10 @@ A third row times Wavefront with Mitsuba's own estimator (`--sampler independent
 --triangle-sampling area`: independent random numbers, the light sampled by area, as Mitsuba's
 path integrator does), so that paths/s compares the same work; its relMSE is measured against
 Wavefront's reference (the same expectation).
+
+`--guiding on` renders Wavefront's timed row with path guiding (its training inside the timed
+seconds, as the JSON's `seconds` counts it); its reference, the matched-estimator row and the
+megakernel ratio stay unguided (the reference has the same expectation either way).
 """
 import argparse
 import json
@@ -222,6 +226,8 @@ def main():
     parser.add_argument("--reference-spp", type=int, default=512)
     parser.add_argument("--sampler", help="Wavefront's --sampler (default: its own default; "
                         "Mitsuba's is independent)")
+    parser.add_argument("--guiding", default="off", choices=["off", "on"],
+                        help="Wavefront's --guiding for its timed row (default off)")
     parser.add_argument("--repeats", type=int, default=3,
                         help="timed renders of each, alternating (median time, mean relMSE)")
     parser.add_argument("--json", help="write the numbers here")
@@ -261,7 +267,8 @@ def main():
             mi_runs.append(render_mitsuba(mi, gltf, folder, w, h, spp, depth, args.rr_depth + 1,
                                           seed))
             wf_runs.append(render_wavefront(mi, args.wavefront, gltf, folder, w, h, spp, depth,
-                                            args.rr_depth, "test", seed, args.sampler))
+                                            args.rr_depth, "test", seed, args.sampler,
+                                            flags=["--guiding", args.guiding]))
             matched_runs.append(render_wavefront(mi, args.wavefront, gltf, folder, w, h, spp,
                                                  depth, args.rr_depth, "matched", seed,
                                                  flags=MITSUBA_ESTIMATOR))
@@ -282,8 +289,8 @@ def main():
                   rows["Wavefront"]["relMSETimesSeconds"])
     matched = rows[matched_name]["pathsPerSecond"] / rows[mitsuba_name]["pathsPerSecond"]
     print("%s %dx%d, %d spp, max depth %d; references %d spp; %d alternating timed renders "
-          "each (median seconds, mean relMSE)" % (args.scene, w, h, spp, depth,
-                                                  args.reference_spp, args.repeats))
+          "each (median seconds, mean relMSE); Wavefront guiding %s" % (
+              args.scene, w, h, spp, depth, args.reference_spp, args.repeats, args.guiding))
     print("| renderer | seconds | paths/s | relMSE | relMSE x seconds | image mean |")
     print("|---|---|---|---|---|---|")
     for name, r in rows.items():
@@ -303,6 +310,7 @@ def main():
                        "width": w, "height": h, "spp": spp, "maxDepth": depth,
                        "referenceSpp": args.reference_spp, "repeats": args.repeats,
                        "wavefrontSampler": args.sampler or "default",
+                       "wavefrontGuiding": args.guiding,
                        "renderers": rows,
                        "referencesRelMSE": check, "wavefrontOverMitsubaPathsPerSecond": ratio,
                        "wavefrontOverMitsubaEfficiency": efficiency,

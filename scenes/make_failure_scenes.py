@@ -15,6 +15,10 @@ light transport). Each stays a small, self-contained glTF; run `python3 make_fai
 - many_lamps.gltf: 1,024 small lamps (6 cm octahedra shaded on top, lit below, 0.3-0.7 m above
   a floor, emission over 400:1) among a few blocks. Choosing a light by power sends most shadow rays to bright lamps
   metres away; the light tree picks the lamps near and facing each point.
+- narrow_gap.gltf: a closed grey room lit only through a 12 cm opening in one wall by a small
+  lamp outside, whose beam lights a spot on the floor. Shadow rays from almost every point in
+  the room hit the wall; the light arrives by way of the spot, which BSDF sampling finds
+  rarely: path guiding learns where it is (issue 30's failure scene for unguided MIS).
 """
 
 import math
@@ -244,11 +248,56 @@ def many_lamps():
     return g
 
 
+def rect(p0, p1, p2, p3, facing):
+    """A quad facing `facing`, whichever way round its corners were given."""
+    from make_cornell_box import cross, dot
+    if dot(cross(sub(p1, p0), sub(p2, p0)), facing) < 0:
+        p0, p1, p2, p3 = p3, p2, p1, p0
+    return quad(p0, p1, p2, p3, facing)
+
+
+def narrow_gap():
+    g = GltfWriter()
+    grey = material(g, "grey", (0.6, 0.6, 0.6), lambert=True)
+    lamp = material(g, "lamp", (0.0, 0.0, 0.0), lambert=True,
+                    emission=(2.0e6, 1.9e6, 1.7e6))
+    # The room: x, z in [-2, 2], y in [0, 2.5]; the wall at x = 2 has a 12 cm square opening
+    # around (2, wy, 0).
+    x0, x1, h, wy, a = -2.0, 2.0, 2.5, 1.76, 0.06
+    inward_x = (-1, 0, 0)
+    quads = [
+        rect((x0, 0, -2), (x1, 0, -2), (x1, 0, 2), (x0, 0, 2), (0, 1, 0)),      # floor
+        rect((x0, h, -2), (x1, h, -2), (x1, h, 2), (x0, h, 2), (0, -1, 0)),     # ceiling
+        rect((x0, 0, -2), (x0, h, -2), (x0, h, 2), (x0, 0, 2), (1, 0, 0)),      # far wall
+        rect((x0, 0, -2), (x1, 0, -2), (x1, h, -2), (x0, h, -2), (0, 0, 1)),    # back
+        rect((x0, 0, 2), (x1, 0, 2), (x1, h, 2), (x0, h, 2), (0, 0, -1)),       # front
+        # The wall with the opening: below, above, and either side of it.
+        rect((x1, 0, -2), (x1, 0, 2), (x1, wy - a, 2), (x1, wy - a, -2), inward_x),
+        rect((x1, wy + a, -2), (x1, wy + a, 2), (x1, h, 2), (x1, h, -2), inward_x),
+        rect((x1, wy - a, -2), (x1, wy - a, -a), (x1, wy + a, -a), (x1, wy + a, -2), inward_x),
+        rect((x1, wy - a, a), (x1, wy - a, 2), (x1, wy + a, 2), (x1, wy + a, a), inward_x),
+    ]
+    g.node(name="room", mesh=g.mesh("room", [g.primitive(quads, grey)]))
+    # The lamp outside: 20 cm square, 4.6 m from the opening, facing it; its beam lands on
+    # the floor as a spot about 0.5 m long near (-1.1, 0, 0).
+    centre, s = (6.0, 4.0, 0.0), 0.1
+    facing = normalized(sub((x1, wy, 0.0), centre))
+    u = (0.0, 0.0, 1.0)
+    v = normalized((facing[1] * u[2] - facing[2] * u[1], facing[2] * u[0] - facing[0] * u[2],
+                    facing[0] * u[1] - facing[1] * u[0]))
+    corner = lambda i, j: tuple(c + s * (i * uu + j * vv) for c, uu, vv in zip(centre, u, v))
+    g.node(name="lamp", mesh=g.mesh("lamp", [g.primitive(
+        [rect(corner(-1, -1), corner(1, -1), corner(1, 1), corner(-1, 1), facing)], lamp)]))
+    camera(g, (1.6, 1.5, -1.8), (-1.5, 0.3, 0.8), 1.1)
+    return g
+
+
 if __name__ == "__main__":
     here = os.path.dirname(os.path.abspath(__file__))
     for name, build in (("tiny_light", tiny_light), ("veach_mis", veach_mis),
                         ("sphere_near_floor", sphere_near_floor),
-                        ("glass_caustic", glass_caustic), ("many_lamps", many_lamps)):
+                        ("glass_caustic", glass_caustic), ("many_lamps", many_lamps),
+                        ("narrow_gap", narrow_gap)):
         doc = build()
         doc.doc["asset"]["generator"] = "scenes/make_failure_scenes.py"
         doc.write(os.path.join(here, name + ".gltf"))

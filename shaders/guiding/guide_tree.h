@@ -150,6 +150,41 @@ WF_INLINE float guidePdfSquare(uint root, vec2 x) {
     return pdf;
 }
 
+// One walk down the frozen quadtree at `root` for the one-sample mixture's continuation, which
+// needs per lane either a guide sample or the guide's density at a BSDF-sampled point: with
+// `draw`, quadrants are chosen by u (guideSampleSquare) and the point drawn is returned; else
+// by the point x (guidePdfSquare), which is returned. squarePdf: the density on the square at
+// the returned point. One loop for both keeps SIMD lanes of either kind walking together
+// (a GPU or lavapipe runs both branches of a divergent one), where a sample and then its pdf
+// took two walks.
+WF_INLINE vec2 guideSampleOrPdfSquare(uint root, bool draw, vec2 u, vec2 x,
+                                      WF_OUT(float) squarePdf) {
+    squarePdf = 1.0f;
+    vec2 origin = vec2(0.0f);
+    float size = 1.0f;
+    vec2 r = draw ? u : x; // rescaled to the current node's square as the walk descends
+    uint node = root;
+    for (uint depth = 0u; depth < WF_GUIDE_MAX_DIR_DEPTH; ++depth) {
+        GuideDirNode n = WF_GUIDE_SAMPLING(node);
+        uint q;
+        if (draw) {
+            q = guideChooseQuadrant(n.prob, r);
+        } else {
+            uint xh = r.x >= 0.5f ? 1u : 0u;
+            uint yh = r.y >= 0.5f ? 1u : 0u;
+            q = xh | (yh << 1u);
+            r = min(2.0f * r - vec2(float(xh), float(yh)), vec2(WF_GUIDE_ONE_MINUS_EPS));
+        }
+        squarePdf *= 4.0f * guideQuadrantProb(n.prob, q);
+        size *= 0.5f;
+        origin += size * vec2(float(q & 1u), float(q >> 1u));
+        node = guideQuadrantChild(n.child, q);
+        if (node == 0u)
+            break;
+    }
+    return draw ? origin + size * r : x;
+}
+
 // A world direction from the frozen quadtree at `root`, with its solid-angle pdf.
 WF_INLINE vec3 guideSample(uint root, vec2 u, WF_OUT(float) pdf) {
     float squarePdf;

@@ -280,13 +280,7 @@ void shadePathVertex(inout PathVertex v) {
     bool fromGuide = guideHere && uLobe >= guideFraction;
     if (guideHere && !fromGuide)
         uLobe = min(uLobe / guideFraction, 0.99999994);
-    if (fromGuide) {
-        float unusedPdf;
-        vec3 w = guideSample(guideRoot, uDirection, unusedPdf);
-        s.wi = vec3(dot(w, tangent), dot(w, bitangent), dot(w, n));
-        s.isDelta = false;
-        s.eta = 1.0; // only Russian roulette reads it: any value stays unbiased
-    } else {
+    if (!fromGuide) {
 #if WF_BSDF_LAYERS
         if (!layeredSample(bsdf, layers, woLocal, uLobe, uDirection, s))
             return;
@@ -295,13 +289,27 @@ void shadePathVertex(inout PathVertex v) {
             return;
 #endif
     }
-    vec3 wi = normalize(tangent * s.wi.x + bitangent * s.wi.y + n * s.wi.z);
+    vec3 wi;
     if (guideHere) {
+        // One quadtree walk per lane: the guide's sample, or its density at the BSDF's.
+        vec2 x = fromGuide ? vec2(0.0)
+                           : guideDirToSquare(normalize(tangent * s.wi.x + bitangent * s.wi.y +
+                                                        n * s.wi.z));
+        float squarePdf;
+        x = guideSampleOrPdfSquare(guideRoot, fromGuide, uDirection, x, squarePdf);
+        if (fromGuide) {
+            vec3 w = guideSquareToDir(x);
+            s.wi = vec3(dot(w, tangent), dot(w, bitangent), dot(w, n));
+            s.isDelta = false;
+            s.eta = 1.0; // only Russian roulette reads it: any value stays unbiased
+        }
+        wi = normalize(tangent * s.wi.x + bitangent * s.wi.y + n * s.wi.z);
         if (s.isDelta) {
             s.weight /= guideFraction; // a Dirac lobe only the BSDF's share can choose
         } else {
-            // Either branch: f |cos| over the mixture's pdf, the guide's evaluated (not the
-            // sampled value), so that both sides of MIS see one function of the direction.
+            // Either branch: f |cos| over the mixture's pdf, so that both sides of MIS see one
+            // function of the direction (the NEE side evaluates the guide's pdf at the light's
+            // direction; the walk's pdf is that function at this one).
 #if WF_BSDF_LAYERS
             vec3 f = layeredEval(bsdf, layers, woLocal, s.wi);
             float directionPdf = layeredPdf(bsdf, layers, woLocal, s.wi);
@@ -309,9 +317,11 @@ void shadePathVertex(inout PathVertex v) {
             vec3 f = bsdfEval(bsdf, woLocal, s.wi);
             float directionPdf = bsdfPdf(bsdf, woLocal, s.wi);
 #endif
-            s.pdf = guideMixturePdf(directionPdf, guidePdf(guideRoot, wi), guideFraction);
+            s.pdf = guideMixturePdf(directionPdf, squarePdf * WF_GUIDE_INV_4PI, guideFraction);
             s.weight = s.pdf > 0.0 ? f * (abs(s.wi.z) / s.pdf) : vec3(0.0);
         }
+    } else {
+        wi = normalize(tangent * s.wi.x + bitangent * s.wi.y + n * s.wi.z);
     }
 #else
 #if WF_BSDF_LAYERS

@@ -50,7 +50,8 @@ const CommandSpec& convergeSpec() {
                                           "selection), no-randomize, triangle-area, "
                                           "sphere-area, adaptive (each checkpoint rendered "
                                           "afresh with that mean spp, placed by a pilot whose "
-                                          "time counts) (default: every sampler with mis, then "
+                                          "time counts), guided (path guiding; each checkpoint "
+                                          "trains afresh, its training time included) (default: every sampler with mis, then "
                                           "sobol+bsdf, sobol+nee)"},
                 {"--seeds", "", "N", "seeds per method, at least 5 (default 5)"},
                 {"--max-spp", "", "N", "stop doubling here (default 65536)"},
@@ -175,7 +176,8 @@ int runConvergeCommand(const std::vector<std::string>& args) {
     applyImageSize(parsed, scene.camera, size, base);
     applyRenderFlags(parsed, kDefaultMaxDepth, base); // --max-depth and --rr-depth here
     if (base.guiding)
-        throw UsageError("--guiding on: only `render` guides yet (converge does not)");
+        throw UsageError("converge: guide a method with the word guided (--methods "
+                         "sobol+mis,sobol+mis+guided), not --guiding");
     if (given.width && (uint32_t(given.width) != base.width ||
                         uint32_t(given.height) != base.height))
         throw InputError("reference " + *parsed.value("--reference") + " is " +

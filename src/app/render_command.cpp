@@ -130,12 +130,18 @@ void reportGuiding(bool verbose, const RenderStats& stats, StatsContext& statsCo
                       jsonNumber(it.seconds) + ", \"rebuildSeconds\": " +
                       jsonNumber(it.rebuildSeconds) + "}";
     }
+    std::string weights;
+    for (size_t i = 0; i < stats.guideWeights.size(); ++i)
+        weights += std::string(i ? ", " : "") + jsonNumber(stats.guideWeights[i]);
     if (verbose)
-        std::fprintf(stderr, "wavefront: guiding: %.3f s training, the image from the last %u spp\n",
-                     training, stats.guideFinalSamples);
+        std::fprintf(stderr, "wavefront: guiding: %.3f s training, the image from %u spp (%s)\n",
+                     training, stats.guideFinalSamples,
+                     weights.empty() ? "the last iteration"
+                                     : ("iterations weighted " + weights).c_str());
     statsContext.extraFields.push_back(
         {"guiding", "{\"iterations\": [" + iterations + "], \"trainingSeconds\": " +
-                        jsonNumber(training) + ", \"imageSpp\": " +
+                        jsonNumber(training) + ", \"weights\": [" + weights + "]" +
+                        ", \"imageSpp\": " +
                         std::to_string(stats.guideFinalSamples) + ", \"memoryBytes\": " +
                         std::to_string(stats.guideBytes) + "}"});
 }

@@ -1,6 +1,7 @@
 #include "render/convergence.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <set>
 #include <sstream>
 
@@ -18,6 +19,8 @@ void ConvergenceMethod::applyTo(RenderSettings& settings) const {
     settings.sphereSolidAngle = sphereSolidAngle;
     settings.lightSelection = lightSelection;
     settings.pixelList = adaptive;
+    settings.guiding = guided;
+    if (std::getenv("WFX_LAST")) settings.guideCombineIterations = false; // XXX experiment
 }
 
 std::string methodWords() {
@@ -25,7 +28,7 @@ std::string methodWords() {
     for (const std::string& name : samplerNames())
         words += name + ", ";
     return words + "bsdf, nee, mis, uniform, power, tree, no-randomize, triangle-area, "
-                   "sphere-area, adaptive";
+                   "sphere-area, adaptive, guided";
 }
 
 ConvergenceMethod parseMethod(const std::string& text) {
@@ -63,6 +66,8 @@ ConvergenceMethod parseMethod(const std::string& text) {
             method.sphereSolidAngle = false;
         } else if (word == "adaptive") {
             method.adaptive = true;
+        } else if (word == "guided") {
+            method.guided = true;
         } else {
             throw UsageError("--methods: unknown word '" + word + "' in '" + text +
                              "' (words: " + methodWords() + ")");
@@ -74,6 +79,9 @@ ConvergenceMethod parseMethod(const std::string& text) {
     if (method.adaptive && samplerIsFiniteSet(method.sampler))
         throw UsageError("--methods: adaptive gives pixels parts of a finite set ('" + text +
                          "'); pick sobol, halton, independent or bluenoise");
+    if (method.guided && method.adaptive)
+        throw UsageError("--methods: guided does not combine with adaptive yet ('" + text +
+                         "'): adaptive renders lists of pixels, guiding trains on whole images");
     method.name = std::string(samplerName(method.sampler)) + "+" +
                   lightSamplingName(method.lightSampling) +
                   (method.randomize ? "" : "+no-randomize") +
@@ -82,7 +90,7 @@ ConvergenceMethod parseMethod(const std::string& text) {
                   (method.lightSelection == LightSelection::Auto
                        ? ""
                        : std::string("+") + lightSelectionName(method.lightSelection)) +
-                  (method.adaptive ? "+adaptive" : "");
+                  (method.adaptive ? "+adaptive" : "") + (method.guided ? "+guided" : "");
     return method;
 }
 
@@ -145,6 +153,8 @@ MethodRun runConvergence(const Context& context, const PreparedScene& scene,
     // finishes compiling them), which would land on the first checkpoint's time.
     if (method.adaptive)
         renderer.renderPixelList({0}, 0, 1);
+    else if (method.guided)
+        renderer.renderGuided(std::min(4u, settings.samplesPerPixel)); // trains too
     else
         renderer.renderSamples(1);
     const bool finiteSet = samplerIsFiniteSet(method.sampler);
@@ -174,6 +184,14 @@ MethodRun runConvergence(const Context& context, const PreparedScene& scene,
                 points.push_back(
                     measure(spp, result.stats, std::move(result.rgb),
                             std::move(result.estimate), reference, keep));
+            } else if (method.guided) {
+                // Not progressive: the schedule depends on the budget, so each checkpoint
+                // trains its own guide from scratch, and its time includes the training.
+                renderer.restart(seed, 0, finiteSet ? spp : 0);
+                renderer.renderGuided(spp);
+                points.push_back(measure(
+                    spp, renderer.stats(), renderer.readImage(),
+                    estimateFilmError(renderer.readMoments(), settings.sampler), reference, keep));
             } else {
                 if (finiteSet)
                     renderer.restart(seed, 0, spp);

@@ -28,13 +28,16 @@ struct ConvergenceMethod {
     // `adaptive`: each checkpoint is a render afresh whose mean sample count is the
     // checkpoint's, placed by a pilot (render/adaptive_sampling.h), the pilot's time included.
     bool adaptive = false;
+    // `guided`: path guiding (render/guiding/); each checkpoint is a render afresh with that
+    // budget, its training iterations and host rebuilds in its time.
+    bool guided = false;
 
     void applyTo(RenderSettings& settings) const;
 };
 
 // A method from words joined by '+', in any order: a sampler name, bsdf|nee|mis, a light
 // selection uniform|power|tree, and the switches no-randomize, triangle-area, sphere-area,
-// adaptive. Unnamed parts take render's defaults.
+// adaptive, guided. Unnamed parts take render's defaults.
 // UsageError on an unknown or repeated word.
 ConvergenceMethod parseMethod(const std::string& text);
 // Comma-separated methods; UsageError if empty or if two name the same method.

@@ -74,10 +74,13 @@ struct RenderSettings {
     // sets it low to spread a small scene over pages as a large one spreads.
     uint64_t tablePageBytes = 0;
     // --guiding on: path guiding (render/guiding/path_guide.h, WF_GUIDING). render() trains the
-    // guide over iterations of 1, 2, 4, ... spp (images discarded) while the last iteration
-    // keeps at least half of samplesPerPixel, then renders the rest with the frozen guide.
-    // Sample indices continue across iterations, so the image's samples never trained it.
+    // guide over iterations of 1, 2, 4, ... spp while the last iteration keeps at least half
+    // of samplesPerPixel, then renders the rest with the frozen guide. Sample indices
+    // continue across iterations. The image: guideCombineIterations, every iteration's image
+    // weighted by its inverse variance (render/guiding/guide_combination.h); else the last
+    // iteration's alone.
     bool guiding = false;
+    bool guideCombineIterations = true;
     float guideBsdfFraction = 0.5f; // the BSDF's share of the one-sample mixture
     // At most this many training iterations (tests set 0 to render with a guide they froze
     // themselves through WavefrontRenderer::guide()).

@@ -23,7 +23,7 @@ struct RenderStats {
     // each depth; the last entry also counts every deeper bounce (WF_TRACKED_DEPTHS entries).
     std::vector<uint64_t> depthRays;
     std::vector<uint64_t> depthShadowRays;
-    // --guiding: the training iterations (the image is the last, untraining one's).
+    // --guiding: the training iterations.
     struct GuideIterationStats {
         uint32_t samplesPerPixel = 0;
         uint64_t spatialLeaves = 0;
@@ -32,7 +32,9 @@ struct RenderStats {
         double rebuildSeconds = 0.0; // reading back, rebuilding and uploading the trees
     };
     std::vector<GuideIterationStats> guideIterations;
-    uint32_t guideFinalSamples = 0; // samples per pixel in the image
+    uint32_t guideFinalSamples = 0; // samples per pixel in the image (all iterations combined)
+    // Combined images: each iteration's weight (training iterations, then the last), sum 1.
+    std::vector<double> guideWeights;
     uint64_t guideBytes = 0;        // device memory of the guide
 };
 

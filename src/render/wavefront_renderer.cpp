@@ -7,6 +7,7 @@
 #include "errors.h"
 #include "gpu/compute_program.h"
 #include "gpu/context.h"
+#include "render/guiding/guide_combination.h"
 #include "render/guiding/path_guide.h"
 #include "render/path_buffers.h"
 #include "render/samplers/sampler_tables.h"
@@ -318,7 +319,7 @@ uint32_t WavefrontRenderer::renderSamples(uint32_t samples) {
 void WavefrontRenderer::render(const std::function<void(const WaveProgress&)>& onWave,
                                const std::atomic<bool>* stop) {
     if (guide_) {
-        renderGuided(onWave, stop);
+        renderGuided(settings_.samplesPerPixel, onWave, stop);
         return;
     }
     const auto start = std::chrono::steady_clock::now();
@@ -368,17 +369,45 @@ void WavefrontRenderer::renderPixelList(const std::vector<uint32_t>& pixels,
     }
 }
 
-void WavefrontRenderer::renderGuided(const std::function<void(const WaveProgress&)>& onWave,
+namespace {
+
+// The training schedule: the spp of training iteration `iteration` (0-based) when `done`
+// samples per pixel of a `budget` are done, or 0 when training is over: doubling from 1 while
+// the rest of the budget after the iteration still keeps at least half of it.
+uint32_t trainingIterationSpp(uint32_t budget, uint32_t done, uint32_t iteration,
+                              uint32_t maxIterations) {
+    if (iteration >= maxIterations || iteration >= 31)
+        return 0;
+    const uint32_t spp = 1u << iteration;
+    return 2ull * (uint64_t(done) + spp) <= budget ? spp : 0;
+}
+
+} // namespace
+
+void WavefrontRenderer::renderGuided(uint32_t budget,
+                                     const std::function<void(const WaveProgress&)>& onWave,
                                      const std::atomic<bool>* stop) {
+    if (!guide_)
+        throw InternalError("renderGuided: the renderer was made without guiding");
     if (settings_.timeLimitSeconds > 0.0)
         throw UsageError("--guiding does not combine with --time-limit yet");
-    const uint32_t budget = settings_.samplesPerPixel;
+    // Host work between iterations (tree rebuilds, reading films back, the combination)
+    // counts in the render's time, as a pass of its own.
+    auto hostSince = [this](std::chrono::steady_clock::time_point start) {
+        const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        stats_.seconds += seconds;
+        stats_.passMilliseconds["guide (host)"] += 1000.0 * seconds;
+        return seconds;
+    };
+    const bool combine = settings_.guideCombineIterations && pathBuffers_->momentFilm;
+    guiding::ImageCombiner combiner(pixelCount_);
     guide_->setTraining(true);
-    // Train while the iteration after this one still gets at least half the budget.
-    for (uint32_t spp = 1, iteration = 0;
-         iteration < settings_.guideMaxIterations && 2ull * (samplesDone_ + spp) <= budget &&
-         !(stop && stop->load());
-         spp *= 2, ++iteration) {
+    for (uint32_t iteration = 0; !(stop && stop->load()); ++iteration) {
+        const uint32_t spp =
+            trainingIterationSpp(budget, samplesDone_, iteration, settings_.guideMaxIterations);
+        if (spp == 0)
+            break;
         clearFilm();
         const auto start = std::chrono::steady_clock::now();
         renderSamples(spp);
@@ -386,7 +415,11 @@ void WavefrontRenderer::renderGuided(const std::function<void(const WaveProgress
         it.samplesPerPixel = spp;
         it.seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const auto host = std::chrono::steady_clock::now();
+        if (combine)
+            combiner.add(readMoments(), spp);
         it.rebuildSeconds = guide_->endIteration(iteration, pixelCount_);
+        hostSince(host);
         guiding::SDTreeStats tree = guide_->tree().stats();
         it.spatialLeaves = tree.spatialLeaves;
         it.directionalNodes = tree.samplingNodes;
@@ -404,6 +437,18 @@ void WavefrontRenderer::renderGuided(const std::function<void(const WaveProgress
     }
     stats_.guideFinalSamples = samplesDone_ - first;
     stats_.guideBytes = guide_->deviceBytes();
+    if (!combine || combiner.iterations() == 0 || samplesDone_ == first)
+        return;
+    const auto host = std::chrono::steady_clock::now();
+    combiner.add(readMoments(), samplesDone_ - first);
+    const guiding::CombinedImage image = combiner.combine();
+    if (!image.film.empty()) {
+        pathBuffers_->film.upload(image.film);
+        pathBuffers_->momentFilm.upload(image.moments);
+        stats_.guideFinalSamples = image.samplesPerPixel;
+        stats_.guideWeights = image.weights;
+    }
+    hostSince(host);
 }
 
 void WavefrontRenderer::clearFilm() {

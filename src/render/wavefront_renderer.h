@@ -50,6 +50,12 @@ public:
     // next sample pass.
     void render(const std::function<void(const WaveProgress&)>& onWave = {},
                 const std::atomic<bool>* stop = nullptr);
+    // Guided renderers only: trains afresh over a budget of `budget` samples per pixel (at
+    // most settings.samplesPerPixel; render() is this with that) and leaves the image in the
+    // film. Call restart() first for a render from scratch (converge: one per checkpoint).
+    void renderGuided(uint32_t budget,
+                      const std::function<void(const WaveProgress&)>& onWave = {},
+                      const std::atomic<bool>* stop = nullptr);
     // Progressive use (the viewer): adds `samples` more samples per pixel, in as many waves as
     // needed, and returns the total so far.
     uint32_t renderSamples(uint32_t samples);
@@ -113,8 +119,6 @@ private:
     ShaderVariant variantFor(const PreparedScene& scene) const;
     void bindTables();
     void uploadParams();
-    void renderGuided(const std::function<void(const WaveProgress&)>& onWave,
-                      const std::atomic<bool>* stop);
     void clearFilm();
     uint32_t advance(uint32_t maxSamples);
     // Samples [firstSample, firstSample + samples) of sppOffset on, of pixels [pixelBase,

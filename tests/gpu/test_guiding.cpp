@@ -1,7 +1,8 @@
 // Path guiding (render/guiding/, WF_GUIDING): guided renders agree with unguided ones per 8x8
 // region within 5 standard errors over seeds (on the Cornell box, the glass caustic scene and
-// with a deliberately wrong frozen guide: unbiased, only noisier), a seed gives the same image
-// twice, and no sample is NaN or Inf.
+// with a deliberately wrong frozen guide: unbiased, only noisier), whether the image combines
+// every iteration by inverse variance (the default) or keeps the last one, a seed gives the
+// same image twice, and no sample is NaN or Inf.
 #include <gtest/gtest.h>
 
 #include "gpu_test_util.h"
@@ -15,7 +16,7 @@ namespace {
 
 constexpr uint32_t kSize = 32, kBlock = 8;
 
-RenderSettings settingsFor(uint32_t spp, uint32_t seed, bool guiding) {
+RenderSettings settingsFor(uint32_t spp, uint32_t seed, bool guiding, bool combine = true) {
     RenderSettings settings;
     settings.width = kSize;
     settings.height = kSize;
@@ -23,6 +24,7 @@ RenderSettings settingsFor(uint32_t spp, uint32_t seed, bool guiding) {
     settings.maxDepth = 6;
     settings.seed = seed;
     settings.guiding = guiding;
+    settings.guideCombineIterations = combine;
     return settings;
 }
 
@@ -41,26 +43,44 @@ Scene loadScene(const std::string& name) {
     return loadGltf(std::string(WF_TEST_SCENE_DIR) + "/" + name + ".gltf");
 }
 
-void expectGuidedUnbiased(const std::string& name) {
+void expectGuidedUnbiased(const std::string& name, bool combine = true) {
     Scene scene = loadScene(name);
     Reference reference = unguidedReference(scene);
     std::vector<std::vector<float>> images;
     for (uint32_t seed = 1; seed <= 8; ++seed) {
-        RenderResult result = renderScene(scene, settingsFor(64, seed, true));
+        RenderResult result = renderScene(scene, settingsFor(64, seed, true, combine));
         EXPECT_EQ(result.stats.nonFiniteSamples, 0u);
         EXPECT_EQ(result.stats.guideIterations.size(), 5u); // 1+2+4+8+16, then 33 spp
-        EXPECT_EQ(result.stats.guideFinalSamples, 33u);
+        if (combine) {
+            // Inverse-variance weights over the iterations of 2 spp and more, summing to 1.
+            EXPECT_EQ(result.stats.guideFinalSamples, 63u);
+            const std::vector<double>& w = result.stats.guideWeights;
+            EXPECT_EQ(w.size(), 6u);
+            double sum = 0.0;
+            for (size_t k = 0; k < w.size(); ++k) {
+                EXPECT_EQ(w[k] > 0.0, k > 0) << "iteration " << k;
+                sum += w[k];
+            }
+            EXPECT_NEAR(sum, 1.0, 1e-9);
+        } else {
+            EXPECT_EQ(result.stats.guideFinalSamples, 33u);
+            EXPECT_TRUE(result.stats.guideWeights.empty());
+        }
         images.push_back(std::move(result.rgb));
     }
     EXPECT_EQ(expectRegionsUnbiased(images, reference.rgb, reference.variance, kSize, kSize,
-                                    kBlock, name + " guided"),
+                                    kBlock, name + (combine ? " guided" : " guided, last only")),
               16);
     EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
 }
 
 TEST(Guiding, CornellBoxUnbiased) { expectGuidedUnbiased("cornell_box"); }
 
+// The glass caustic's fireflies are where weights estimated from the images' own samples
+// could bias a combination: an iteration that caught one weighs less.
 TEST(Guiding, GlassCausticUnbiased) { expectGuidedUnbiased("glass_caustic"); }
+
+TEST(Guiding, LastIterationAloneUnbiased) { expectGuidedUnbiased("cornell_box", false); }
 
 TEST(Guiding, SameSeedSameImage) {
     Scene scene = loadScene("glass_caustic");

@@ -134,6 +134,26 @@ TEST(GuideTree, SampledPdfEqualsEvaluatedPdf) {
     EXPECT_LT(mismatches, samples / 1000);
 }
 
+// The shade pass's single walk (guideSampleOrPdfSquare) is exactly guideSampleSquare when it
+// draws and guidePdfSquare when it evaluates: the same point, the same density, bit for bit.
+TEST(GuideTree, OneWalkSamplesAndEvaluatesAsTheTwoWalks) {
+    Fixture f;
+    std::mt19937 rng(13);
+    for (int i = 0; i < 20000; ++i) {
+        uint root = f.flat.samplingBase[size_t(i) % f.flat.samplingBase.size()];
+        vec2 u(wf::test::uniform01(rng), wf::test::uniform01(rng));
+        float sampledPdf, walkPdf;
+        vec2 x = f.view.guideSampleSquare(root, u, sampledPdf);
+        vec2 y = f.view.guideSampleOrPdfSquare(root, true, u, vec2(0.0f), walkPdf);
+        ASSERT_EQ(x, y);
+        ASSERT_EQ(sampledPdf, walkPdf);
+        vec2 point(wf::test::uniform01(rng), wf::test::uniform01(rng));
+        y = f.view.guideSampleOrPdfSquare(root, false, vec2(0.0f), point, walkPdf);
+        ASSERT_EQ(point, y);
+        ASSERT_EQ(f.view.guidePdfSquare(root, point), walkPdf);
+    }
+}
+
 TEST(GuideTree, MixtureIsPositiveWhereTheBsdfIsAndSamplesItsPdf) {
     Fixture f;
     const uint root = f.flat.samplingBase[0];
