@@ -74,15 +74,21 @@ RenderSettings smallSettings() {
     return settings;
 }
 
+// The file through a shutter open over [open, close] seconds.
+Scene loadThroughShutter(const std::string& file, double open, double close,
+                         std::vector<std::string>& warnings) {
+    GltfOptions options;
+    options.shutterOpen = open;
+    options.shutterClose = close;
+    options.time = 0.5 * (open + close);
+    return loadGltf(file, &warnings, options);
+}
+
 TEST(MotionBlur, ShutterMatchesTheMeanOfStillFramesWithin5Se) {
     TempDir dir;
     const std::string file = movingFile(dir);
-    GltfOptions blurred;
-    blurred.shutterOpen = 0.0;
-    blurred.shutterClose = 1.0;
-    blurred.time = 0.5;
     std::vector<std::string> warnings;
-    const Scene moving = loadGltf(file, &warnings, blurred);
+    const Scene moving = loadThroughShutter(file, 0.0, 1.0, warnings);
     ASSERT_EQ(moving.motionSegments, 8u);
     ASSERT_EQ(moving.placements.size(), 1u); // the block, instanced to be keyed
     EXPECT_EQ(moving.placements[0].motion.size(), 9u);
@@ -149,12 +155,8 @@ TEST(MotionBlur, ShutterMatchesTheMeanOfStillFramesWithin5Se) {
 TEST(MotionBlur, NothingMovingLeavesTheImageBitIdentical) {
     TempDir dir;
     const std::string file = movingFile(dir);
-    GltfOptions blurred;
-    blurred.shutterOpen = 2.0;
-    blurred.shutterClose = 3.0;
-    blurred.time = 2.5;
     std::vector<std::string> warnings;
-    const Scene late = loadGltf(file, &warnings, blurred);
+    const Scene late = loadThroughShutter(file, 2.0, 3.0, warnings);
     EXPECT_EQ(late.motionSegments, 0u);
     GltfOptions still;
     still.time = 2.5;
