@@ -2,6 +2,7 @@
 
 #include <cstring>
 
+#include "errors.h"
 #include "passes/shade_kinds.h"
 #include "scene/bvh/bvh_tuning.h"
 #include "scene/bvh/instance_bvh.h"
@@ -186,8 +187,15 @@ SceneBuffers::SceneBuffers(const Context& context, const PreparedScene& scene,
     }
     if (variant.rayTracing)
         acceleration_ = buildSceneAcceleration(context, scene, variant);
-    if (variant.motion)
+    if (variant.motion) {
+        const uint64_t bytes = scene.motionKeys.size() * sizeof(glm::vec4);
+        if (bytes > context.properties().limits.maxStorageBufferRange)
+            throw UsageError("--shutter: the moving things' keys need " +
+                             std::to_string(bytes >> 20) + " MiB, over this device's " +
+                             std::to_string(context.properties().limits.maxStorageBufferRange >> 20) +
+                             " MiB per buffer (fewer moving instances, or no --shutter)");
         motionKeys_ = uploadTable(context, "motion keys", scene.motionKeys);
+    }
 }
 
 void SceneBuffers::appendBindings(
