@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "errors.h"
+#include "gpu/context.h"
 #include "passes/shade_kinds.h"
 #include "scene/bvh/bvh_tuning.h"
 #include "scene/bvh/instance_bvh.h"
