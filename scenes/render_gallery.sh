@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Renders each failure scene with each method at equal samples for the README's gallery:
 # docs/images/failures/<scene>_<method>.png, and three frames of the animated scene
-# (docs/images/animation/). Usage: scenes/render_gallery.sh [build/wavefront]
+# (docs/images/animation/) and one through a shutter (motion blur). Usage: scenes/render_gallery.sh [build/wavefront]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 wavefront=${1:-build/wavefront}
@@ -33,4 +33,8 @@ mkdir -p "$anim"
 "$wavefront" render scenes/animated_arm.gltf --frames 0..24:12 -o "$tmp/arm_%04d.exr" \
     --width 300 --spp 64 --seed 1 --quiet
 for f in 0000 0012 0024; do mv "$tmp/arm_$f.png" "$anim/arm_$f.png"; done
-echo "wrote 3 frames to $anim"
+# Frame 12 again through a shutter of 4 frames (1/6 s at 24 fps): motion blur.
+"$wavefront" render scenes/animated_arm.gltf --frame 12 --shutter -2:2 -o "$tmp/arm_blur.exr" \
+    --width 300 --spp 256 --seed 1 --quiet 2>/dev/null
+mv "$tmp/arm_blur.png" "$anim/arm_0012_shutter.png"
+echo "wrote 4 frames to $anim"

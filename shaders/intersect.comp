@@ -46,6 +46,9 @@ void main() {
     uint bin = WF_SHADE_BINS;
     if (inQueue) {
         uint path = rayQueueAt(pass.depth, index);
+#if WF_MOTION
+        wfRayTime = rayTime[path];
+#endif
         uvec4 hit = intersectClosest(rayOriginAt(path).xyz, rayDirectionAt(path).xyz);
         hits[index] = wfPack(hit);
         bin = shadeBinOf(hit);
@@ -64,6 +67,9 @@ void main() {
     if (index >= counters.rayArgs.count)
         return;
     uint path = rayQueueAt(pass.depth, index);
+#if WF_MOTION
+    wfRayTime = rayTime[path];
+#endif
     hits[index] = wfPack(intersectClosest(rayOriginAt(path).xyz, rayDirectionAt(path).xyz));
 #endif
 }

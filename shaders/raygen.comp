@@ -30,6 +30,9 @@ void main() {
     throughput[path] = wfPack(vec4(1.0));
     radiance[path] = wfPack(vec4(0.0));
     rayQueues[path] = path;
+#if WF_MOTION
+    rayTime[path] = wfRayTime; // drawn by cameraRay
+#endif
 #if WF_GUIDING
     guideStartPath(path);
 #endif

@@ -50,6 +50,9 @@ void main() {
         v.pixel = wavePathPixel(pass, path);
         v.sampleIndex = wavePathSample(pass, path);
         v.depth = pass.depth;
+#if WF_MOTION
+        wfRayTime = rayTime[path];
+#endif
 #if WF_GUIDING
         v.path = path;
         guideTakeRadianceBefore(path, radianceAt(path).rgb);

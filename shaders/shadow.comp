@@ -18,6 +18,9 @@ void main() {
         return;
     uvec4 origin = shadowOriginAt(index);
     uint path = origin.w;
+#if WF_MOTION
+    wfRayTime = rayTime[path]; // the connection is made at the path's time
+#endif
     // The segment spans the whole connection; both ends are offset off their surfaces, so the
     // shading triangle lies before t = 0, and the light it ends on is left out of the test.
     vec4 segment = shadowDirectionAt(index);

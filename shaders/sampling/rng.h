@@ -11,6 +11,8 @@
 //   0-1               pixel position inside the pixel (box filter)
 //   2-3               with a thin lens only (WF_THIN_LENS): the point on the lens, so that
 //                     pinhole renders keep their numbering
+//   next 2            with motion blur only (WF_MOTION): the ray's time within the shutter
+//                     (the first of the pair, a 1D sample), so still renders keep theirs
 //   per bounce d:     WF_DIM_BOUNCE_BASE + d * WF_DIMS_PER_BOUNCE + offset, offset:
 //     0               light choice
 //     1-2             point on the light
@@ -51,11 +53,21 @@ namespace wf::gpu_types {
 #ifndef WF_THIN_LENS
 #define WF_THIN_LENS 0
 #endif
+#ifndef WF_MOTION
+#define WF_MOTION 0
+#endif
+// The camera's dimensions: the point in the pixel, the point on the lens (WF_THIN_LENS), the
+// time within the shutter (WF_MOTION, one dimension of a pair, so bounces start on a pair).
 #define WF_DIM_LENS 2u
 #if WF_THIN_LENS
-#define WF_DIM_BOUNCE_BASE 4u
+#define WF_DIM_TIME 4u
 #else
-#define WF_DIM_BOUNCE_BASE 2u
+#define WF_DIM_TIME 2u
+#endif
+#if WF_MOTION
+#define WF_DIM_BOUNCE_BASE (WF_DIM_TIME + 2u)
+#else
+#define WF_DIM_BOUNCE_BASE WF_DIM_TIME
 #endif
 #define WF_DIMS_PER_BOUNCE 8u
 #define WF_DIM_LIGHT_CHOICE 0u

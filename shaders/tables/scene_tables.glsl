@@ -124,7 +124,8 @@ Material materialAt(uint index) {
 
 #if WF_HAS_INSTANCES
 
-Instance instanceAt(uint index) {
+// As stored; instanceAt (motion.glsl) places a moving one at the ray's time.
+Instance instanceRecordAt(uint index) {
     uvec4 t6 = instanceTexel(index, 6u);
     return Instance(uintBitsToFloat(instanceTexel(index, 0u)),
                     uintBitsToFloat(instanceTexel(index, 1u)),
@@ -159,7 +160,8 @@ uvec4 lightTreeTrailAt(uint emitter) { return wfTexel(lightTreeTrailTexels, emit
 #endif
 
 #if WF_HAS_LIGHTS
-PunctualLight lightAt(uint index) {
+// As stored; lightAt (motion.glsl) moves a moving one to the ray's time.
+PunctualLight lightRecordAt(uint index) {
     uint base = index * WF_PUNCTUAL_LIGHT_TEXELS;
     uvec4 a = wfTexel(lightTexels, base);
     uvec4 b = wfTexel(lightTexels, base + 1u);
@@ -167,7 +169,7 @@ PunctualLight lightAt(uint index) {
     uvec4 d = wfTexel(lightTexels, base + 3u);
     return PunctualLight(uintBitsToFloat(a.xyz), a.w, uintBitsToFloat(b.xyz),
                          uintBitsToFloat(b.w), uintBitsToFloat(c.xyz), uintBitsToFloat(c.w),
-                         uintBitsToFloat(d.x), d.y, uintBitsToFloat(d.z), uintBitsToFloat(d.w));
+                         uintBitsToFloat(d.x), d.y, d.z, uintBitsToFloat(d.w));
 }
 #endif
 

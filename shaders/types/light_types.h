@@ -25,7 +25,9 @@ struct PunctualLight {
     float cosInner;  // spot: cos(innerConeAngle)
     float cosOuter;  // spot: cos(outerConeAngle)
     uint emitter;    // this light's entry in the emitter table (for MIS when a ray hits it)
-    float pad1;
+    // WF_MOTION: 0 for a still light, else 1 + its first key in the motion-key table (one
+    // position per key); zero-initialised lights are still.
+    uint motion;
     float pad2;
 };
 

@@ -73,6 +73,9 @@ namespace wf::gpu_types {
 #define WF_BINDING_KIND_QUEUES 99      // WF_SHADE_BINS: per bin, pathCapacity queue slots
 #define WF_BINDING_KIND_QUEUE_TEXELS 100 // the same, read as R32UI texels
 #define WF_BINDING_TOP_LEVEL 101 // WF_RAY_TRACING: the scene's top-level acceleration structure
+// WF_MOTION (motion.glsl): the moving things' keys over the shutter, and each path's time.
+#define WF_BINDING_MOTION_KEYS 102 // vec4[]
+#define WF_BINDING_RAY_TIME 103    // float per path: its time within the shutter, in [0, 1)
 // WF_GUIDING (shaders/guiding/guide_bindings.glsl): the path guide's SD-tree and records.
 #define WF_BINDING_GUIDE_PARAMS 120   // GuideParams
 #define WF_BINDING_GUIDE_SPATIAL 121  // GuideSpatialNode[]
@@ -123,7 +126,13 @@ struct RenderParams {
     float lensRadius;    // thin lens (WF_THIN_LENS): half the aperture
     float focusDistance; // along cameraForward, to the plane in focus
     float orthoHalfHeight; // > 0: an orthographic camera, half the view's height in scene units
-    uint pad1;
+    // WF_MOTION: keys evenly spaced over the shutter, segments + 1 of them per moving thing
+    // (motion.glsl); 0 for a still camera, else 1 + its first key (3 vec4 per key).
+    uint motionSegments;
+    uint cameraMotionKeys;
+    uint pad2;
+    uint pad3;
+    uint pad4;
 };
 
 // VkDispatchIndirectCommand followed by the item count the dispatch covers.
@@ -188,7 +197,8 @@ struct PassConstants {
 
 #ifdef __cplusplus
 } // namespace wf::gpu_types
-static_assert(sizeof(wf::gpu_types::RenderParams) == 144);
+static_assert(sizeof(wf::gpu_types::RenderParams) == 160);
+static_assert(offsetof(wf::gpu_types::RenderParams, motionSegments) == 140);
 static_assert(offsetof(wf::gpu_types::RenderParams, sceneCenter) == 96);
 static_assert(offsetof(wf::gpu_types::RenderParams, clampRadiance) == 124);
 static_assert(offsetof(wf::gpu_types::RenderParams, seed) == 44);

@@ -60,12 +60,16 @@ struct Instance {
     vec4 worldFromObject2;
     uint blasRoot; // the pair entry that holds its mesh BVH's root children
     uint flags;    // WF_INSTANCE_*
-    uint pad0;
+    // WF_INSTANCE_MOVING: its first key in the motion-key table (motion.glsl), 3 rows of
+    // worldFromObject per key; the maps above are then the shutter's centre.
+    uint motionKeys;
     uint pad1;
 };
 
 // The transform mirrors space (negative determinant): front faces and tangent frames flip.
 #define WF_INSTANCE_MIRRORED 1u
+// The placement moves within the shutter (WF_MOTION): a ray sees it at the ray's time.
+#define WF_INSTANCE_MOVING 2u
 
 #define WF_BVH_COUNT_BITS 5u
 #define WF_BVH_MAX_LEAF_COUNT 31u // (1 << WF_BVH_COUNT_BITS) - 1

@@ -108,3 +108,6 @@ vec4 wfPack(vec4 v) { return v; }
 #define WF_MISS 0xffffffffu
 #define WF_SPHERE_HIT 0x80000000u // hits.w = WF_SPHERE_HIT | sphere light index
 #define WF_NO_SPHERE 0xffffffffu
+
+// instanceAt and lightAt: the records at the path's time (motion.glsl).
+#include "wave/motion.glsl"

@@ -68,7 +68,7 @@ const CommandSpec& convergeSpec() {
                 {"--no-plot", "", "", "write CSV and JSON only, no charts"},
                 instancingOption(),
             },
-            animationOptions(),
+            animationOptions(false),
             {
                 deviceOption(),
                 traversalOption(),
@@ -154,7 +154,14 @@ int runConvergeCommand(const std::vector<std::string>& args) {
     const bool quiet = parsed.has("--quiet");
 
     const std::string scenePath = parsed.positional.front();
-    Scene scene = loadSceneWithFlags(parsed, scenePath);
+    // --time is the render budget here: the scene's time is --frame N / --fps, else 0.
+    if (parsed.has("--fps") && !parsed.has("--frame") && !parsed.has("--shutter"))
+        throw UsageError("--fps applies to --frame or --shutter");
+    const double sceneTime = parsed.has("--frame")
+                                 ? double(parsed.uintValue("--frame", 0, 0, 1u << 30)) /
+                                       parsed.floatValue("--fps", 24.0f, 1e-3f, 1e6f)
+                                 : 0.0;
+    Scene scene = loadSceneWithFlags(parsed, scenePath, nullptr, sceneTime);
     std::vector<float> reference;
     ExrImage given;
     if (auto path = parsed.value("--reference"))

@@ -155,7 +155,10 @@ std::string renderSettingsKey(const RenderSettings& s, const ParsedArgs& parsed)
            (parsed.has("--frame") ? " frame " + *parsed.value("--frame") + " fps " +
                                         parsed.value("--fps").value_or("24")
                                   : "") +
-           (parsed.has("--animation") ? " animation " + *parsed.value("--animation") : "");
+           (parsed.has("--animation") ? " animation " + *parsed.value("--animation") : "") +
+           (parsed.has("--shutter") ? " shutter " + *parsed.value("--shutter") + " fps " +
+                                          parsed.value("--fps").value_or("24")
+                                    : "");
 }
 
 // --target-error refuses what would need a sample range it does not have.

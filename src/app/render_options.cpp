@@ -75,14 +75,18 @@ OptionSpec traversalOption() {
             "auto (default: rt where the device has ray-tracing pipelines and is a GPU, else "
             "bvh; on lavapipe bvh measured faster), bvh (the project's BVH in compute) or rt "
             "(the driver's acceleration structures through ray-tracing pipelines; refused "
-            "where the device has none)"};
+            "where the device has none, and with --shutter; auto takes bvh with --shutter)"};
 }
 
 RayTracingRequest traversalRequest(const ParsedArgs& parsed) {
     const std::string mode = parsed.choiceValue("--traversal", "auto", {"auto", "bvh", "rt"});
-    return mode == "rt"    ? RayTracingRequest::Required
-           : mode == "bvh" ? RayTracingRequest::Off
-                           : RayTracingRequest::Auto;
+    // Motion blur runs in the project's BVH only (motion.glsl), so auto takes it there.
+    if (mode == "rt" && parsed.has("--shutter"))
+        throw UsageError("--traversal rt: motion blur (--shutter) is traced by the project's "
+                         "BVH only; use --traversal bvh or auto");
+    return mode == "rt"                           ? RayTracingRequest::Required
+           : mode == "bvh" || parsed.has("--shutter") ? RayTracingRequest::Off
+                                                      : RayTracingRequest::Auto;
 }
 
 Traversal traversalFor(const Context& context) {
@@ -112,22 +116,64 @@ OptionSpec instancingOption() {
                                         "more), on (always) or off (flattened); default auto"};
 }
 
-std::vector<OptionSpec> animationOptions() {
-    return {{"--time", "", "SECONDS", "pose the scene's animations, skins and morph targets at "
-                                      "this time (default 0: their start; clamped to each "
-                                      "animation's keys)"},
+std::vector<OptionSpec> animationOptions(bool withTime) {
+    std::vector<OptionSpec> options = {
+        {"--time", "", "SECONDS", "pose the scene's animations, skins and morph targets at this "
+                                  "time (default 0: their start; clamped to each animation's "
+                                  "keys)"},
             {"--frame", "", "N", "pose at frame N, the time N / --fps (instead of --time)"},
-            {"--fps", "", "F", "frames per second of --frame and --frames (default 24)"},
+            {"--fps", "", "F", "frames per second of --frame, --frames and --shutter (default "
+                               "24)"},
             {"--animation", "", "NAME|INDEX", "play only this animation of the file (default: "
-                                              "every animation at once, as viewers do)"}};
+                                              "every animation at once, as viewers do)"},
+            {"--shutter", "", "OPEN:CLOSE", "motion blur: the shutter's interval in frames around "
+                                            "the scene's time (e.g. -0.25:0.25, 1/--fps seconds "
+                                            "a frame); each camera ray takes a time in it, "
+                                            "moving nodes' meshes, cameras and lights are seen "
+                                            "there; skinned, morphed or emissive meshes stay at "
+                                            "its centre (warned). Default: none"}};
+    if (!withTime)
+        options.erase(options.begin());
+    return options;
+}
+
+void applyShutter(const ParsedArgs& parsed, GltfOptions& options) {
+    const auto text = parsed.value("--shutter");
+    if (!text)
+        return;
+    const std::string usage = "--shutter " + *text + ": expected OPEN:CLOSE in frames, OPEN <= "
+                                                     "CLOSE, e.g. -0.25:0.25";
+    const size_t colon = text->find(':');
+    if (colon == std::string::npos)
+        throw UsageError(usage);
+    auto number = [&](const std::string& part) {
+        size_t used = 0;
+        double value = 0.0;
+        try {
+            value = std::stod(part, &used);
+        } catch (const std::exception&) {
+            throw UsageError(usage);
+        }
+        if (used != part.size() || !std::isfinite(value) || std::abs(value) > 1e6)
+            throw UsageError(usage);
+        return value;
+    };
+    const double open = number(text->substr(0, colon));
+    const double close = number(text->substr(colon + 1));
+    if (open > close)
+        throw UsageError(usage);
+    const double fps = parsed.floatValue("--fps", 24.0f, 1e-3f, 1e6f);
+    options.shutterOpen = options.time + open / fps;
+    options.shutterClose = options.time + close / fps;
+    options.time = 0.5 * (options.shutterOpen + options.shutterClose);
 }
 
 double sceneTimeFrom(const ParsedArgs& parsed) {
     if (parsed.has("--time") && parsed.has("--frame"))
         throw UsageError("--time and --frame both set the scene's time: give one");
     if (parsed.has("--fps") && !parsed.has("--frame") && !parsed.has("--frames") &&
-        !parsed.has("--play"))
-        throw UsageError("--fps applies to --frame or --frames (view: and --play)");
+        !parsed.has("--shutter") && !parsed.has("--play"))
+        throw UsageError("--fps applies to --frame, --frames or --shutter (view: and --play)");
     const double fps = parsed.floatValue("--fps", 24.0f, 1e-3f, 1e6f);
     if (parsed.has("--frame"))
         return double(parsed.uintValue("--frame", 0, 0, 1u << 30)) / fps;
@@ -210,6 +256,8 @@ Scene loadSceneWithFlags(const ParsedArgs& parsed, const std::string& path,
     GltfOptions options;
     options.time = time ? *time : sceneTimeFrom(parsed);
     options.animation = parsed.value("--animation").value_or("");
+    applyShutter(parsed, options);
+    traversalRequest(parsed); // refuses rt with --shutter before the scene's warnings print
     if (auto mode = parsed.value("--instancing"))
         options.instancing = parseInstancing(*mode);
     const auto start = std::chrono::steady_clock::now();

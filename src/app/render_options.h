@@ -14,6 +14,7 @@
 #include "gpu/context.h"
 #include "render/wavefront_renderer.h"
 #include "scene/scene.h"
+#include "scene/gltf/gltf_loader.h"
 #include "scene/scene_summary.h"
 
 namespace wf {
@@ -36,9 +37,14 @@ OptionSpec cameraOption();      // --camera: one of the file's cameras
 OptionSpec envOption();
 OptionSpec instancingOption(); // --instancing auto|on|off         // --env
 std::vector<OptionSpec> lensOptions(); // --aperture, --focus-distance
-std::vector<OptionSpec> animationOptions(); // --time, --frame, --fps, --animation
+// --time, --frame, --fps, --animation, --shutter; without `withTime` no --time (converge's
+// --time is its render budget: its scene time is --frame N / --fps).
+std::vector<OptionSpec> animationOptions(bool withTime = true);
 
 // The scene's time in seconds from --time, or --frame / --fps (UsageError when both are given).
+// --shutter OPEN:CLOSE (frames, at --fps) around options.time: the shutter's interval in
+// seconds, and options.time moved to its centre (UsageError on a malformed interval).
+void applyShutter(const ParsedArgs& parsed, GltfOptions& options);
 double sceneTimeFrom(const ParsedArgs& parsed);
 
 // depthOptions, samplingOptions and --no-randomize into `settings` (UsageError on a bad value).

@@ -112,6 +112,9 @@ int runViewCommand(const std::vector<std::string>& args) {
     if (auto mode = parsed.value("--instancing"))
         options.instancing = parseInstancing(*mode);
     options.time = sceneTimeFrom(parsed);
+    if (parsed.has("--shutter"))
+        throw UsageError("--shutter: the viewer shows one time (render, bench and converge "
+                         "blur motion)");
     options.animation = parsed.value("--animation").value_or("");
     options.fps = parsed.floatValue("--fps", 24.0f, 1e-3f, 1e6f);
     options.play = parsed.has("--play");

@@ -33,6 +33,8 @@ PathBuffers::PathBuffers(const Context& context, uint32_t pathCapacity, uint32_t
     throughput = Buffer(context, "throughput", uint64_t(pathCapacity) * 16);
     hits = Buffer(context, "hits", uint64_t(pathCapacity) * 16);
     rayQueues = Buffer(context, "ray queues", uint64_t(pathCapacity) * 2 * 4);
+    if (variant.motion)
+        rayTime = Buffer(context, "ray times", uint64_t(pathCapacity) * 4);
     if (variant.shadeKinds != 0) // at most 3 x 4 bytes x 4 M paths: within 128 MiB
         kindQueues =
             Buffer(context, "shade bins", uint64_t(pathCapacity) * variant.shadeBins() * 4);
@@ -75,6 +77,7 @@ void PathBuffers::appendBindings(DescriptorBindings& bindings) const {
         {WF_BINDING_RAY_CONE_TEXELS, &rayCones, BufferAccess::Uint2Texels},
         {WF_BINDING_KIND_QUEUES, &kindQueues},
         {WF_BINDING_KIND_QUEUE_TEXELS, &kindQueues, BufferAccess::Uint1Texels},
+        {WF_BINDING_RAY_TIME, &rayTime},
     };
     for (const DescriptorBinding& binding : all)
         if (*binding.buffer)
@@ -86,7 +89,7 @@ void PathBuffers::appendMemoryReport(
     for (const Buffer* buffer :
          {&params, &counters, &film, &rayOrigin, &rayDirection, &throughput, &radiance, &hits,
           &shadowOrigin, &shadowDirection, &shadowRadiance, &rayQueues, &aovPaths, &aovFilm,
-          &momentFilm, &activePixels, &rayCones, &kindQueues})
+          &momentFilm, &activePixels, &rayCones, &kindQueues, &rayTime})
         if (*buffer)
             report.emplace_back(buffer->name(), buffer->size());
 }

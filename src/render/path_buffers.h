@@ -42,6 +42,7 @@ struct PathBuffers {
     Buffer momentFilm;   // WF_SECOND_MOMENT: per pixel, the sum of radiance squared
     Buffer activePixels; // WF_ADAPTIVE: the pixel list waves cover
     Buffer rayCones;     // WF_RAY_CONES: per path, the ray's cone width and spread (vec2)
+    Buffer rayTime;      // WF_MOTION: per path, its time within the shutter (float)
     Buffer kindQueues;   // WF_SHADE_BINS: per shade bin, pathCapacity slots of the ray queue
 };
 

@@ -61,6 +61,7 @@ ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& se
     variant.adaptive = settings.pixelList;
     variant.thinLens = scene.camera.aperture > 0.0f;
     variant.instances = !scene.instances.empty();
+    variant.motion = scene.motionSegments > 0;
     variant.sampler = settings.sampler;
     variant.randomizeSamples = settings.randomizeSamples;
     return variant;
@@ -114,6 +115,8 @@ ShaderDefines ShaderVariant::defines() const {
             {"WF_INSTANCE_PAGE_SHIFT", std::to_string(instancePages.shift)}};
     if (rayTracing)
         defines.emplace_back("WF_RAY_TRACING", "1");
+    if (motion) // defined only then, so still scenes' shaders are as before
+        defines.emplace_back("WF_MOTION", "1");
     if (shadeKinds != 0) {
         defines.push_back({"WF_SHADE_BINS", std::to_string(shadeBins())});
         defines.push_back({"WF_LIGHT_HIT_BIN", std::to_string(lightHitBin(shadeKinds))});

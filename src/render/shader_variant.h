@@ -54,6 +54,7 @@ struct ShaderVariant {
     // (--traversal rt); defined only then, so the BVH variants' shaders are as before.
     bool rayTracing = false;
     bool guiding = false;             // WF_GUIDING: the path guide's mixture and training
+    bool motion = false;              // WF_MOTION: something moves within the shutter
     TablePages trianglePages;         // WF_TRIANGLE_PAGES, _SHIFT: set by the renderer
     TablePages bvhPages;              // WF_BVH_PAGES, _SHIFT: set by the renderer
     TablePages instancePages;         // WF_INSTANCE_PAGES, _SHIFT: set by the renderer

@@ -37,6 +37,9 @@ ShaderVariant WavefrontRenderer::variantFor(const PreparedScene& scene) const {
     if (variant.rayTracing && !context.rayTracingEnabled())
         throw UsageError("--traversal rt: ray tracing is not enabled on device '" +
                          context.deviceName() + "'");
+    if (variant.rayTracing && variant.motion)
+        throw UsageError("--traversal rt: motion blur (--shutter) is traced by the project's "
+                         "BVH only; use --traversal bvh");
     if (settings.guiding && settings.pixelList)
         throw UsageError("--guiding does not combine with --target-error yet");
     variant.guiding = settings.guiding;
@@ -187,6 +190,9 @@ void WavefrontRenderer::uploadParams() {
     params.lensRadius = 0.5f * camera.aperture;
     params.focusDistance = camera.focusDistance;
     params.orthoHalfHeight = camera.orthoHalfHeight;
+    params.motionSegments = scene.motionSegments;
+    // A camera set since (the viewer's) has no keys: it stays where it is put.
+    params.cameraMotionKeys = camera.motion.empty() ? 0u : scene.cameraMotionKeys;
     pathBuffers_->params.upload(&params, sizeof params);
 }
 

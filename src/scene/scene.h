@@ -21,6 +21,13 @@ using gpu_types::Material;
 using gpu_types::PunctualLight;
 using gpu_types::Triangle;
 
+// Where a moving camera is at one key of the shutter (motion blur).
+struct CameraKey {
+    glm::vec3 position;
+    glm::vec3 forward; // unit
+    glm::vec3 up;      // unit, orthogonal to forward
+};
+
 struct Camera {
     glm::vec3 position{0.0f, 0.0f, 0.0f};
     glm::vec3 forward{0.0f, 0.0f, -1.0f}; // unit, world space
@@ -35,6 +42,9 @@ struct Camera {
     // Orthographic (glTF ymag): half the view's height in scene units, rays parallel to
     // `forward` (the lens is not used); 0 is a perspective camera.
     float orthoHalfHeight = 0.0f;
+    // A camera that moves within the shutter: Scene::motionSegments + 1 keys evenly spaced
+    // over it (the fields above are its pose at the shutter's centre); empty when still.
+    std::vector<CameraKey> motion;
 };
 
 // An equirectangular environment map (longitude along x, +Y up), linear RGB radiance.
@@ -53,8 +63,11 @@ struct MeshRange {
 
 // One node's placement of a MeshRange.
 struct MeshPlacement {
-    glm::mat4 worldFromObject{1.0f};
+    glm::mat4 worldFromObject{1.0f}; // at the shutter's centre where it moves
     uint32_t mesh = 0; // index into Scene::meshes
+    // A placement that moves within the shutter: Scene::motionSegments + 1 worldFromObject
+    // keys evenly spaced over it; empty when still.
+    std::vector<glm::mat4> motion;
 };
 
 // An axis-aligned box; empty (lo > hi) until something grows it.
@@ -85,6 +98,11 @@ struct Scene {
     // The last key time of the animations played (--animation's choice, else all): 0 for a
     // static scene. The viewer's time slider spans [0, animationSeconds].
     double animationSeconds = 0.0;
+    // Motion blur (--shutter): what moves within the shutter has motionSegments + 1 keys
+    // evenly spaced over it (placements' and cameras' `motion`, and here the moving lights'
+    // positions: PunctualLight::motion is 1 + its first key); 0 when nothing moves.
+    uint32_t motionSegments = 0;
+    std::vector<glm::vec3> lightMotionKeys;
 
     size_t worldTriangleCount() const {
         return meshes.empty() ? triangles.size() : meshes.front().firstTriangle;

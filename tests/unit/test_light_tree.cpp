@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "chi_square.h"
+#include "scene/lights/light_table.h"
 #include "scene/lights/light_tree.h"
 
 namespace wf {
@@ -221,6 +222,43 @@ TEST(LightTree, OneLightOrNoneMakesNoTree) {
     float pmf = 0.0f;
     EXPECT_EQ(walk.lightTreeSample(glm::vec3(100.0f), glm::vec3(0.0f), 0.5f, pmf), 0u);
     EXPECT_EQ(pmf, 1.0f);
+}
+
+} // namespace
+} // namespace wf
+
+namespace wf {
+namespace {
+
+// Motion blur: a light's keys over the shutter (light.motion = 1 + its first key) widen its
+// leaf and so the root to cover every key, so that no receiver ever gives zero importance to a
+// light that reaches it at some time within the shutter.
+TEST(LightTree, MovingLightsBoundsCoverEveryKey) {
+    std::vector<Triangle> triangles;
+    std::vector<Material> materials(1);
+    std::vector<PunctualLight> lights;
+    for (int i = 0; i < 4; ++i) {
+        PunctualLight light{};
+        light.type = WF_LIGHT_SPHERE;
+        light.position = glm::vec3(float(i), 0.0f, 0.0f);
+        light.radius = 0.1f;
+        light.intensity = glm::vec3(1.0f);
+        lights.push_back(light);
+    }
+    const uint32_t segments = 2;
+    std::vector<glm::vec4> keys = {{3, 0, 0, 1}, {3, 5, 0, 1}, {3, 9, -4, 1}};
+    const SceneBounds bounds = sceneBounds(triangles, lights);
+    const LightTable table = buildLightTable(triangles, materials, lights, Environment{}, bounds);
+    const LightTree still = buildLightTree(table, triangles, materials, lights);
+    lights[3].motion = 1; // keys 0 .. 2
+    const LightTree moving = buildLightTree(table, triangles, materials, lights, keys, segments);
+    ASSERT_FALSE(moving.nodes.empty());
+    EXPECT_LT(still.nodes[0].hi.y, 1.0f);
+    for (const glm::vec4& key : keys) {
+        EXPECT_LE(moving.nodes[0].lo.x, key.x - 0.1f);
+        EXPECT_GE(moving.nodes[0].hi.y, key.y + 0.1f - 1e-4f);
+        EXPECT_LE(moving.nodes[0].lo.z, key.z - 0.1f + 1e-4f);
+    }
 }
 
 } // namespace

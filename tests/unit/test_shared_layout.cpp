@@ -58,7 +58,7 @@ void main() {
         counters.depthRays[3] + counters.depthShadowRays[2] + counters.kindCount[1] +
         counters.kindArgs[2].count;
     light.emitter = light.type + uint(light.position.x + light.direction.x + light.radius +
-        light.intensity.x + light.cosInner + light.cosOuter + light.pad1 + light.pad2);
+        light.intensity.x + light.cosInner + light.cosOuter + float(light.motion) + light.pad2);
     tref.levels = tref.page + tref.offset + tref.width + tref.height + tref.flags +
         uint(tref.uRow.x + tref.vRow.x) + tnorm.n0 + tnorm.n1 + tnorm.n2 + tnorm.pad +
         ttan.t0 + ttan.t1 + ttan.t2 + ttan.signs + uint(tuv[1].uv0.x + tuv[1].uv1.x + tuv[1].uv2.x);

@@ -12,6 +12,34 @@
 
 namespace wf {
 
+namespace {
+
+// The moving lights' and the camera's keys after the instances' (motion.glsl's table).
+void appendLightAndCameraMotion(const Scene& scene, PreparedScene& prepared) {
+    prepared.motionSegments = scene.motionSegments;
+    if (scene.motionSegments == 0)
+        return;
+    const uint32_t keys = scene.motionSegments + 1;
+    for (PunctualLight& light : prepared.punctualLights) {
+        if (light.motion == 0u)
+            continue;
+        const uint32_t first = uint32_t(prepared.motionKeys.size());
+        for (uint32_t k = 0; k < keys; ++k)
+            prepared.motionKeys.emplace_back(scene.lightMotionKeys.at(light.motion - 1u + k), 1.0f);
+        light.motion = first + 1u;
+    }
+    if (prepared.camera.motion.size() == keys) {
+        prepared.cameraMotionKeys = uint32_t(prepared.motionKeys.size()) + 1u;
+        for (const CameraKey& key : prepared.camera.motion) {
+            prepared.motionKeys.emplace_back(key.position, 1.0f);
+            prepared.motionKeys.emplace_back(key.forward, 0.0f);
+            prepared.motionKeys.emplace_back(key.up, 0.0f);
+        }
+    }
+}
+
+} // namespace
+
 PreparedScene prepareScene(Scene scene, std::vector<uint32_t>* order) {
     PreparedScene prepared;
     prepared.triangles = std::move(scene.triangles);
@@ -29,6 +57,7 @@ PreparedScene prepareScene(Scene scene, std::vector<uint32_t>* order) {
                                            prepared.materials, prepared.camera);
         prepared.bvhPairs = std::move(bvh.pairs);
         prepared.instances = std::move(bvh.instances);
+        prepared.motionKeys = std::move(bvh.motionKeys);
         prepared.bvhStats = bvh.stats;
         Bounds box;
         for (const Bounds& instance : bvh.instanceBoxes) {
@@ -53,6 +82,7 @@ PreparedScene prepareScene(Scene scene, std::vector<uint32_t>* order) {
         for (size_t i = 0; i < prepared.triangles.size(); ++i)
             (*order)[i] = prepared.triangles[i].pad;
     }
+    appendLightAndCameraMotion(scene, prepared);
     followTriangleOrder(prepared.triangles, prepared.surface);
     prepareLights(prepared);
     return prepared;
@@ -63,7 +93,8 @@ void prepareLights(PreparedScene& prepared) {
                                       prepared.punctualLights, prepared.environment,
                                       prepared.bounds, prepared.surface);
     prepared.lightTree = buildLightTree(prepared.lights, prepared.triangles, prepared.materials,
-                                        prepared.punctualLights);
+                                        prepared.punctualLights, prepared.motionKeys,
+                                        prepared.motionSegments);
     if (prepared.lightTree.lights < 2)
         prepared.lightTree = LightTree{}; // one light needs no tree
 }
@@ -155,6 +186,8 @@ SceneBuffers::SceneBuffers(const Context& context, const PreparedScene& scene,
     }
     if (variant.rayTracing)
         acceleration_ = buildSceneAcceleration(context, scene, variant);
+    if (variant.motion)
+        motionKeys_ = uploadTable(context, "motion keys", scene.motionKeys);
 }
 
 void SceneBuffers::appendBindings(
@@ -178,6 +211,8 @@ void SceneBuffers::appendBindings(
     if (environmentAlias_)
         bindings.push_back(
             {WF_BINDING_ENVIRONMENT_ALIAS, &environmentAlias_, BufferAccess::UintTexels});
+    if (motionKeys_)
+        bindings.push_back({WF_BINDING_MOTION_KEYS, &motionKeys_});
     surface_.appendBindings(bindings);
 }
 
@@ -187,7 +222,8 @@ void SceneBuffers::appendMemoryReport(
         for (const Buffer& page : *pages)
             report.emplace_back(page.name(), page.size());
     for (const Buffer* buffer : {&materials_, &emitters_, &lightTree_,
-                                 &lightTreeTrails_, &lights_, &environment_, &environmentAlias_})
+                                 &lightTreeTrails_, &lights_, &environment_, &environmentAlias_,
+                                 &motionKeys_})
         if (*buffer)
             report.emplace_back(buffer->name(), buffer->size());
     surface_.appendMemoryReport(report);

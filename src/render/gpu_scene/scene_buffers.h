@@ -37,6 +37,12 @@ struct PreparedScene {
     Camera camera;
     bool hasCamera = false;
     BvhBuildStats bvhStats;
+    // Motion blur (WF_MOTION; motion.glsl): motionSegments + 1 keys per moving thing, the
+    // instances' (Instance::motionKeys), the lights' (PunctualLight::motion, 1 + the first),
+    // then the camera's; 0 segments when nothing moves.
+    uint32_t motionSegments = 0;
+    std::vector<glm::vec4> motionKeys;
+    uint32_t cameraMotionKeys = 0; // 1 + the camera's first key; 0: it is still
 };
 
 // `order`, when given, receives the triangle permutation the build applied: entry i is the
@@ -75,6 +81,7 @@ private:
     Buffer lights_;   // punctual and sphere lights, if any
     Buffer environment_;
     Buffer environmentAlias_;
+    Buffer motionKeys_; // WF_MOTION: the moving things' keys (motion.glsl)
     SurfaceBuffers surface_; // normals, tangents, UVs, textures: what the scene uses
     std::unique_ptr<AccelerationStructureSet> acceleration_;
 };

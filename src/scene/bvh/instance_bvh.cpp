@@ -96,17 +96,27 @@ TwoLevelBvh buildTwoLevelBvh(std::vector<Triangle>& triangles, const std::vector
     struct Placed {
         glm::mat4 worldFromObject;
         uint32_t tree;
+        const std::vector<glm::mat4>* motion;
     };
+    static const std::vector<glm::mat4> still;
     std::vector<Placed> placed;
     if (worldCount > 0)
-        placed.push_back({glm::mat4(1.0f), 0});
+        placed.push_back({glm::mat4(1.0f), 0, &still});
     for (const MeshPlacement& placement : placements)
-        placed.push_back({placement.worldFromObject, firstMeshTree + placement.mesh});
+        placed.push_back({placement.worldFromObject, firstMeshTree + placement.mesh,
+                          &placement.motion});
     std::vector<Triangle> boxes;
     boxes.reserve(placed.size());
     for (uint32_t i = 0; i < placed.size(); ++i) {
-        const Bounds box =
-            padded(transformedBounds(trees[placed[i].tree].box(), placed[i].worldFromObject));
+        // A moving placement's map is interpolated between keys, so each of its points stays
+        // between the keys' images of it: the keys' boxes together bound the motion.
+        Bounds box = transformedBounds(trees[placed[i].tree].box(), placed[i].worldFromObject);
+        for (const glm::mat4& key : *placed[i].motion) {
+            const Bounds moved = transformedBounds(trees[placed[i].tree].box(), key);
+            box.grow(moved.lo);
+            box.grow(moved.hi);
+        }
+        box = padded(box);
         boxes.push_back(Triangle{box.lo, 0u, box.hi, 0u, 0.5f * (box.lo + box.hi), i});
     }
     std::vector<BvhNode> topNodes;
@@ -135,6 +145,14 @@ TwoLevelBvh buildTwoLevelBvh(std::vector<Triangle>& triangles, const std::vector
     for (const Triangle& box : boxes) {
         const Placed& p = placed[box.pad];
         out.instances.push_back(makeInstance(p.worldFromObject, roots[p.tree]));
+        if (!p.motion->empty()) {
+            Instance& instance = out.instances.back();
+            instance.flags |= WF_INSTANCE_MOVING;
+            instance.motionKeys = uint32_t(out.motionKeys.size());
+            for (const glm::mat4& key : *p.motion)
+                for (int r = 0; r < 3; ++r)
+                    out.motionKeys.emplace_back(key[0][r], key[1][r], key[2][r], key[3][r]);
+        }
         Bounds world;
         world.lo = box.p0;
         world.hi = box.p1;

@@ -16,6 +16,9 @@ struct TwoLevelBvh {
     std::vector<Instance> instances; // in the top-level tree's leaf order
     // Each instance's world-space box, in the same order (scene bounds; the top level's input).
     std::vector<Bounds> instanceBoxes;
+    // Moving instances' keys (WF_INSTANCE_MOVING): 3 rows of worldFromObject per key, from
+    // each such instance's motionKeys; their boxes bound every key's, so the motion between.
+    std::vector<glm::vec4> motionKeys;
     BvhBuildStats stats; // summed over every tree; stackNeed is the deepest mesh tree's
 };
 

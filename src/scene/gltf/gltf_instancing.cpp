@@ -48,6 +48,17 @@ std::size_t estimatedTriangles(const tinygltf::Model& model, const tinygltf::Pri
     return trianglesOfPrimitive(primitive.mode, corners);
 }
 
+bool meshEmits(const tinygltf::Model& model, std::size_t mesh, const MaterialTables& materials) {
+    for (const tinygltf::Primitive& primitive : model.meshes[mesh].primitives) {
+        if (primitive.material >= 0 && std::size_t(primitive.material) < materials.materials.size()) {
+            const glm::vec3 e = materials.materials[primitive.material].emission;
+            if (e.x > 0.0f || e.y > 0.0f || e.z > 0.0f)
+                return true;
+        }
+    }
+    return false;
+}
+
 std::vector<bool> meshesToInstance(const tinygltf::Model& model,
                                    const std::vector<std::size_t>& placements,
                                    const MaterialTables& materials, Instancing mode) {
@@ -57,15 +68,10 @@ std::vector<bool> meshesToInstance(const tinygltf::Model& model,
     for (std::size_t m = 0; m < model.meshes.size(); ++m) {
         if (placements[m] < 2)
             continue;
-        bool emissive = false;
+        const bool emissive = meshEmits(model, m, materials);
         std::size_t triangles = 0;
-        for (const tinygltf::Primitive& primitive : model.meshes[m].primitives) {
-            if (primitive.material >= 0 && std::size_t(primitive.material) < materials.materials.size()) {
-                const glm::vec3 e = materials.materials[primitive.material].emission;
-                emissive |= e.x > 0.0f || e.y > 0.0f || e.z > 0.0f;
-            }
+        for (const tinygltf::Primitive& primitive : model.meshes[m].primitives)
             triangles += estimatedTriangles(model, primitive);
-        }
         const bool pays = mode == Instancing::On ||
                           triangles * (placements[m] - 1) >= kAutoInstancingCopies;
         instanced[m] = !emissive && triangles > 0 && pays;

@@ -30,6 +30,9 @@ namespace gltf {
 // those).
 std::size_t estimatedTriangles(const tinygltf::Model& model, const tinygltf::Primitive& primitive);
 
+// Whether a primitive of the mesh has an emissive material.
+bool meshEmits(const tinygltf::Model& model, std::size_t mesh, const MaterialTables& materials);
+
 // Per mesh, whether to instance it. Emissive meshes never are: each copy is a light of its
 // own, and the light table lists world-space triangles. `placements` counts each mesh's nodes
 // among those the roots reach (the caller has checked the tree has no cycles).

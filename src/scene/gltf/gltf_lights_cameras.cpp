@@ -13,6 +13,16 @@ bool finite(const glm::dvec3& v) { return std::isfinite(v.x + v.y + v.z); }
 
 } // namespace
 
+bool cameraFrame(const glm::dmat4& world, CameraKey& key) {
+    const glm::dvec3 forward = glm::normalize(-glm::dvec3(world[2]));
+    const glm::dvec3 upRaw = glm::dvec3(world[1]);
+    const glm::dvec3 up = glm::normalize(upRaw - glm::dot(upRaw, forward) * forward);
+    if (!finite(forward) || !finite(up) || !finite(glm::dvec3(world[3])))
+        return false;
+    key = {glm::vec3(world[3]), glm::vec3(forward), glm::vec3(up)};
+    return true;
+}
+
 void addNodeCamera(const tinygltf::Model& model, const std::string& file, int nodeIndex,
                    const glm::dmat4& world, Scene& scene) {
     const tinygltf::Node& node = model.nodes[nodeIndex];
@@ -39,18 +49,15 @@ void addNodeCamera(const tinygltf::Model& model, const std::string& file, int no
         warn(file, name + " is skipped: yfov must lie in (0, pi) and aspectRatio be positive");
         return;
     }
-    // glTF cameras look down -Z with +Y up; Gram-Schmidt removes any shear from scaling.
-    const glm::dvec3 forward = glm::normalize(-glm::dvec3(world[2]));
-    const glm::dvec3 upRaw = glm::dvec3(world[1]);
-    const glm::dvec3 up = glm::normalize(upRaw - glm::dot(upRaw, forward) * forward);
-    if (!finite(forward) || !finite(up)) {
+    CameraKey frame;
+    if (!cameraFrame(world, frame)) {
         warn(file, name + " on " + nodeName + " is skipped: its transform is degenerate");
         return;
     }
     Camera out;
-    out.position = glm::vec3(world[3]);
-    out.forward = glm::vec3(forward);
-    out.up = glm::vec3(up);
+    out.position = frame.position;
+    out.forward = frame.forward;
+    out.up = frame.up;
     out.yfov = float(yfov);
     out.aspect = float(aspect);
     out.orthoHalfHeight = orthographic ? float(camera.orthographic.ymag) : 0.0f;

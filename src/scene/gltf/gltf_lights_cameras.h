@@ -15,6 +15,10 @@ class Model;
 
 namespace wf::gltf {
 
+// A camera's view from its node's world transform: glTF cameras look down -Z with +Y up, shear
+// from scaling removed (Gram-Schmidt). False where the transform is degenerate.
+bool cameraFrame(const glm::dmat4& world, CameraKey& key);
+
 // Appends node `nodeIndex`'s camera, placed by `world`, to scene.cameras and cameraNames.
 void addNodeCamera(const tinygltf::Model& model, const std::string& file, int nodeIndex,
                    const glm::dmat4& world, Scene& scene);

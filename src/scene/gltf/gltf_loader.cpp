@@ -28,6 +28,7 @@
 #include "scene/gltf/gltf_node_pose.h"
 #include "scene/gltf/gltf_parse_errors.h"
 #include "scene/gltf/gltf_materials.h"
+#include "scene/gltf/gltf_motion.h"
 #include "scene/gltf/gltf_primitives.h"
 
 namespace wf {
@@ -93,6 +94,8 @@ private:
     gltf::AccessorReader reader_; // animations and skins
     std::vector<gltf::NodeAnimation> animated_; // per node, at options_.time
     std::vector<glm::dmat4> nodeWorld_;         // per node, every node (joints may be anywhere)
+    gltf::ShutterKeys shutter_;                 // motion blur: nodes keyed over the shutter
+    std::vector<bool> blurred_;                 // per mesh: its moving placements are keyed
 };
 
 // Unknown extensions: one warning each, refused when required (the file says it cannot be
@@ -235,6 +238,7 @@ void Converter::walkNodes(gltf::PrimitiveBuilder& builder) {
         const glm::dmat4 world = parentWorld * localTransform(index);
         const tinygltf::Node& node = model_.nodes[index];
         const std::string name = "node " + std::to_string(index);
+        const std::size_t cameras = scene_.cameras.size(), lights = scene_.lights.size();
         if (node.camera != -1) {
             gltf::addNodeCamera(model_, file_, index, world, scene_);
         }
@@ -257,8 +261,13 @@ void Converter::walkNodes(gltf::PrimitiveBuilder& builder) {
                             meshSlot[node.mesh], &deformation);
             }
             if (instanced)
-                builder.place(meshSlot[node.mesh], world, name);
+                builder.place(meshSlot[node.mesh], world, name,
+                              shutter_.segments != 0 && blurred_[node.mesh] &&
+                                      shutter_.moves(index)
+                                  ? shutter_.keysOf(index)
+                                  : std::vector<glm::mat4>());
         }
+        gltf::keyNodeMotion(shutter_, index, cameras, lights, scene_);
         for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) {
             stack.emplace_back(*child, world);
         }
@@ -270,21 +279,7 @@ void Converter::walkNodes(gltf::PrimitiveBuilder& builder) {
 void Converter::poseNodes() {
     animated_ = gltf::sampleAnimations(model_, file_, reader_, options_.time, options_.animation,
                                        &scene_.animationSeconds);
-    const std::size_t n = model_.nodes.size();
-    nodeWorld_.assign(n, glm::dmat4(1.0));
-    std::vector<bool> done(n, false);
-    std::vector<int> chain;
-    for (std::size_t i = 0; i < n; ++i) {
-        for (int node = int(i); node != -1 && !done[node]; node = parent_[node])
-            chain.push_back(node);
-        for (auto node = chain.rbegin(); node != chain.rend(); ++node) {
-            const int parent = parent_[*node];
-            nodeWorld_[*node] =
-                (parent == -1 ? glm::dmat4(1.0) : nodeWorld_[parent]) * localTransform(*node);
-            done[*node] = true;
-        }
-        chain.clear();
-    }
+    nodeWorld_ = gltf::nodeWorldTransforms(model_, file_, parent_, animated_);
 }
 
 // The node's morph weights (animated, else the node's, else the mesh's) and its skin's joint
@@ -335,6 +330,10 @@ Scene Converter::run() {
     gltf::MaterialTables tables = gltf::convertMaterials(model_, file_);
     checkNodeTree();
     poseNodes();
+    if (options_.shutterClose > options_.shutterOpen && options_.motionSegments > 0)
+        shutter_ = gltf::sampleShutter(model_, file_, reader_, parent_, options_.shutterOpen,
+                                       options_.shutterClose, options_.motionSegments,
+                                       options_.animation);
     const uint32_t defaultIndex = uint32_t(tables.materials.size());
     gltf::PrimitiveBuilder builder(model_, file_, tables, defaultIndex);
     const std::vector<std::size_t> placements = countPlacements();
@@ -344,9 +343,16 @@ Scene Converter::run() {
         if (node.mesh >= 0 && std::size_t(node.mesh) < instanced_.size() &&
             (node.skin != -1 || gltf::morphTargetCount(model_, node.mesh) > 0))
             instanced_[node.mesh] = false;
+    blurred_ = gltf::meshesToBlur(model_, file_, shutter_, tables, instanced_);
     builder.reserve(checkPlacedTriangles(placements));
     walkNodes(builder);
     builder.finish(scene_);
+    bool moves = !scene_.lightMotionKeys.empty();
+    for (const Camera& camera : scene_.cameras)
+        moves |= !camera.motion.empty();
+    for (const MeshPlacement& placement : scene_.placements)
+        moves |= !placement.motion.empty();
+    scene_.motionSegments = moves ? shutter_.segments : 0;
     gltf::loadImages(model_, file_, policy_.images, tables, scene_.surface);
     scene_.materials = std::move(tables.materials);
     if (builder.usedDefaultMaterial() || scene_.materials.empty()) {

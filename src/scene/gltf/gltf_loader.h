@@ -17,6 +17,13 @@ struct GltfOptions {
     // skins posed by their joints (gltf_animation.h). 0 poses animated files at their start.
     double time = 0.0;
     std::string animation; // "" plays every animation at once; else one's name or index
+    // Motion blur: the shutter's interval in seconds (open < close; equal: none). Rigid node
+    // motion within it (placements of meshes, cameras, lights) is keyed at motionSegments + 1
+    // evenly spaced times, and `time` should be the interval's centre: what cannot be blurred
+    // (skinned, morphed or emissive meshes) is posed there, with a warning.
+    double shutterOpen = 0.0;
+    double shutterClose = 0.0;
+    uint32_t motionSegments = 8;
 };
 
 // Loads triangle lists, strips and fans (points and lines are skipped with one warning on

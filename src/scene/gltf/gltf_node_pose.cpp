@@ -103,4 +103,28 @@ glm::dmat4 nodeLocalTransform(const tinygltf::Model& model, const std::string& f
     return m;
 }
 
+std::vector<glm::dmat4> nodeWorldTransforms(const tinygltf::Model& model, const std::string& file,
+                                            const std::vector<int>& parent,
+                                            const std::vector<NodeAnimation>& animated) {
+    const std::size_t n = model.nodes.size();
+    std::vector<glm::dmat4> world(n, glm::dmat4(1.0));
+    std::vector<bool> done(n, false);
+    std::vector<int> chain;
+    for (std::size_t i = 0; i < n; ++i) {
+        for (int node = int(i); node != -1 && !done[node]; node = parent[node])
+            chain.push_back(node);
+        for (auto node = chain.rbegin(); node != chain.rend(); ++node) {
+            const int up = parent[*node];
+            world[*node] = (up == -1 ? glm::dmat4(1.0) : world[up]) *
+                           nodeLocalTransform(model, file, *node,
+                                              std::size_t(*node) < animated.size()
+                                                  ? &animated[*node]
+                                                  : nullptr);
+            done[*node] = true;
+        }
+        chain.clear();
+    }
+    return world;
+}
+
 } // namespace wf::gltf

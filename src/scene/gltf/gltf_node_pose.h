@@ -1,6 +1,7 @@
 // A node's local transform at the time the animations were sampled.
 #pragma once
 #include <string>
+#include <vector>
 
 #include <glm/mat4x4.hpp>
 
@@ -18,5 +19,12 @@ namespace wf::gltf {
 // transform that is not finite.
 glm::dmat4 nodeLocalTransform(const tinygltf::Model& model, const std::string& file,
                               int nodeIndex, const NodeAnimation* animated);
+
+// Every node's world transform with `animated` (one entry per node) applied, joints outside the
+// scene's tree included, parents before children via `parent` (-1: a root; checked free of
+// loops).
+std::vector<glm::dmat4> nodeWorldTransforms(const tinygltf::Model& model, const std::string& file,
+                                            const std::vector<int>& parent,
+                                            const std::vector<NodeAnimation>& animated);
 
 } // namespace wf::gltf

@@ -6,6 +6,7 @@
 
 #include <tiny_gltf.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <limits>
@@ -353,18 +354,25 @@ void PrimitiveBuilder::fillFlatNormals(size_t upTo) {
     }
 }
 
-void PrimitiveBuilder::place(uint32_t mesh, const glm::dmat4& world, const std::string& where) {
-    const double det = glm::determinant(glm::dmat3(world));
+void PrimitiveBuilder::place(uint32_t mesh, const glm::dmat4& world, const std::string& where,
+                             std::vector<glm::mat4> motion) {
     // A zero scale flattens the mesh to nothing, and a huge one overflows float: flattened,
     // every triangle would be dropped as degenerate; and an inverse would not be finite.
-    if (!(std::abs(det) >= double(std::numeric_limits<float>::min()) &&
-          std::abs(det) <= double(std::numeric_limits<float>::max()))) {
+    auto invertible = [](const glm::dmat4& m) {
+        const double det = glm::determinant(glm::dmat3(m));
+        return std::abs(det) >= double(std::numeric_limits<float>::min()) &&
+               std::abs(det) <= double(std::numeric_limits<float>::max());
+    };
+    if (!invertible(world)) {
         ++flatteningPlacements_;
         return;
     }
+    if (!std::all_of(motion.begin(), motion.end(),
+                     [&](const glm::mat4& key) { return invertible(glm::dmat4(key)); }))
+        motion.clear();
     if (placements_.size() >= kMaxInstances)
         fail(file_, where + ": more than " + std::to_string(kMaxInstances) + " instances");
-    placements_.push_back({glm::mat4(world), mesh});
+    placements_.push_back({glm::mat4(world), mesh, std::move(motion)});
 }
 
 // A stable counting sort of the triangles (and every per-triangle array) by mesh, world
@@ -407,10 +415,15 @@ void PrimitiveBuilder::groupByMesh(Scene& scene) {
         const uint32_t mesh = kept[placement.mesh];
         if (mesh == kWorldGeometry)
             continue;
+        bool finiteBoxes = true;
+        for (const glm::mat4& key : placement.motion) {
+            const Bounds moved = transformedBounds(boxes[mesh], key);
+            finiteBoxes = finiteBoxes && finite(moved.lo) && finite(moved.hi);
+        }
         const Bounds box = transformedBounds(boxes[mesh], placement.worldFromObject);
-        if (!finite(box.lo) || !finite(box.hi))
+        if (!finite(box.lo) || !finite(box.hi) || !finiteBoxes)
             fail(file_, "an instanced mesh is not finite after its node's transforms");
-        scene.placements.push_back({placement.worldFromObject, mesh});
+        scene.placements.push_back({placement.worldFromObject, mesh, placement.motion});
     }
     placements_ = {};
 }

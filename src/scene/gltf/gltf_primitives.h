@@ -64,7 +64,10 @@ public:
     uint32_t newMesh() { return meshCount_++; }
     // Room for the triangles the accessors' counts promise, so the arrays never grow by copying.
     void reserve(size_t triangles) { triangles_.reserve(triangles); }
-    void place(uint32_t mesh, const glm::dmat4& world, const std::string& where);
+    // `motion`: worldFromObject keys over the shutter, for a placement that moves (kept only
+    // where every key is invertible; else the placement stays at `world`).
+    void place(uint32_t mesh, const glm::dmat4& world, const std::string& where,
+               std::vector<glm::mat4> motion = {});
     // Moves the triangles into `scene` (world geometry first, then mesh by mesh) with the
     // placements of the meshes left with triangles, and keeps only the attributes it needs.
     void finish(Scene& scene);

@@ -246,7 +246,8 @@ bool inLightTree(uint32_t source, const std::vector<PunctualLight>& lights) {
 
 LightTree buildLightTree(const LightTable& table, const std::vector<Triangle>& triangles,
                          const std::vector<Material>& materials,
-                         const std::vector<PunctualLight>& lights) {
+                         const std::vector<PunctualLight>& lights,
+                         const std::vector<glm::vec4>& motionKeys, uint32_t motionSegments) {
     const auto start = std::chrono::steady_clock::now();
     LightTree tree;
     tree.trails.assign(table.emitters.size(), glm::uvec4(0u));
@@ -256,7 +257,19 @@ LightTree buildLightTree(const LightTable& table, const std::vector<Triangle>& t
         if (!inLightTree(source, lights))
             continue;
         const double power = double(table.emitters[e].pmf) * table.totalPower;
-        items.push_back({boundsOf(source, power, triangles, materials, lights), e});
+        LightBounds bounds = boundsOf(source, power, triangles, materials, lights);
+        const uint32_t kind = source & WF_EMITTER_KIND_MASK;
+        const PunctualLight* light =
+            kind == WF_EMITTER_LIGHT ? &lights[source & WF_EMITTER_INDEX_MASK] : nullptr;
+        if (light && light->motion != 0u) { // light.motion: 1 + its first key
+            const double radius = light->type == WF_LIGHT_SPHERE ? light->radius : 0.0;
+            for (uint32_t k = 0; k <= motionSegments; ++k) {
+                const glm::dvec3 p(glm::vec3(motionKeys.at(light->motion - 1u + k)));
+                bounds.lo = glm::min(bounds.lo, p - glm::dvec3(radius));
+                bounds.hi = glm::max(bounds.hi, p + glm::dvec3(radius));
+            }
+        }
+        items.push_back({std::move(bounds), e});
         tree.power += power;
     }
     tree.lights = static_cast<uint32_t>(items.size());

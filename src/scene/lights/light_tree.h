@@ -24,8 +24,12 @@ struct LightTree {
 // Whether an emitter-table entry belongs in the tree (else it is chosen beside it).
 bool inLightTree(uint32_t source, const std::vector<PunctualLight>& lights);
 
+// `motionKeys`: the table that moving lights' `motion` indexes (WF_MOTION), one position per
+// key, motionSegments + 1 keys; a moving light's bounds cover every key.
 LightTree buildLightTree(const LightTable& table, const std::vector<Triangle>& triangles,
                          const std::vector<Material>& materials,
-                         const std::vector<PunctualLight>& lights);
+                         const std::vector<PunctualLight>& lights,
+                         const std::vector<glm::vec4>& motionKeys = {},
+                         uint32_t motionSegments = 0);
 
 } // namespace wf
