@@ -153,11 +153,27 @@ WavefrontRenderer& Renderer::rendererFor(const LoadedScene& scene, const Setting
         cached_->restart(s.seed, s.sppOffset, s.sampleSetSize);
         return *cached_;
     }
+    // Another scene with the same flags (a sequence: a load per frame) takes the kept
+    // renderer's pipelines where its shaders and image size agree, as render --frames does.
+    const auto flagsOf = [](const std::string& key) { // the key less its scene id
+        const size_t first = key.find('\x1f');
+        return first == std::string::npos ? std::string() : key.substr(first);
+    };
+    if (cached_ && cachedScene_ != scene.prepared && s.width == cachedWidth_ &&
+        s.height == cachedHeight_ && flagsOf(cachedKey_) == flagsOf(settings.key) &&
+        cached_->setScene(*scene.prepared)) {
+        cachedScene_ = scene.prepared;
+        cachedKey_ = settings.key;
+        cached_->restart(s.seed, s.sppOffset, s.sampleSetSize);
+        return *cached_;
+    }
     cached_.reset(); // free the old buffers before making new ones
     cachedKey_.clear();
     cachedScene_ = scene.prepared;
     cached_ = std::make_unique<WavefrontRenderer>(*context_, *scene.prepared, s, *compiler_);
     cachedKey_ = settings.key;
+    cachedWidth_ = s.width;
+    cachedHeight_ = s.height;
     return *cached_;
 }
 

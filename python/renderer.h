@@ -78,6 +78,7 @@ private:
     // The last render's renderer, kept while the next asks for the same scene and settings.
     std::shared_ptr<const PreparedScene> cachedScene_;
     std::string cachedKey_;
+    uint32_t cachedWidth_ = 0, cachedHeight_ = 0; // its image size
     std::unique_ptr<WavefrontRenderer> cached_;
     uint64_t generation_ = 0; // bumped by every render; a progressive session holds its own
     std::shared_ptr<LoadedScene> progressiveScene_;

@@ -191,9 +191,9 @@ void WavefrontRenderer::uploadParams() {
     params.lensRadius = 0.5f * camera.aperture;
     params.focusDistance = camera.focusDistance;
     params.orthoHalfHeight = camera.orthoHalfHeight;
-    params.motionSegments = scene_->motionSegments;
+    params.motionSegments = scene.motionSegments;
     // A camera set since (the viewer's) has no keys: it stays where it is put.
-    params.cameraMotionKeys = camera.motion.empty() ? 0u : scene_->cameraMotionKeys;
+    params.cameraMotionKeys = camera.motion.empty() ? 0u : scene.cameraMotionKeys;
     pathBuffers_->params.upload(&params, sizeof params);
 }
 

@@ -95,14 +95,14 @@ struct Scene {
     std::vector<PunctualLight> lights; // KHR_lights_punctual (and sphere lights)
     Environment environment;         // --env, or uniform white when the scene has no light
     SurfaceData surface;             // vertex attributes and textures, only what is used
+    // The last key time of the animations played (--animation's choice, else all): 0 for a
+    // static scene. The viewer's time slider spans [0, animationSeconds].
+    double animationSeconds = 0.0;
     // Motion blur (--shutter): what moves within the shutter has motionSegments + 1 keys
     // evenly spaced over it (placements' and cameras' `motion`, and here the moving lights'
     // positions: PunctualLight::motion is 1 + its first key); 0 when nothing moves.
     uint32_t motionSegments = 0;
     std::vector<glm::vec3> lightMotionKeys;
-    // The last key time of the animations played (--animation's choice, else all): 0 for a
-    // static scene. The viewer's time slider spans [0, animationSeconds].
-    double animationSeconds = 0.0;
 
     size_t worldTriangleCount() const {
         return meshes.empty() ? triangles.size() : meshes.front().firstTriangle;

@@ -57,6 +57,17 @@ if render --frame 0 --traversal rt -o "$work/probe.exr" 2>/dev/null; then
             same "$work/rt/frame_$(printf %04d "$f").exr" "$work/rt/one_$f.exr"
     done
 fi
+# Motion blur around every frame: such frames are rebuilt (their keys come with the tree), and
+# the kept renderer gives each the separate render's image.
+mkdir -p "$work/shutter"
+check "--frames --shutter" 0 render --frames 0..24:24 --shutter -0.5:0.5 \
+    -o "$work/shutter/frame_%04d.exr"
+for f in 0 24; do
+    check "--shutter --frame $f alone" 0 render --frame "$f" --shutter -0.5:0.5 \
+        -o "$work/shutter/one_$f.exr"
+    expect "--frames --shutter: frame $f equals its own render" \
+        same "$work/shutter/frame_$(printf %04d "$f").exr" "$work/shutter/one_$f.exr"
+done
 check "--frame-bvh refit says it refit" 0 "$wavefront" render "$scene" --spp 1 --width 16 \
     --max-depth 2 --frames 0..2 --frame-bvh refit -o "$work/refit/r_%d.exr"
 expect "--frame-bvh refit: frames after the first refit" \

@@ -26,7 +26,7 @@ const char* frameBvhName(FrameBvh mode) {
 // tree has not worn out; `scene` is left whole when this returns false.
 bool FrameScenes::refit(Scene& scene, PreparedScene& out) {
     const PreparedScene& previous = scenes_[current_];
-    // Motion blur's keys (cameras and lights moving within the shutter) come with a build.
+    // Motion blur's keys (--shutter) are built with the tree: such frames are rebuilt.
     if (!previous.instances.empty() || !scene.placements.empty() || scene.motionSegments != 0 ||
         scene.triangles.size() != order_.size() ||
         scene.materials.size() != previous.materials.size())

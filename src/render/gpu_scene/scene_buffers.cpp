@@ -79,12 +79,12 @@ PreparedScene prepareScene(Scene scene, std::vector<uint32_t>* order) {
         prepared.bvhStats.stackNeed = bvhStackNeed(prepared.bvhPairs);
         prepared.bounds = sceneBounds(prepared.triangles, prepared.punctualLights);
     }
-    appendLightAndCameraMotion(scene, prepared);
     if (order) {
         order->resize(prepared.triangles.size());
         for (size_t i = 0; i < prepared.triangles.size(); ++i)
             (*order)[i] = prepared.triangles[i].pad;
     }
+    appendLightAndCameraMotion(scene, prepared);
     followTriangleOrder(prepared.triangles, prepared.surface);
     prepareLights(prepared);
     return prepared;
