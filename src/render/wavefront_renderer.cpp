@@ -100,7 +100,8 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
         const glm::vec3 radius(scene.bounds.radius);
         guide_ = std::make_unique<PathGuide>(context, scene.bounds.center - radius,
                                              scene.bounds.center + radius, pathCapacity_,
-                                             settings.guideBsdfFraction);
+                                             settings.guideBsdfFraction,
+                                             settings.guideMaxDepth);
         guide_->appendBindings(bindings);
     }
     AccelerationBinding acceleration;
