@@ -15,8 +15,8 @@ light transport). Each stays a small, self-contained glTF; run `python3 make_fai
 - many_lamps.gltf: 1,024 small lamps (6 cm octahedra shaded on top, lit below, 0.3-0.7 m above
   a floor, emission over 400:1) among a few blocks. Choosing a light by power sends most shadow rays to bright lamps
   metres away; the light tree picks the lamps near and facing each point.
-- narrow_gap.gltf: a closed grey room lit only through a 12 cm opening in one wall by a small
-  lamp outside, whose beam lights a spot on the floor. Shadow rays from almost every point in
+- narrow_gap.gltf: a closed grey room lit only through a 12 cm opening low in one wall by a
+  small lamp outside, whose beam lights a spot on the ceiling. Shadow rays from almost every point in
   the room hit the wall; the light arrives by way of the spot, which BSDF sampling finds
   rarely: path guiding learns where it is (issue 30's failure scene for unguided MIS).
 """
@@ -260,10 +260,10 @@ def narrow_gap():
     g = GltfWriter()
     grey = material(g, "grey", (0.6, 0.6, 0.6), lambert=True)
     lamp = material(g, "lamp", (0.0, 0.0, 0.0), lambert=True,
-                    emission=(2.0e6, 1.9e6, 1.7e6))
+                    emission=(8.0e6, 7.6e6, 6.8e6))
     # The room: x, z in [-2, 2], y in [0, 2.5]; the wall at x = 2 has a 12 cm square opening
     # around (2, wy, 0).
-    x0, x1, h, wy, a = -2.0, 2.0, 2.5, 1.76, 0.06
+    x0, x1, h, wy, a = -2.0, 2.0, 2.5, 0.6, 0.06
     inward_x = (-1, 0, 0)
     quads = [
         rect((x0, 0, -2), (x1, 0, -2), (x1, 0, 2), (x0, 0, 2), (0, 1, 0)),      # floor
@@ -278,9 +278,10 @@ def narrow_gap():
         rect((x1, wy - a, a), (x1, wy - a, 2), (x1, wy + a, 2), (x1, wy + a, a), inward_x),
     ]
     g.node(name="room", mesh=g.mesh("room", [g.primitive(quads, grey)]))
-    # The lamp outside: 20 cm square, 4.6 m from the opening, facing it; its beam lands on
-    # the floor as a spot about 0.5 m long near (-1.1, 0, 0).
-    centre, s = (6.0, 4.0, 0.0), 0.1
+    # The lamp outside, low: 20 cm square, 4 m from the opening, facing it; its beam rises
+    # through the opening and lights a spot about 0.4 m across on the ceiling near
+    # (0.5, 2.5, 0), which floor and walls see at a good angle.
+    centre, s = (4.5, -2.5, 0.0), 0.1
     facing = normalized(sub((x1, wy, 0.0), centre))
     u = (0.0, 0.0, 1.0)
     v = normalized((facing[1] * u[2] - facing[2] * u[1], facing[2] * u[0] - facing[0] * u[2],
@@ -288,7 +289,7 @@ def narrow_gap():
     corner = lambda i, j: tuple(c + s * (i * uu + j * vv) for c, uu, vv in zip(centre, u, v))
     g.node(name="lamp", mesh=g.mesh("lamp", [g.primitive(
         [rect(corner(-1, -1), corner(1, -1), corner(1, 1), corner(-1, 1), facing)], lamp)]))
-    camera(g, (1.6, 1.5, -1.8), (-1.5, 0.3, 0.8), 1.1)
+    camera(g, (1.6, 1.2, -1.8), (-1.5, 0.6, 0.8), 1.1)
     return g
 
 

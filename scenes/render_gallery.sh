@@ -26,6 +26,13 @@ for selection in uniform power tree; do
 done
 render sphere_near_floor area --light-sampling nee --sphere-sampling area
 render sphere_near_floor solid-angle --light-sampling nee --sphere-sampling solid-angle
+# Path guiding (issue 30) against unguided MIS, 64 spp each (the guided one's training
+# iterations among them).
+for method in mis guided; do
+    "$wavefront" render scenes/narrow_gap.gltf -o "$tmp/narrow_gap-$method.exr" --width 200 \
+        --spp 64 --seed 1 --quiet --guiding "$([ "$method" = guided ] && echo on || echo off)"
+    mv "$tmp/narrow_gap-$method.png" "$out/narrow_gap_$method.png"
+done
 echo "wrote $(ls "$out" | wc -l) images to $out"
 # The animated scene at three times (render --frames: frames 0, 12 and 24 at 24 fps).
 anim=docs/images/animation

@@ -48,6 +48,8 @@ struct GuideParams {
     float bsdfFraction; // share of BSDF sampling in the one-sample mixture
     vec3 invBoxSize;
     uint training;      // 1: keep training records and splat them into the building tree
+    uint maxDepth;      // guide only vertices of bounce index below this (0: none)
+    uint pad0, pad1, pad2;
 };
 
 // A guided vertex of a path, kept until the path ends (WF_GUIDE_RECORDS per path): the
@@ -74,7 +76,8 @@ struct GuideRecord {
 static_assert(sizeof(wf::gpu_types::GuideSpatialNode) == 16 * WF_GUIDE_SPATIAL_NODE_TEXELS);
 static_assert(sizeof(wf::gpu_types::GuideDirNode) == 16 * WF_GUIDE_DIR_NODE_TEXELS);
 static_assert(offsetof(wf::gpu_types::GuideDirNode, prob) == 16);
-static_assert(sizeof(wf::gpu_types::GuideParams) == 32);
+static_assert(sizeof(wf::gpu_types::GuideParams) == 48);
+static_assert(offsetof(wf::gpu_types::GuideParams, maxDepth) == 32);
 static_assert(offsetof(wf::gpu_types::GuideParams, invBoxSize) == 16);
 static_assert(sizeof(wf::gpu_types::GuideRecord) == 64);
 static_assert(offsetof(wf::gpu_types::GuideRecord, direction) == 16);

@@ -212,6 +212,10 @@ void shadePathVertex(inout PathVertex v) {
 #else
     bool guideHere = bsdfHasNonDelta(bsdf);
 #endif
+    // Guided: vertices of bounce index below guide.maxDepth, and any vertex its ray reached by
+    // a Dirac bounce (a caustic seen through glass); the rest sample the BSDF alone, where
+    // the mixture's doubled weights would compound (docs/guiding.md, "Levers").
+    guideHere = guideHere && (v.depth < guide.maxDepth || v.previousPdf == 0.0);
     uint guideRoot = guideHere ? guideSpatial[guideLeafNode(surface.p)].samplingRoot : 0u;
     float guideFraction = guide.bsdfFraction;
 #endif

@@ -47,8 +47,9 @@ std::vector<OptionSpec> samplingOptions() {
                              "off)"},
         {"--seed", "", "S", "random seed; same seed, same image bit for bit (default 0)"},
         {"--guiding", "", "MODE", "off (default) or on: path guiding (an SD-tree trained over "
-                                  "1, 2, 4, ... spp, the image from the last half of the "
-                                  "samples; render only for now)"},
+                                  "1, 2, 4, ... spp, the iterations' images weighed by "
+                                  "inverse variance; render only for now, converge has the "
+                                  "method word guided)"},
         {"--sampler", "", "NAME", "sample pattern: independent, stratified, multijitter, "
                                   "halton, hammersley, sobol (default) or bluenoise"},
         {"--texture-filter", "", "MODE", "cone (mip levels chosen by ray cones; default) or "

@@ -1,7 +1,6 @@
 #include "render/convergence.h"
 
 #include <algorithm>
-#include <cstdlib>
 #include <set>
 #include <sstream>
 
@@ -20,7 +19,6 @@ void ConvergenceMethod::applyTo(RenderSettings& settings) const {
     settings.lightSelection = lightSelection;
     settings.pixelList = adaptive;
     settings.guiding = guided;
-    if (std::getenv("WFX_LAST")) settings.guideCombineIterations = false; // XXX experiment
 }
 
 std::string methodWords() {

@@ -82,6 +82,10 @@ struct RenderSettings {
     bool guiding = false;
     bool guideCombineIterations = true;
     float guideBsdfFraction = 0.5f; // the BSDF's share of the one-sample mixture
+    // Vertices of bounce index below this are guided, and those reached by a Dirac bounce;
+    // the rest sample the BSDF alone (docs/guiding.md: guiding every vertex compounds the
+    // mixture's doubled weights where the guide is blurred).
+    uint32_t guideMaxDepth = 1;
     // At most this many training iterations (tests set 0 to render with a guide they froze
     // themselves through WavefrontRenderer::guide()).
     uint32_t guideMaxIterations = 0xffffffffu;

@@ -104,7 +104,8 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
         const glm::vec3 radius(scene.bounds.radius);
         guide_ = std::make_unique<PathGuide>(context, scene.bounds.center - radius,
                                              scene.bounds.center + radius, pathCapacity_,
-                                             settings.guideBsdfFraction);
+                                             settings.guideBsdfFraction,
+                                             settings.guideMaxDepth);
     }
     bindTables();
     waves_ = std::make_unique<WaveRecorder>(context, compiler, defines_, *table_,

@@ -67,6 +67,18 @@ expect "json: medians, quartiles, slopes" json_has "$conv/convergence.json" \
     "all(len(m['relMse']) == len(m['relMseQ1']) == len(m['spp']) and 'slopeSpp' in m
          for m in d['methods']) and d['ranking'] and len(d['seeds']) == 5"
 
+check "converge guided" 0 "$wavefront" converge "$cornell" -o "$work/conv3" \
+    --reference "$conv/reference.exr" --time 0.01 --max-spp 4 --methods sobol,sobol+guided \
+    --max-depth 3 --no-plot -q
+expect "converge guided: a method of its own" json_has "$work/conv3/convergence.json" \
+    "[m['name'] for m in d['methods']] == ['sobol+mis', 'sobol+mis+guided']"
+check "converge: guided with adaptive" 2 "$wavefront" converge "$cornell" -o "$work/c3" \
+    --methods sobol+guided+adaptive
+expect "guided with adaptive: one line" one_line_error
+check "converge: --guiding instead of the word" 2 "$wavefront" converge "$cornell" \
+    -o "$work/c3" --guiding on
+expect "converge --guiding: one line" one_line_error
+
 check "converge: too few seeds" 2 "$wavefront" converge "$cornell" -o "$work/c3" --seeds 2
 expect "too few seeds: one line" one_line_error
 check "converge: unknown method word" 2 "$wavefront" converge "$cornell" -o "$work/c3" \

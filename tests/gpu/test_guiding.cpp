@@ -43,12 +43,16 @@ Scene loadScene(const std::string& name) {
     return loadGltf(std::string(WF_TEST_SCENE_DIR) + "/" + name + ".gltf");
 }
 
-void expectGuidedUnbiased(const std::string& name, bool combine = true) {
+// allVertices: guide every vertex, not only the camera's (RenderSettings.guideMaxDepth).
+void expectGuidedUnbiased(const std::string& name, bool combine = true, bool allVertices = false) {
     Scene scene = loadScene(name);
     Reference reference = unguidedReference(scene);
     std::vector<std::vector<float>> images;
     for (uint32_t seed = 1; seed <= 8; ++seed) {
-        RenderResult result = renderScene(scene, settingsFor(64, seed, true, combine));
+        RenderSettings settings = settingsFor(64, seed, true, combine);
+        if (allVertices)
+            settings.guideMaxDepth = settings.maxDepth;
+        RenderResult result = renderScene(scene, settings);
         EXPECT_EQ(result.stats.nonFiniteSamples, 0u);
         EXPECT_EQ(result.stats.guideIterations.size(), 5u); // 1+2+4+8+16, then 33 spp
         if (combine) {
@@ -81,6 +85,8 @@ TEST(Guiding, CornellBoxUnbiased) { expectGuidedUnbiased("cornell_box"); }
 TEST(Guiding, GlassCausticUnbiased) { expectGuidedUnbiased("glass_caustic"); }
 
 TEST(Guiding, LastIterationAloneUnbiased) { expectGuidedUnbiased("cornell_box", false); }
+
+TEST(Guiding, EveryVertexGuidedUnbiased) { expectGuidedUnbiased("glass_caustic", true, true); }
 
 TEST(Guiding, SameSeedSameImage) {
     Scene scene = loadScene("glass_caustic");
@@ -115,6 +121,7 @@ TEST(Guiding, WrongFrozenGuideStaysUnbiased) {
     for (uint32_t seed = 1; seed <= 8; ++seed) {
         RenderSettings settings = settingsFor(32, seed, true);
         settings.guideMaxIterations = 0;
+        settings.guideMaxDepth = settings.maxDepth; // the wrong guide at every vertex
         WavefrontRenderer renderer(gpuContext(), prepared, settings, compiler);
         const guiding::SDTree& current = renderer.guide()->tree();
         guiding::SDTree wrong(current.boxLo(), current.boxLo() + current.boxSize());

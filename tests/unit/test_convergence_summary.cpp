@@ -111,6 +111,11 @@ TEST(ConvergenceMethods, ParseWordsInAnyOrder) {
     EXPECT_EQ(parseMethod("adaptive+sobol").name, "sobol+mis+adaptive");
     EXPECT_TRUE(parseMethod("sobol+adaptive").adaptive);
     EXPECT_THROW(parseMethod("stratified+adaptive"), UsageError);
+    EXPECT_EQ(parseMethod("guided+halton").name, "halton+mis+guided");
+    EXPECT_TRUE(parseMethod("sobol+bsdf+guided").guided);
+    EXPECT_FALSE(parseMethod("sobol").guided);
+    EXPECT_THROW(parseMethod("sobol+guided+adaptive"), UsageError); // not yet: one line
+    EXPECT_THROW(parseMethod("guided+guided"), UsageError);
 }
 
 } // namespace

@@ -21,8 +21,8 @@ constexpr double kEnergyThreshold = 0.01; // the paper's share of a leaf's energ
 } // namespace
 
 PathGuide::PathGuide(const Context& context, glm::vec3 sceneLo, glm::vec3 sceneHi,
-                     uint32_t pathCapacity, float bsdfFraction)
-    : tree_(sceneLo, sceneHi), bsdfFraction_(bsdfFraction),
+                     uint32_t pathCapacity, float bsdfFraction, uint32_t maxDepth)
+    : tree_(sceneLo, sceneHi), bsdfFraction_(bsdfFraction), maxDepth_(maxDepth),
       params_(context, "guide params", sizeof(GuideParams)),
       spatial_(context, "guide spatial tree", kSpatialNodes * sizeof(GuideSpatialNode)),
       sampling_(context, "guide sampling quadtrees", kDirNodes * sizeof(GuideDirNode)),
@@ -80,6 +80,7 @@ void PathGuide::setTraining(bool training) {
     p.bsdfFraction = bsdfFraction_;
     p.invBoxSize = 1.0f / tree_.boxSize();
     p.training = training ? 1u : 0u;
+    p.maxDepth = maxDepth_;
     params_.upload(&p, sizeof p);
 }
 
