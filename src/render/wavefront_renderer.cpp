@@ -7,6 +7,7 @@
 #include "errors.h"
 #include "gpu/compute_program.h"
 #include "gpu/context.h"
+#include "render/guiding/guiding_schedule.h"
 #include "render/guiding/path_guide.h"
 #include "render/path_buffers.h"
 #include "render/samplers/sampler_tables.h"
@@ -323,15 +324,18 @@ void WavefrontRenderer::renderPixelList(const std::vector<uint32_t>& pixels,
 
 void WavefrontRenderer::renderGuided(const std::function<void(const WaveProgress&)>& onWave,
                                      const std::atomic<bool>* stop) {
-    if (settings_.timeLimitSeconds > 0.0)
-        throw UsageError("--guiding does not combine with --time-limit yet");
     const uint32_t budget = settings_.samplesPerPixel;
+    // Which iterations, how many spp each, and the image passes within --time-limit.
+    guiding::GuideSchedule schedule(budget, settings_.timeLimitSeconds,
+                                    settings_.guideMaxIterations);
+    const auto begin = std::chrono::steady_clock::now();
+    auto elapsed = [&]() {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    };
     guide_->setTraining(true);
-    // Train while the iteration after this one still gets at least half the budget.
-    for (uint32_t spp = 1, iteration = 0;
-         iteration < settings_.guideMaxIterations && 2ull * (samplesDone_ + spp) <= budget &&
-         !(stop && stop->load());
-         spp *= 2, ++iteration) {
+    for (uint32_t spp = 0, iteration = 0;
+         !(stop && stop->load()) && (spp = schedule.nextTrainingSpp(samplesDone_, elapsed())) > 0;
+         ++iteration) {
         clearFilm();
         const auto start = std::chrono::steady_clock::now();
         renderSamples(spp);
@@ -351,7 +355,10 @@ void WavefrontRenderer::renderGuided(const std::function<void(const WaveProgress
     clearFilm();
     const uint32_t first = samplesDone_;
     while (samplesDone_ < budget && !(stop && stop->load())) {
-        advance(budget - samplesDone_);
+        const uint32_t samples = schedule.nextImageSpp(samplesDone_, elapsed());
+        if (samples == 0)
+            break;
+        advance(samples);
         if (onWave)
             onWave({samplesDone_, budget, stats_.seconds});
     }
