@@ -136,6 +136,7 @@ int runFrameSequence(const ParsedArgs& parsed, const RenderRequest& request) {
                        {.width = kRenderDefaultWidth, .widthFollowsHeight = true}, settings);
         const double loadSeconds = secondsSince(start);
         PreparedScene prepared = prepareScene(std::move(scene));
+        resolveGuiding(settings, prepared); // --guiding auto, per frame's scene
         const double buildSeconds = secondsSince(start) - loadSeconds;
         WavefrontRenderer renderer(context, prepared, settings, compiler);
         const double setup = secondsSince(start) - loadSeconds - buildSeconds;

@@ -352,6 +352,8 @@ void WavefrontRenderer::renderGuided(const std::function<void(const WaveProgress
             onWave({samplesDone_, budget, stats_.seconds});
     }
     guide_->setTraining(false);
+    if (stop && stop->load())
+        return; // the film keeps the last iteration's image, for a checkpoint
     clearFilm();
     const uint32_t first = samplesDone_;
     while (samplesDone_ < budget && !(stop && stop->load())) {

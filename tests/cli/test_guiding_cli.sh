@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# --guiding off|on|auto on the command line (issue 30's interface): the words, auto's decision
+# (and that auto's image is --guiding off's, bit for bit, where it decides off), --time-limit
+# (training fits the limit), the one-line refusals, and unbiasedness of what combines with the
+# guide: a resumed guided render (a checkpoint, then --resume: the resumed part retrains its
+# guide) and --spp-offset parts each training their own guide, merged, both against an
+# unguided reference per 8x8 region within 5 standard errors over 8 seeds (wf_region_check).
+# Usage: test_guiding_cli.sh PATH/TO/wavefront PATH/TO/wf_region_check PATH/TO/scenes
+set -u
+wavefront=$1
+regions=$2
+scenes=$3
+source "$(dirname "$0")/harness.sh"
+box="$scenes/cornell_box.gltf"
+caustic="$scenes/glass_caustic.gltf"
+small=(--width 32 --max-depth 4 --quiet)
+
+# The words.
+check "bad word" 2 "$wavefront" render "$box" -o "$work/x.exr" --guiding yes "${small[@]}"
+expect "bad word: one line" one_line_error
+check "help lists auto" 0 "$wavefront" render --help
+expect "help: --guiding off, on, or auto" grep -q -- "--guiding" "$work/stdout"
+
+# auto: its decision in --verbose and the JSON; where off, the image is --guiding off's.
+check "auto verbose" 0 "$wavefront" render "$caustic" -o "$work/auto.exr" --spp 16 --width 32 \
+    --max-depth 4 --verbose --json "$work/auto.json"
+expect "auto says why" grep -q "guiding auto: off (predicted efficiency" "$work/stderr"
+expect "auto in the JSON" json_has "$work/auto.json" "d['guidingDecision'].startswith('auto: off')"
+expect "auto compiles no guide" grep -q "WF_GUIDING=0" "$work/stderr"
+check "off" 0 "$wavefront" render "$caustic" -o "$work/off.exr" --spp 16 "${small[@]}" --guiding off
+check "auto = off, bit for bit" 0 "$regions" --same "$work/auto.exr" "$work/off.exr"
+check "auto on an all-mirror-free box" 0 "$wavefront" render "$box" -o "$work/autobox.exr" \
+    --spp 16 --width 32 --max-depth 4 --guiding auto --verbose
+expect "auto box says diffuse" grep -q "guiding auto: off .*diffuse/glossy" "$work/stderr"
+
+# Refusals: one line, exit 2.
+check "on + target-error" 2 "$wavefront" render "$box" -o "$work/x.exr" --guiding on \
+    --target-error 0.01 "${small[@]}"
+expect "on + target-error: one line" one_line_error
+check "auto + target-error renders unguided" 0 "$wavefront" render "$box" -o "$work/x.exr" \
+    --guiding auto --target-error 0.05 --spp 16 "${small[@]}"
+
+# --time-limit: training keeps at most half of the limit, the image gets samples.
+check "on + time-limit" 0 "$wavefront" render "$caustic" -o "$work/tl.exr" --guiding on \
+    --spp 100000 --time-limit 4 --width 48 --max-depth 4 --quiet --json "$work/tl.json"
+expect "time-limit: trained" json_has "$work/tl.json" "len(d['guiding']['iterations']) >= 1"
+expect "time-limit: training within half" json_has "$work/tl.json" \
+    "len(d['guiding']['iterations']) == 1 or d['guiding']['trainingSeconds'] <= 2.0 + 0.5"
+expect "time-limit: an image" json_has "$work/tl.json" "d['guiding']['imageSpp'] >= 1"
+
+# Unbiasedness of the combinations, against an unguided reference.
+check "reference" 0 "$wavefront" render "$box" -o "$work/ref.exr" --spp 2048 "${small[@]}" \
+    --guiding off --seed 1000
+resumed=() merged=()
+for seed in 1 2 3 4 5 6 7 8; do
+    check "guided checkpoint $seed" 0 "$wavefront" render "$box" -o "$work/half$seed.exr" \
+        --spp 16 --guiding on --seed "$seed" --checkpoint "$work/ck$seed.exr" "${small[@]}"
+    check "guided resume $seed" 0 "$wavefront" render "$box" -o "$work/res$seed.exr" \
+        --spp 32 --guiding on --seed "$seed" --resume "$work/ck$seed.exr" "${small[@]}"
+    resumed+=("$work/res$seed.exr")
+    check "guided part a $seed" 0 "$wavefront" render "$box" -o "$work/pa$seed.exr" \
+        --spp 16 --guiding on --seed "$seed" "${small[@]}"
+    check "guided part b $seed" 0 "$wavefront" render "$box" -o "$work/pb$seed.exr" \
+        --spp 16 --spp-offset 16 --guiding on --seed "$seed" "${small[@]}"
+    check "merge $seed" 0 "$wavefront" merge "$work/pa$seed.exr" "$work/pb$seed.exr" \
+        -o "$work/m$seed.exr"
+    merged+=("$work/m$seed.exr")
+done
+check "resumed guided renders are unbiased" 0 "$regions" "$work/ref.exr" "${resumed[@]}"
+sed 's/^/  /' "$work/stdout"
+check "merged guided parts are unbiased" 0 "$regions" "$work/ref.exr" "${merged[@]}"
+sed 's/^/  /' "$work/stdout"
+# The check can fail: against a reference without indirect light (--max-depth 1) it does.
+check "direct-only reference" 0 "$wavefront" render "$box" -o "$work/direct.exr" --spp 256 \
+    --width 32 --max-depth 1 --quiet --guiding off
+check "region check fails on a wrong reference" 1 "$regions" "$work/direct.exr" "${merged[@]}"
+
+finish
