@@ -127,6 +127,18 @@ void samplingRows(RenderSettings& render, OverlayActions& actions) {
     }
 }
 
+// --guiding off|on|auto: a live switch (the renderer is rebuilt, and a guided one trains while
+// the image refines: viewer_guide.h), and where the guide stands.
+void guidingRow(const std::string& status, RenderSettings& render, OverlayActions& actions) {
+    int mode = render.guidingAuto ? 2 : render.guiding ? 1 : 0;
+    if (ImGui::Combo("--guiding", &mode, "off\0on\0auto\0")) {
+        render.guiding = mode == 1;
+        render.guidingAuto = mode == 2;
+        actions.renderChanged = true;
+    }
+    ImGui::TextUnformatted(status.c_str());
+}
+
 // One control per ViewSettings field that changes the image, labelled as its flag. A new
 // RenderSettings field (a sampler) gets its row here and its flag in view_command.cpp, and
 // sets renderChanged like max-depth does; the viewer passes RenderSettings through whole.
@@ -244,8 +256,10 @@ OverlayActions Overlay::build(const OverlayFacts& facts, ViewSettings& settings,
         ImGui::Begin(facts.scene.c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize);
         ImGui::PushItemWidth(ImGui::GetFontSize() * 7.0f);
         statsSection(facts);
-        if (ImGui::CollapsingHeader("Render", ImGuiTreeNodeFlags_DefaultOpen))
+        if (ImGui::CollapsingHeader("Render", ImGuiTreeNodeFlags_DefaultOpen)) {
             renderSection(settings, actions);
+            guidingRow(facts.guideStatus, settings.render, actions);
+        }
         if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen))
             displaySection(settings, actions);
         if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) {

@@ -33,6 +33,7 @@ struct OverlayFacts {
     bool paused = false;
     std::vector<std::string> cameraNames;
     uint32_t camera = 0;
+    std::string guideStatus; // viewer_guide.h: training, frozen or none
 };
 
 // What the user asked for this frame, beyond the edited settings.

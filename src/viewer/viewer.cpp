@@ -10,6 +10,7 @@
 
 #include "errors.h"
 #include "gpu/context.h"
+#include "render/guiding/guiding_schedule.h"
 #include "render/samplers/samplers.h"
 #include "viewer/camera_controller.h"
 #include "viewer/camera_list.h"
@@ -17,6 +18,7 @@
 #include "viewer/overlay.h"
 #include "viewer/render_targets.h"
 #include "viewer/screenshot.h"
+#include "viewer/viewer_guide.h"
 #include "viewer/viewer_input.h"
 #include "viewer/viewer_setup.h"
 #include "viewer/window.h"
@@ -89,6 +91,7 @@ private:
 
     ViewerOptions options_;
     ViewSettings settings_;
+    ViewerGuide guide_; // --guiding: trains while the image refines
     ViewerScene scene_;
     uint32_t cameraIndex_;
     Window window_; // outlives the context, which owns the window's surface
@@ -146,7 +149,15 @@ void Viewer::rebuildTargets() {
         context_.rayTracingEnabled() ? Traversal::RayTracing : Traversal::Bvh;
     if (samplerIsFiniteSet(render.sampler)) // the set is what the viewer will accumulate
         render.sampleSetSize = settings_.effectiveSppLimit();
+    if (render.guidingAuto) { // auto's rule for this scene, with no end to the samples
+        render.guidingAuto = false;
+        render.guiding = guiding::decideGuiding(guiding::GuidingMode::Auto,
+                                                guiding::guideSceneTraits(scene_.prepared),
+                                                1u << 16)
+                             .on;
+    }
     targets_.rebuild(presenter_.extent(), render, presenter_.displayBuffer());
+    guide_.attach(targets_.full().renderer.get());
 }
 
 void Viewer::selectCamera(uint32_t index) {
@@ -211,6 +222,7 @@ OverlayFacts Viewer::facts() const {
     facts.spp = shownSpp_;
     facts.samplesThisFrame = shownSamples_;
     facts.previewDivisor = shownDivisor_;
+    facts.guideStatus = guide_.status();
     facts.frameMs = frameMs_;
     facts.stats = &shownStats_;
     facts.paused = paused_;
@@ -305,8 +317,10 @@ int Viewer::run() {
         if (refining() || target.renderer->samplesDone() == 0)
             samples = targets_.render(target,
                                       target.divisor == 1 ? settings_.effectiveSppLimit() : 0);
-        if (target.divisor == 1)
+        if (target.divisor == 1) {
             fullSamples_ += samples;
+            guide_.afterSamples(settings_.effectiveSppLimit());
+        }
         else
             ++previewFrames_;
         shownStats_ = target.renderer->stats();
@@ -344,6 +358,8 @@ int Viewer::run() {
                      targets_.fullSpp(),
                      presenter_.extent().width, presenter_.extent().height,
                      wall > 0.0 ? fullSamples_ / wall : 0.0);
+    if (!options_.quiet && targets_.full().renderer && targets_.full().renderer->guide())
+        std::fprintf(stderr, "wavefront: %s\n", guide_.status().c_str());
     if (context_.validationMessageCount() > 0) {
         std::fprintf(stderr, "wavefront: %u validation message(s)\n",
                      context_.validationMessageCount());

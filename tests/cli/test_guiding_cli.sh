@@ -33,6 +33,19 @@ check "auto on an all-mirror-free box" 0 "$wavefront" render "$box" -o "$work/au
     --spp 16 --width 32 --max-depth 4 --guiding auto --verbose
 expect "auto box says diffuse" grep -q "guiding auto: off .*diffuse/glossy" "$work/stderr"
 
+# bench: the guide trains first (untimed), then both kernels time the same frozen guide.
+check "bench guided, both kernels" 0 "$wavefront" bench "$caustic" --guiding on \
+    --compare-megakernel --width 32 --frames 1 --warmup 0 --max-depth 4 --quiet \
+    --json "$work/bench.json"
+expect "bench: guided" json_has "$work/bench.json" \
+    "d['guiding']['on'] and d['guiding']['trainingSpp'] == 31"
+expect "bench: both kernels ran" json_has "$work/bench.json" "len(d['runs']) == 2"
+expect "bench says the kernels share the guide" grep -q "both kernels sample the same guide" \
+    "$work/stdout"
+check "bench auto" 0 "$wavefront" bench "$box" --width 32 --frames 1 --warmup 0 --quiet \
+    --json "$work/bench-auto.json"
+expect "bench auto: off" json_has "$work/bench-auto.json" "not d['guiding']['on']"
+
 # Refusals: one line, exit 2.
 check "on + target-error" 2 "$wavefront" render "$box" -o "$work/x.exr" --guiding on \
     --target-error 0.01 "${small[@]}"

@@ -124,9 +124,13 @@ GuidingDecision decideGuiding(GuidingMode mode, const GuideSceneTraits& traits,
         return decision;
     }
     // Training takes samples from the image: fewer than 4 spp leave it nothing to learn from.
+    if (budgetSpp < 4) {
+        decision.reason = "auto: off (under 4 spp: too few samples to train a guide on)";
+        return decision;
+    }
     const double share = imageShare(budgetSpp);
     const double variance = traits.delta ? kCausticVarianceGain : kDiffuseVarianceGain;
-    decision.predictedGain = budgetSpp < 4 ? 0.0 : variance * share / kGuidedPathCost;
+    decision.predictedGain = variance * share / kGuidedPathCost;
     decision.on = decision.predictedGain >= kAutoMinGain;
     char line[200];
     std::snprintf(line, sizeof line,
