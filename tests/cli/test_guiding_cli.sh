@@ -46,6 +46,31 @@ check "bench auto" 0 "$wavefront" bench "$box" --width 32 --frames 1 --warmup 0 
     --json "$work/bench-auto.json"
 expect "bench auto: off" json_has "$work/bench-auto.json" "not d['guiding']['on']"
 
+# The Slurm script passes --guiding to every part (a stand-in sbatch runs the job array and
+# the merge here, in order).
+mkdir -p "$work/bin"
+cat >"$work/bin/sbatch" <<'SB'
+#!/usr/bin/env bash
+array="" script=""
+for a in "$@"; do
+    case "$a" in --array=*) array=${a#--array=} ;; --*) ;; *) script=$a ;; esac
+done
+if [ -n "$array" ]; then
+    for id in $(seq "${array%-*}" "${array#*-}"); do SLURM_ARRAY_TASK_ID=$id bash "$script" || exit 1; done
+    echo 1
+else
+    bash "$script" >/dev/null 2>&1 || exit 1
+    echo 2
+fi
+SB
+chmod +x "$work/bin/sbatch"
+check "slurm_render guided" 0 env PATH="$work/bin:$PATH" WAVEFRONT="$wavefront" \
+    bash "$(dirname "$0")/../../scripts/slurm_render.sh" "$box" "$work/farm.exr" --parts 2 \
+    --spp 16 --guiding on --width 32 --max-depth 4
+expect "slurm: merged" test -s "$work/farm.exr"
+expect "slurm: parts guided" grep -aq "guidingIterations" "$work/farm.exr.parts/frame_0_part_1.exr"
+expect "slurm: the flag reached the parts" grep -q -- "--guiding on" "$work/farm.exr.parts/part.sh"
+
 # Refusals: one line, exit 2.
 check "on + target-error" 2 "$wavefront" render "$box" -o "$work/x.exr" --guiding on \
     --target-error 0.01 "${small[@]}"
