@@ -47,10 +47,11 @@ std::vector<OptionSpec> samplingOptions() {
         {"--clamp", "", "X", "clamp each contribution to X per channel (biased; default 0: "
                              "off)"},
         {"--seed", "", "S", "random seed; same seed, same image bit for bit (default 0)"},
-        {"--guiding", "", "MODE", "path guiding (an SD-tree trained over 1, 2, 4, ... spp, the "
-                                  "image from the last half of the samples): off, on, or auto "
-                                  "(default: on only where the measured rule in "
-                                  "docs/guiding.md predicts a gain; today it predicts none)"},
+        {"--guiding", "", "MODE", "path guiding: off, on, or auto (default: on only where the "
+                                  "measured rule of docs/guiding.md predicts a gain; on "
+                                  "lavapipe it predicts none). Trains an SD-tree over 1, 2, "
+                                  "4, ... spp (within --time-limit), the image from the rest; "
+                                  "a --resume trains its own guide"},
         {"--sampler", "", "NAME", "sample pattern: independent, stratified, multijitter, "
                                   "halton, hammersley, sobol (default) or bluenoise"},
         {"--texture-filter", "", "MODE", "cone (mip levels chosen by ray cones; default) or "
