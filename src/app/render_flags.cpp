@@ -178,9 +178,9 @@ RenderRequest renderRequestFrom(const ParsedArgs& parsed) {
     request.targetError = parsed.floatValue("--target-error", 0.0f, 1e-12f, 1e6f);
     if (adaptive) {
         if (settings.guiding)
-            throw UsageError("--guiding on does not combine with --target-error (its rounds "
-                             "trace pixel lists the guide's training does not cover): use "
-                             "--guiding off or auto");
+            throw UsageError("--guiding on does not combine with --target-error (its pilot and "
+                             "rounds each restart the renderer with a seed of their own, which "
+                             "forgets the guide): use --guiding off or auto");
         checkAdaptiveFlags(parsed, settings);
         settings.pixelList = true;
     }
