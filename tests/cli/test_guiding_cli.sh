@@ -86,6 +86,30 @@ expect "time-limit: training within half" json_has "$work/tl.json" \
     "len(d['guiding']['iterations']) == 1 or d['guiding']['trainingSeconds'] <= 2.0 + 0.5"
 expect "time-limit: an image" json_has "$work/tl.json" "d['guiding']['imageSpp'] >= 1"
 
+# SIGTERM during a guided render (training, for a budget this large) writes a checkpoint of the
+# samples done; resuming it trains a guide of its own, and the result is exactly the merge of
+# the checkpoint and a guided --spp-offset part over the rest.
+ck="$work/gck.exr"
+"$wavefront" render "$box" -o "$work/never.exr" --spp 1000000 --guiding on "${small[@]}" \
+    --checkpoint "$ck" --checkpoint-every 0.2 2>"$work/interrupted.log" &
+pid=$!
+for _ in $(seq 1 100); do [ -s "$ck" ] && break; sleep 0.2; done
+kill -TERM "$pid"
+wait "$pid"
+code=$?
+expect "guided: SIGTERM ends the render with 143" test "$code" -eq 143
+done_spp=$(sed -n 's/.*after \([0-9]*\) spp.*/\1/p' "$work/interrupted.log")
+expect "guided: the interruption says how far it got" test -n "$done_spp"
+target=$(( ${done_spp:-0} + 64 ))
+check "guided resume after SIGTERM" 0 "$wavefront" render "$box" -o "$work/gres.exr" \
+    --spp "$target" --guiding on "${small[@]}" --resume "$ck"
+check "guided rest as a part" 0 "$wavefront" render "$box" -o "$work/grest.exr" --spp 64 \
+    --spp-offset "${done_spp:-0}" --guiding on "${small[@]}"
+check "merge checkpoint and part" 0 "$wavefront" merge "$ck" "$work/grest.exr" \
+    -o "$work/gmerged.exr"
+check "resumed = checkpoint + part, bit for bit" 0 "$regions" --same "$work/gres.exr" \
+    "$work/gmerged.exr"
+
 # Unbiasedness of the combinations, against an unguided reference.
 check "reference" 0 "$wavefront" render "$box" -o "$work/ref.exr" --spp 2048 "${small[@]}" \
     --guiding off --seed 1000
