@@ -78,13 +78,13 @@ struct RenderSettings {
     // keeps at least half of samplesPerPixel, then renders the rest with the frozen guide.
     // Sample indices continue across iterations, so the image's samples never trained it.
     bool guiding = false;
-    // --guiding auto (the default): the command decides `guiding` per scene once it is loaded
-    // (resolveGuiding, guiding_schedule.h's rule); unresolved, auto guides nothing.
-    bool guidingAuto = false;
     float guideBsdfFraction = 0.5f; // the BSDF's share of the one-sample mixture
     // At most this many training iterations (tests set 0 to render with a guide they froze
     // themselves through WavefrontRenderer::guide()).
     uint32_t guideMaxIterations = 0xffffffffu;
+    // --guiding auto (the default): the command decides `guiding` per scene once it is loaded
+    // (resolveGuiding, guiding_schedule.h's rule); unresolved, auto guides nothing.
+    bool guidingAuto = false;
 };
 
 } // namespace wf

@@ -333,9 +333,10 @@ void WavefrontRenderer::renderGuided(const std::function<void(const WaveProgress
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
     };
     guide_->setTraining(true);
-    for (uint32_t spp = 0, iteration = 0;
-         !(stop && stop->load()) && (spp = schedule.nextTrainingSpp(samplesDone_, elapsed())) > 0;
-         ++iteration) {
+    for (uint32_t iteration = 0; !(stop && stop->load()); ++iteration) {
+        const uint32_t spp = schedule.nextTrainingSpp(samplesDone_, elapsed());
+        if (spp == 0)
+            break;
         clearFilm();
         const auto start = std::chrono::steady_clock::now();
         renderSamples(spp);
