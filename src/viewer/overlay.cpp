@@ -256,12 +256,12 @@ OverlayActions Overlay::build(const OverlayFacts& facts, ViewSettings& settings,
         ImGui::Begin(facts.scene.c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize);
         ImGui::PushItemWidth(ImGui::GetFontSize() * 7.0f);
         statsSection(facts);
-        if (ImGui::CollapsingHeader("Render", ImGuiTreeNodeFlags_DefaultOpen)) {
+        if (ImGui::CollapsingHeader("Render", ImGuiTreeNodeFlags_DefaultOpen))
             renderSection(settings, actions);
-            guidingRow(facts.guideStatus, settings.render, actions);
-        }
         if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen))
             displaySection(settings, actions);
+        if (ImGui::CollapsingHeader("Path guiding", ImGuiTreeNodeFlags_DefaultOpen))
+            guidingRow(facts.guideStatus, settings.render, actions);
         if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) {
             int camera = int(facts.camera);
             std::string items;

@@ -10,7 +10,6 @@
 
 #include "errors.h"
 #include "gpu/context.h"
-#include "render/guiding/guiding_schedule.h"
 #include "render/samplers/samplers.h"
 #include "viewer/camera_controller.h"
 #include "viewer/camera_list.h"
@@ -149,13 +148,7 @@ void Viewer::rebuildTargets() {
         context_.rayTracingEnabled() ? Traversal::RayTracing : Traversal::Bvh;
     if (samplerIsFiniteSet(render.sampler)) // the set is what the viewer will accumulate
         render.sampleSetSize = settings_.effectiveSppLimit();
-    if (render.guidingAuto) { // auto's rule for this scene, with no end to the samples
-        render.guidingAuto = false;
-        render.guiding = guiding::decideGuiding(guiding::GuidingMode::Auto,
-                                                guiding::guideSceneTraits(scene_.prepared),
-                                                1u << 16)
-                             .on;
-    }
+    ViewerGuide::resolve(render, scene_.prepared);
     targets_.rebuild(presenter_.extent(), render, presenter_.displayBuffer());
     guide_.attach(targets_.full().renderer.get());
 }
@@ -319,10 +312,10 @@ int Viewer::run() {
                                       target.divisor == 1 ? settings_.effectiveSppLimit() : 0);
         if (target.divisor == 1) {
             fullSamples_ += samples;
-            guide_.afterSamples(settings_.effectiveSppLimit());
-        }
-        else
+            guide_.afterSamples(target.renderer.get(), settings_.effectiveSppLimit());
+        } else {
             ++previewFrames_;
+        }
         shownStats_ = target.renderer->stats();
         shownSpp_ = target.renderer->samplesDone();
         shownSamples_ = samples;
@@ -350,6 +343,8 @@ int Viewer::run() {
     const double wall = secondsSince(start);
     if (!options_.screenshot.empty())
         captureScreenshot(options_.screenshot);
+    if (!options_.quiet && targets_.full().renderer && targets_.full().renderer->guide())
+        std::fprintf(stderr, "wavefront: %s\n", guide_.status().c_str());
     if (!options_.quiet)
         std::fprintf(stderr,
                      "wavefront: %u frames (%u previews) in %.2f s (%.1f ms/frame); %u spp at "
@@ -358,8 +353,6 @@ int Viewer::run() {
                      targets_.fullSpp(),
                      presenter_.extent().width, presenter_.extent().height,
                      wall > 0.0 ? fullSamples_ / wall : 0.0);
-    if (!options_.quiet && targets_.full().renderer && targets_.full().renderer->guide())
-        std::fprintf(stderr, "wavefront: %s\n", guide_.status().c_str());
     if (context_.validationMessageCount() > 0) {
         std::fprintf(stderr, "wavefront: %u validation message(s)\n",
                      context_.validationMessageCount());

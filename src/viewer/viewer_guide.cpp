@@ -2,11 +2,22 @@
 
 #include "render/guiding/guiding_schedule.h"
 #include "render/guiding/path_guide.h"
+#include "render/render_settings.h"
 #include "render/wavefront_renderer.h"
 
 namespace wf {
 
+void ViewerGuide::resolve(RenderSettings& render, const PreparedScene& scene) {
+    if (!render.guidingAuto)
+        return;
+    render.guidingAuto = false;
+    render.guiding = guiding::decideGuiding(guiding::GuidingMode::Auto,
+                                            guiding::guideSceneTraits(scene), 1u << 16)
+                         .on;
+}
+
 void ViewerGuide::attach(WavefrontRenderer* renderer) {
+    attached_ = renderer;
     renderer_ = renderer && renderer->guide() ? renderer : nullptr;
     iteration_ = 0;
     start_ = 0;
@@ -15,7 +26,9 @@ void ViewerGuide::attach(WavefrontRenderer* renderer) {
         renderer_->guide()->setTraining(true);
 }
 
-void ViewerGuide::afterSamples(uint32_t sppLimit) {
+void ViewerGuide::afterSamples(WavefrontRenderer* renderer, uint32_t sppLimit) {
+    if (renderer != attached_)
+        attach(renderer);
     if (!renderer_)
         return;
     const uint32_t end = guiding::progressiveTrainingEnd(iteration_, kIterations);
