@@ -59,6 +59,7 @@ struct Renderer::Settings {
     double targetError = 0.0;
     std::vector<std::string> aovs;
     std::string key; // the flags but --seed and the sample range: what the pipelines depend on
+    std::string guidingDecision; // --guiding: asked, or auto's decision and why
 };
 
 Renderer::Renderer(std::optional<int> device, bool validation, bool quiet,
@@ -136,8 +137,9 @@ Renderer::Settings Renderer::readFlags(const LoadedScene& scene,
                    {.width = kRenderDefaultWidth, .widthFollowsHeight = true}, request.settings);
     // A closed renderer refuses the call afterwards (requireOpen); its flags still parse.
     request.settings.traversal = context_ ? traversalFor(*context_) : Traversal::Bvh;
+    const std::string decision = resolveGuiding(request.settings, *scene.prepared).reason;
     Settings settings{request.settings, request.targetError, request.aovs,
-                      std::to_string(scene.id)};
+                      std::to_string(scene.id), decision};
     for (size_t i = 0; i < flags.size(); ++i) {
         if (flags[i] == "--seed" || flags[i] == "--spp-offset" || flags[i] == "--spp-total")
             ++i; // restart() sets these on a kept renderer
@@ -197,6 +199,11 @@ pyb::dict Renderer::output(const LoadedScene& scene, const Settings& settings,
     StatsContext context{scene.path, context_->deviceName(), s.width, s.height, s.maxDepth,
                          s.seed, sceneStatsFields(*scene.prepared)};
     context.extraFields.push_back({"loadSeconds", jsonNumber(scene.summary.loadSeconds)});
+    context.extraFields.push_back({"guidingDecision", jsonQuoted(settings.guidingDecision)});
+    if (s.guiding)
+        context.extraFields.push_back(
+            {"guiding", "{\"iterations\": " + std::to_string(stats.guideIterations.size()) +
+                            ", \"imageSpp\": " + std::to_string(stats.guideFinalSamples) + "}"});
     for (const auto& field : extraStats)
         context.extraFields.push_back(field);
     context.extraFields.push_back({"peakHostMemoryBytes", std::to_string(peakHostMemoryBytes())});
@@ -313,6 +320,13 @@ uint64_t Renderer::begin(const LoadedScene& scene, const std::vector<std::string
     if (settings.targetError > 0.0 || settings.render.timeLimitSeconds > 0.0)
         throw UsageError("render_progressive takes neither target_error nor time_limit (the "
                          "caller decides when to stop)");
+    if (settings.render.guiding && settings.guidingDecision.rfind("auto", 0) == 0) {
+        settings.render.guiding = false; // auto never refuses
+        settings.guidingDecision = "auto: off (render_progressive does not guide)";
+    }
+    if (settings.render.guiding)
+        throw UsageError("render_progressive does not guide (its passes would each restart "
+                         "the guide's training): use render, or guiding \"off\" or \"auto\"");
     pyb::gil_scoped_release release;
     std::lock_guard lock(mutex_);
     requireOpen();

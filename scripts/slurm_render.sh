@@ -13,9 +13,11 @@
 #               writes every frame
 #   --wait      return when the merge job has ended, with its exit code (sbatch --wait)
 #   WAVEFRONT=PATH picks the binary (default: build/wavefront beside this script's folder).
+# Render flags go to every part: --guiding on guides each part with a guide it trains itself
+# (each part unbiased, so the merge is too).
 # Options after -- go to both sbatch calls (e.g. -- --partition=gpu --time=2:00:00).
 set -euo pipefail
-usage() { sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
+usage() { sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
 [ $# -ge 2 ] || usage
 scene=$(realpath "$1")
 out=$(realpath -m "$2")

@@ -17,6 +17,8 @@
 #include "gpu/context.h"
 #include "image/atomic_file.h"
 #include "render/gpu_scene/scene_buffers.h"
+#include "render/guiding/guiding_schedule.h"
+#include "render/guiding/path_guide.h"
 #include "render/wavefront_renderer.h"
 
 namespace wf {
@@ -84,6 +86,38 @@ void renderFrame(Timed& timed, uint32_t spp, bool record) {
     addRenderStats(timed.run.timed, frame);
 }
 
+// --guiding on: the guide trains before the timed frames, as a render of kBenchGuideBudget spp
+// would (GuideSchedule: 1 + 2 + ... + 16 spp, 31 in all), on the wavefront; then it freezes
+// and the megakernel gets the same tree, so the frames time the guided image phase of both
+// kernels on one guide: like with like.
+constexpr uint32_t kBenchGuideBudget = 64;
+
+struct GuideTraining {
+    uint32_t spp = 0;
+    double seconds = 0.0;
+};
+
+GuideTraining trainBenchGuide(std::vector<Timed>& kernels, uint64_t pixels) {
+    WavefrontRenderer& renderer = *kernels[0].renderer;
+    PathGuide& guide = *renderer.guide();
+    guiding::GuideSchedule schedule(kBenchGuideBudget, 0.0, 0xffffffffu);
+    const auto start = std::chrono::steady_clock::now();
+    GuideTraining training;
+    guide.setTraining(true);
+    for (uint32_t iteration = 0, spp = 0;
+         (spp = schedule.nextTrainingSpp(training.spp, 0.0)) > 0; ++iteration) {
+        renderer.renderSamples(spp);
+        guide.endIteration(iteration, pixels);
+        training.spp += spp;
+    }
+    guide.setTraining(false);
+    for (size_t k = 1; k < kernels.size(); ++k)
+        kernels[k].renderer->guide()->setTree(guide.tree());
+    training.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return training;
+}
+
 } // namespace
 
 std::string benchHelp() { return helpText(benchSpec()); }
@@ -98,8 +132,6 @@ int runBenchCommand(const std::vector<std::string>& args) {
     const uint32_t spp = parsed.uintValue("--spp", 1, 1, 1u << 16);
     RenderSettings settings;
     applyRenderFlags(parsed, kDefaultMaxDepth, settings);
-    if (settings.guiding)
-        throw UsageError("--guiding on: only `render` guides yet (bench does not)");
     settings.submitBudgetSeconds = parsed.uintValue("--budget-ms", 250, 0, 600000) * 1e-3;
     settings.maxPathsPerWave = parsed.uintValue("--wave-paths", 1u << 20, 1024, 1u << 26);
     if (uint64_t(frames + warmup) * spp > (1u << 24))
@@ -120,6 +152,7 @@ int runBenchCommand(const std::vector<std::string>& args) {
     settings.traversal = traversalFor(context);
     ShaderCompiler compiler;
     const PreparedScene prepared = prepareScene(std::move(scene));
+    const guiding::GuidingDecision guideDecision = resolveGuiding(settings, prepared);
 
     std::vector<Timed> kernels(withMegakernel ? 2 : 1);
     kernels[0].renderer =
@@ -138,6 +171,9 @@ int runBenchCommand(const std::vector<std::string>& args) {
     }
     for (Timed& k : kernels)
         k.run.memory = k.renderer->memoryReport();
+    GuideTraining training;
+    if (settings.guiding)
+        training = trainBenchGuide(kernels, settings.width * settings.height);
 
     BenchSetup setup{scenePath, context.deviceName(), context.driverInfo(),
                      kernels[0].renderer->variant().describe(), settings.width, settings.height,
@@ -145,6 +181,10 @@ int runBenchCommand(const std::vector<std::string>& args) {
                      settings.submitBudgetSeconds, prepared.triangles.size(),
                      prepared.materials.size(), prepared.bvhStats};
     setup.instances = prepared.instances.size();
+    setup.guiding = settings.guiding;
+    setup.guidingText = guideDecision.reason;
+    setup.guideTrainingSpp = training.spp;
+    setup.guideTrainingSeconds = training.seconds;
     setup.instancedTriangles = prepared.instancedTriangles;
     const ShaderVariant& variant = kernels[0].renderer->variant();
     setup.lightSelection = variant.nextEventEstimation
@@ -195,8 +235,16 @@ int runBenchCommand(const std::vector<std::string>& args) {
                     static_cast<unsigned long long>(setup.instances),
                     static_cast<unsigned long long>(setup.instancedTriangles));
     std::printf("light selection: %s\n", setup.lightSelectionText.c_str());
-    std::printf("traversal: %s%s\n\n", setup.traversalText.c_str(),
+    std::printf("traversal: %s%s\n", setup.traversalText.c_str(),
                 withMegakernel ? "; the megakernel walks the BVH" : "");
+    if (setup.guiding)
+        std::printf("guiding: %s; the guide trained over %u spp first (%.3f s, untimed), then "
+                    "froze%s\n\n",
+                    setup.guidingText.c_str(), setup.guideTrainingSpp,
+                    setup.guideTrainingSeconds,
+                    withMegakernel ? "; both kernels sample the same guide" : "");
+    else
+        std::printf("guiding: %s\n\n", setup.guidingText.c_str());
     // --megakernel shows the megakernel's table, --compare-megakernel both.
     if (!withMegakernel || compare)
         std::fputs(benchTable(setup, kernels[0].run).c_str(), stdout);

@@ -237,7 +237,10 @@ std::string benchJson(const BenchSetup& setup, const std::vector<BenchRun>& runs
         << jsonNumber(setup.lightTreeBuildSeconds) << "},\n  \"traversal\": {\"mode\": \""
         << setup.traversal << "\", \"megakernel\": \"bvh\", \"accelerationBytes\": "
         << setup.accelerationBytes << ", \"accelerationBuildSeconds\": "
-        << jsonNumber(setup.accelerationBuildSeconds) << "},\n  \"runs\": {";
+        << jsonNumber(setup.accelerationBuildSeconds) << "},\n  \"guiding\": {\"on\": "
+        << (setup.guiding ? "true" : "false") << ", \"decision\": " << jsonQuoted(setup.guidingText)
+        << ", \"trainingSpp\": " << setup.guideTrainingSpp << ", \"trainingSeconds\": "
+        << jsonNumber(setup.guideTrainingSeconds) << "},\n  \"runs\": {";
     for (size_t i = 0; i < runs.size(); ++i)
         out << (i ? "," : "") << "\n    " << jsonQuoted(runs[i].kernel) << ": "
             << runJson(runs[i]);

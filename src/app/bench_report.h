@@ -58,6 +58,12 @@ struct BenchSetup {
     std::string traversalText;
     uint64_t accelerationBytes = 0;
     double accelerationBuildSeconds = 0.0;
+    // --guiding: whether the kernels guided (auto's decision and why), and the untimed
+    // training before the frames (both kernels then sample the same frozen guide).
+    bool guiding = false;
+    std::string guidingText;
+    uint32_t guideTrainingSpp = 0;
+    double guideTrainingSeconds = 0.0;
 };
 
 struct Spread {

@@ -149,9 +149,11 @@ int runFrameSequence(const ParsedArgs& parsed, const RenderRequest& request) {
         const double loadSeconds = secondsSince(start);
         const PreparedScene& prepared = scenes.prepare(std::move(scene));
         refits += scenes.refitted() ? 1 : 0;
+        resolveGuiding(settings, prepared); // --guiding auto, per frame's scene
         const double buildSeconds = secondsSince(start) - loadSeconds;
         const bool sameImage = renderer && settings.width == rendererSettings.width &&
-                               settings.height == rendererSettings.height;
+                               settings.height == rendererSettings.height &&
+                               settings.guiding == rendererSettings.guiding;
         const bool reused = sameImage && renderer->setScene(prepared);
         if (!reused) {
             renderer.reset(); // its buffers go before the next renderer's are made

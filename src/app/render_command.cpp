@@ -292,9 +292,8 @@ int runRenderCommand(const std::vector<std::string>& args) {
                              " samples per pixel, --spp asks for " +
                              std::to_string(settings.samplesPerPixel));
     }
-    if (settings.guiding && (resumed || parsed.has("--checkpoint")))
-        throw UsageError("--guiding does not combine with --checkpoint or --resume yet (the "
-                         "guide is not saved)");
+    // --guiding with --checkpoint and --resume: the guide is not saved; a resumed render
+    // trains its own over the samples it renders (each part unbiased, merged by sample count).
     const uint32_t resumedSpp = resumed ? resumed->spp : 0u;
     RenderSettings rest = settings;
     rest.sppOffset += resumedSpp;
@@ -304,14 +303,20 @@ int runRenderCommand(const std::vector<std::string>& args) {
     settings.traversal = rest.traversal = traversalFor(context);
     ShaderCompiler compiler;
     PreparedScene prepared = prepareScene(std::move(scene));
+    const guiding::GuidingDecision guideDecision = resolveGuiding(settings, prepared);
+    rest.guiding = settings.guiding;
+    rest.guidingAuto = false;
     WavefrontRenderer renderer(context, prepared, rest, compiler);
-    if (verbose)
+    if (verbose) {
         printVerbose(prepared, renderer, context, summary);
+        std::fprintf(stderr, "wavefront: guiding %s\n", guideDecision.reason.c_str());
+    }
     StatsContext statsContext{scenePath,       context.deviceName(), settings.width,
                               settings.height, settings.maxDepth,    settings.seed, {}};
     statsContext.extraFields = sceneStatsFields(prepared);
     statsContext.extraFields.push_back({"loadSeconds", jsonNumber(summary.loadSeconds)});
     statsContext.extraFields.push_back(traversalStatsField(renderer));
+    statsContext.extraFields.push_back({"guidingDecision", jsonQuoted(guideDecision.reason)});
     if (adaptive) {
         renderAdaptively(renderer, settings, targetError, run, verbose,
                          {*output, parsed.value("--json"), aovs, quiet}, statsContext);

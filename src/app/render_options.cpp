@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "errors.h"
+#include "render/guiding/guiding_schedule.h"
 #include "render/samplers/samplers.h"
 #include "scene/default_camera.h"
 #include "scene/lights/environment_map.h"
@@ -46,10 +47,12 @@ std::vector<OptionSpec> samplingOptions() {
         {"--clamp", "", "X", "clamp each contribution to X per channel (biased; default 0: "
                              "off)"},
         {"--seed", "", "S", "random seed; same seed, same image bit for bit (default 0)"},
-        {"--guiding", "", "MODE", "off (default) or on: path guiding (an SD-tree trained over "
-                                  "1, 2, 4, ... spp, the iterations' images weighed by "
-                                  "inverse variance; render only for now, converge has the "
-                                  "method word guided)"},
+        {"--guiding", "", "MODE", "path guiding: off, on, or auto (default: on only where the "
+                                  "measured rule of docs/guiding.md predicts a gain; on "
+                                  "lavapipe it predicts none). Trains an SD-tree over 1, 2, "
+                                  "4, ... spp (within --time-limit), the image from the rest, "
+                                  "the iterations' images weighed by inverse variance; a "
+                                  "--resume trains its own guide"},
         {"--sampler", "", "NAME", "sample pattern: independent, stratified, multijitter, "
                                   "halton, hammersley, sobol (default) or bluenoise"},
         {"--texture-filter", "", "MODE", "cone (mip levels chosen by ray cones; default) or "
@@ -205,7 +208,10 @@ void applyRenderFlags(const ParsedArgs& parsed, uint32_t defaultMaxDepth,
     settings.sampler = parseSampler(
         parsed.choiceValue("--sampler", samplerName(kDefaultSampler), samplerNames()));
     settings.randomizeSamples = !parsed.has("--no-randomize");
-    settings.guiding = parsed.choiceValue("--guiding", "off", {"off", "on"}) == "on";
+    const guiding::GuidingMode guide =
+        guiding::parseGuidingMode(parsed.choiceValue("--guiding", "auto", {"off", "on", "auto"}));
+    settings.guiding = guide == guiding::GuidingMode::On;
+    settings.guidingAuto = guide == guiding::GuidingMode::Auto;
     settings.textureLod =
         parsed.choiceValue("--texture-filter", "cone", {"cone", "none"}) == "cone";
     const std::string split = parsed.choiceValue("--shade-split", "auto", {"auto", "on", "off"});
@@ -299,6 +305,25 @@ void applyImageSize(const ParsedArgs& parsed, const Camera& camera, const ImageS
         settings.height = rounded(settings.width / aspect);
     else if (!hasWidth && rule.widthFollowsHeight)
         settings.width = rounded(settings.height * aspect);
+}
+
+guiding::GuidingDecision resolveGuiding(RenderSettings& settings, const PreparedScene& scene) {
+    if (!settings.guidingAuto)
+        return guiding::decideGuiding(settings.guiding ? guiding::GuidingMode::On
+                                                       : guiding::GuidingMode::Off,
+                                      {}, settings.samplesPerPixel);
+    settings.guidingAuto = false;
+    guiding::GuidingDecision decision;
+    if (settings.pixelList) {
+        // auto never refuses: where `on` would be refused, it stays off.
+        decision.reason = "auto: off (--target-error guides nothing yet)";
+    } else {
+        decision = guiding::decideGuiding(guiding::GuidingMode::Auto,
+                                          guiding::guideSceneTraits(scene),
+                                          settings.samplesPerPixel);
+    }
+    settings.guiding = decision.on;
+    return decision;
 }
 
 } // namespace wf

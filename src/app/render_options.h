@@ -12,6 +12,7 @@
 
 #include "app/cli.h"
 #include "gpu/context.h"
+#include "render/guiding/guiding_schedule.h"
 #include "render/wavefront_renderer.h"
 #include "scene/scene.h"
 #include "scene/gltf/gltf_loader.h"
@@ -50,6 +51,10 @@ double sceneTimeFrom(const ParsedArgs& parsed);
 // depthOptions, samplingOptions and --no-randomize into `settings` (UsageError on a bad value).
 void applyRenderFlags(const ParsedArgs& parsed, uint32_t defaultMaxDepth,
                       RenderSettings& settings);
+
+// --guiding auto: decides settings.guiding for `scene` (guiding_schedule.h's rule) and
+// clears guidingAuto; off and on are kept. The decision's reason is for --verbose.
+guiding::GuidingDecision resolveGuiding(RenderSettings& settings, const PreparedScene& scene);
 
 // --device, --quiet and --traversal.
 ContextOptions contextOptionsFrom(const ParsedArgs& parsed);

@@ -100,8 +100,6 @@ int runViewCommand(const std::vector<std::string>& args) {
     ViewSettings& settings = options.settings;
     settings.sppLimit = parsed.uintValue("--spp", 0, 1, 1u << 20);
     applyRenderFlags(parsed, kDefaultMaxDepth, settings.render);
-    if (settings.render.guiding)
-        throw UsageError("--guiding on: only `render` guides yet (view does not)");
     settings.exposure = parsed.floatValue("--exposure", 0.0f, -64.0f, 64.0f);
     settings.tonemap = parsed.choiceValue("--tonemap", "linear", {"linear", "aces"}) == "aces"
                            ? Tonemap::Aces

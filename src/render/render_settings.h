@@ -89,6 +89,9 @@ struct RenderSettings {
     // At most this many training iterations (tests set 0 to render with a guide they froze
     // themselves through WavefrontRenderer::guide()).
     uint32_t guideMaxIterations = 0xffffffffu;
+    // --guiding auto (the default): the command decides `guiding` per scene once it is loaded
+    // (resolveGuiding, guiding_schedule.h's rule); unresolved, auto guides nothing.
+    bool guidingAuto = false;
 };
 
 } // namespace wf

@@ -8,6 +8,7 @@
 #include "gpu/compute_program.h"
 #include "gpu/context.h"
 #include "render/guiding/guide_combination.h"
+#include "render/guiding/guiding_schedule.h"
 #include "render/guiding/path_guide.h"
 #include "render/path_buffers.h"
 #include "render/samplers/sampler_tables.h"
@@ -370,28 +371,18 @@ void WavefrontRenderer::renderPixelList(const std::vector<uint32_t>& pixels,
     }
 }
 
-namespace {
-
-// The training schedule: the spp of training iteration `iteration` (0-based) when `done`
-// samples per pixel of a `budget` are done, or 0 when training is over: doubling from 1 while
-// the rest of the budget after the iteration still keeps at least half of it.
-uint32_t trainingIterationSpp(uint32_t budget, uint32_t done, uint32_t iteration,
-                              uint32_t maxIterations) {
-    if (iteration >= maxIterations || iteration >= 31)
-        return 0;
-    const uint32_t spp = 1u << iteration;
-    return 2ull * (uint64_t(done) + spp) <= budget ? spp : 0;
-}
-
-} // namespace
-
 void WavefrontRenderer::renderGuided(uint32_t budget,
                                      const std::function<void(const WaveProgress&)>& onWave,
                                      const std::atomic<bool>* stop) {
     if (!guide_)
         throw InternalError("renderGuided: the renderer was made without guiding");
-    if (settings_.timeLimitSeconds > 0.0)
-        throw UsageError("--guiding does not combine with --time-limit yet");
+    // Which iterations, how many spp each, and the image passes within --time-limit.
+    guiding::GuideSchedule schedule(budget, settings_.timeLimitSeconds,
+                                    settings_.guideMaxIterations);
+    const auto begin = std::chrono::steady_clock::now();
+    auto elapsed = [&]() {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    };
     // Host work between iterations (tree rebuilds, reading films back, the combination)
     // counts in the render's time, as a pass of its own.
     auto hostSince = [this](std::chrono::steady_clock::time_point start) {
@@ -405,8 +396,7 @@ void WavefrontRenderer::renderGuided(uint32_t budget,
     guiding::ImageCombiner combiner(pixelCount_);
     guide_->setTraining(true);
     for (uint32_t iteration = 0; !(stop && stop->load()); ++iteration) {
-        const uint32_t spp =
-            trainingIterationSpp(budget, samplesDone_, iteration, settings_.guideMaxIterations);
+        const uint32_t spp = schedule.nextTrainingSpp(samplesDone_, elapsed());
         if (spp == 0)
             break;
         clearFilm();
@@ -429,10 +419,15 @@ void WavefrontRenderer::renderGuided(uint32_t budget,
             onWave({samplesDone_, budget, stats_.seconds});
     }
     guide_->setTraining(false);
+    if (stop && stop->load())
+        return; // the film keeps the last iteration's image, for a checkpoint
     clearFilm();
     const uint32_t first = samplesDone_;
     while (samplesDone_ < budget && !(stop && stop->load())) {
-        advance(budget - samplesDone_);
+        const uint32_t samples = schedule.nextImageSpp(samplesDone_, elapsed());
+        if (samples == 0)
+            break;
+        advance(samples);
         if (onWave)
             onWave({samplesDone_, budget, stats_.seconds});
     }

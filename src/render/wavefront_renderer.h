@@ -67,6 +67,9 @@ public:
     // Completes the sample in progress, if renderPixels left one.
     void finishSample();
     uint32_t pixelsOfNextSample() const { return pixelCursor_; }
+    // Zeroes the image but keeps the sample indices counting (the viewer's guide restarts its
+    // image after each training iteration with samples the guide never saw).
+    void clearImage() { clearFilm(); }
     // Clears the film and the statistics; the next sample is sample sppOffset again.
     void reset();
     // Starts over like reset() with another seed, first sample index and (finite-set samplers)

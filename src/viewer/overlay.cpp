@@ -128,6 +128,18 @@ void samplingRows(RenderSettings& render, OverlayActions& actions) {
     }
 }
 
+// --guiding off|on|auto: a live switch (the renderer is rebuilt, and a guided one trains while
+// the image refines: viewer_guide.h), and where the guide stands.
+void guidingRow(const std::string& status, RenderSettings& render, OverlayActions& actions) {
+    int mode = render.guidingAuto ? 2 : render.guiding ? 1 : 0;
+    if (ImGui::Combo("--guiding", &mode, "off\0on\0auto\0")) {
+        render.guiding = mode == 1;
+        render.guidingAuto = mode == 2;
+        actions.renderChanged = true;
+    }
+    ImGui::TextUnformatted(status.c_str());
+}
+
 // One control per ViewSettings field that changes the image, labelled as its flag. A new
 // RenderSettings field (a sampler) gets its row here and its flag in view_command.cpp, and
 // sets renderChanged like max-depth does; the viewer passes RenderSettings through whole.
@@ -250,6 +262,8 @@ OverlayActions Overlay::build(const OverlayFacts& facts, ViewSettings& settings,
             renderSection(settings, actions);
         if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen))
             displaySection(settings, actions);
+        if (ImGui::CollapsingHeader("Path guiding", ImGuiTreeNodeFlags_DefaultOpen))
+            guidingRow(facts.guideStatus, settings.render, actions);
         if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) {
             int camera = int(facts.camera);
             std::string items;

@@ -31,6 +31,7 @@ struct OverlayFacts {
     uint32_t previewDivisor = 1; // > 1: showing the moving-camera preview at 1/d resolution
     double frameMs = 0.0;
     const RenderStats* stats = nullptr; // of the renderer shown
+    std::string guideStatus; // viewer_guide.h: training, frozen or none
     bool paused = false;
     std::vector<std::string> cameraNames;
     uint32_t camera = 0;

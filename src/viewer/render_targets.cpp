@@ -62,6 +62,8 @@ RenderTarget RenderTargets::makeTarget(uint32_t divisor) {
     // suffice (not the render command's 2^20 paths per renderer); the floor keeps a small
     // window's frame to one wave.
     settings.maxPathsPerWave = std::max(settings.width * settings.height, 1u << 18);
+    if (divisor > 1)
+        settings.guiding = false; // the moving-camera preview is too brief to train a guide
     RenderTarget target;
     target.divisor = divisor;
     target.budget = SampleBudget(targetSeconds_);

@@ -19,6 +19,7 @@
 #include "viewer/overlay.h"
 #include "viewer/render_targets.h"
 #include "viewer/screenshot.h"
+#include "viewer/viewer_guide.h"
 #include "viewer/viewer_input.h"
 #include "viewer/viewer_setup.h"
 #include "viewer/window.h"
@@ -94,6 +95,7 @@ private:
 
     ViewerOptions options_;
     ViewSettings settings_;
+    ViewerGuide guide_; // --guiding: trains while the image refines
     ViewerScene scene_;
     uint32_t cameraIndex_;
     Window window_; // outlives the context, which owns the window's surface
@@ -157,7 +159,9 @@ void Viewer::rebuildTargets() {
         context_.rayTracingEnabled() ? Traversal::RayTracing : Traversal::Bvh;
     if (samplerIsFiniteSet(render.sampler)) // the set is what the viewer will accumulate
         render.sampleSetSize = settings_.effectiveSppLimit();
+    ViewerGuide::resolve(render, scene_.prepared);
     targets_.rebuild(presenter_.extent(), render, presenter_.displayBuffer());
+    guide_.attach(targets_.full().renderer.get());
 }
 
 void Viewer::selectCamera(uint32_t index) {
@@ -237,6 +241,7 @@ OverlayFacts Viewer::facts() const {
     facts.spp = shownSpp_;
     facts.samplesThisFrame = shownSamples_;
     facts.previewDivisor = shownDivisor_;
+    facts.guideStatus = guide_.status();
     facts.frameMs = frameMs_;
     facts.stats = &shownStats_;
     facts.paused = paused_;
@@ -336,10 +341,12 @@ int Viewer::run() {
         if (refining() || target.renderer->samplesDone() == 0)
             samples = targets_.render(target,
                                       target.divisor == 1 ? settings_.effectiveSppLimit() : 0);
-        if (target.divisor == 1)
+        if (target.divisor == 1) {
             fullSamples_ += samples;
-        else
+            guide_.afterSamples(target.renderer.get(), settings_.effectiveSppLimit());
+        } else {
             ++previewFrames_;
+        }
         shownStats_ = target.renderer->stats();
         shownSpp_ = target.renderer->samplesDone();
         shownSamples_ = samples;
@@ -367,6 +374,8 @@ int Viewer::run() {
     const double wall = secondsSince(start);
     if (!options_.screenshot.empty())
         captureScreenshot(options_.screenshot);
+    if (!options_.quiet && targets_.full().renderer && targets_.full().renderer->guide())
+        std::fprintf(stderr, "wavefront: %s\n", guide_.status().c_str());
     if (!options_.quiet)
         std::fprintf(stderr,
                      "wavefront: %u frames (%u previews) in %.2f s (%.1f ms/frame); %u spp at "

@@ -120,6 +120,15 @@ run "render-resized" 0 "$wavefront" render "$cornell" "${common[@]}" --width 160
 check "resized view matches render" "$compare" "$work/resized.exr" "$work/render-resized.exr" \
     --spp 8
 
+# 2b. --guiding on: the guide trains while the image refines (the image restarts after 1, 2,
+# 4, ... spp); the default, auto, decided off for the Cornell box above (the same image as
+# render). The overlay's --guiding switch rebuilds the renderer as --max-depth's does.
+run "guided" 0 "$wavefront" view "$cornell" --guiding on "${common[@]}" "${slow[@]}" \
+    --spp 16 --width 64 --height 48 --frames 12 --screenshot "$work/guided.exr"
+check "guided screenshot written" test -s "$work/guided.exr" -a -s "$work/guided.png"
+check "guided view trained while refining" \
+    grep -Eq "guide: training, iteration [2-8] of 8" "$work/guided.log"
+
 # 3. Orbiting every frame with a 1 ms target: the low-resolution preview is drawn and scaled.
 run "orbit" 0 "$wavefront" view "$cornell" --width 256 --height 192 --orbit 10 --frames 6 \
     --target-ms 1 --screenshot "$work/orbit.exr"

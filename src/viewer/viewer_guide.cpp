@@ -1,0 +1,64 @@
+#include "viewer/viewer_guide.h"
+
+#include "render/guiding/guiding_schedule.h"
+#include "render/guiding/path_guide.h"
+#include "render/render_settings.h"
+#include "render/wavefront_renderer.h"
+
+namespace wf {
+
+void ViewerGuide::resolve(RenderSettings& render, const PreparedScene& scene) {
+    if (!render.guidingAuto)
+        return;
+    render.guidingAuto = false;
+    render.guiding = guiding::decideGuiding(guiding::GuidingMode::Auto,
+                                            guiding::guideSceneTraits(scene), 1u << 16)
+                         .on;
+}
+
+void ViewerGuide::attach(WavefrontRenderer* renderer) {
+    attached_ = renderer;
+    renderer_ = renderer && renderer->guide() ? renderer : nullptr;
+    iteration_ = 0;
+    start_ = 0;
+    trainedSpp_ = 0;
+    if (renderer_)
+        renderer_->guide()->setTraining(true);
+}
+
+void ViewerGuide::afterSamples(WavefrontRenderer* renderer, uint32_t sppLimit) {
+    if (renderer != attached_)
+        attach(renderer);
+    if (!renderer_)
+        return;
+    const uint32_t end = guiding::progressiveTrainingEnd(iteration_, kIterations);
+    if (end == 0)
+        return; // frozen
+    const uint32_t done = renderer_->samplesDone();
+    if (done < start_)
+        start_ = 0; // the camera moved: a new image, the same guide
+    if (renderer_->pixelsOfNextSample() > 0 || done - start_ < end ||
+        (sppLimit > 0 && done >= sppLimit))
+        return;
+    renderer_->guide()->endIteration(iteration_, renderer_->pixelCount());
+    renderer_->clearImage();
+    trainedSpp_ += done - start_;
+    start_ = done;
+    ++iteration_;
+    if (guiding::progressiveTrainingEnd(iteration_, kIterations) == 0)
+        renderer_->guide()->setTraining(false);
+}
+
+std::string ViewerGuide::status() const {
+    if (!renderer_)
+        return "guide: none (unguided)";
+    const uint32_t end = guiding::progressiveTrainingEnd(iteration_, kIterations);
+    if (end == 0)
+        return "guide: frozen after " + std::to_string(trainedSpp_) +
+               " spp of training; the image refines";
+    return "guide: training, iteration " + std::to_string(iteration_ + 1) + " of " +
+           std::to_string(kIterations) + " (the image restarts after " + std::to_string(end) +
+           " spp)";
+}
+
+} // namespace wf
