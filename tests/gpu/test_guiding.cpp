@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "gpu_test_util.h"
+#include "guided_settings.h"
 #include "guiding/guide_tree.h"
 #include "render/gpu_scene/scene_buffers.h"
 #include "render/guiding/path_guide.h"
@@ -14,18 +15,10 @@
 namespace wf::test {
 namespace {
 
-constexpr uint32_t kSize = 32, kBlock = 8;
+constexpr uint32_t kSize = kGuidedSize, kBlock = kGuidedBlock;
 
 RenderSettings settingsFor(uint32_t spp, uint32_t seed, bool guiding, bool combine = true) {
-    RenderSettings settings;
-    settings.width = kSize;
-    settings.height = kSize;
-    settings.samplesPerPixel = spp;
-    settings.maxDepth = 6;
-    settings.seed = seed;
-    settings.guiding = guiding;
-    settings.guideCombineIterations = combine;
-    return settings;
+    return guidedTestSettings(spp, seed, guiding, combine);
 }
 
 struct Reference {

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "gpu_test_util.h"
+#include "guided_settings.h"
 #include "instanced_scene.h"
 #include "render/gpu_scene/scene_buffers.h"
 #include "render/shader_variant.h"
@@ -15,17 +16,10 @@
 namespace wf::test {
 namespace {
 
-constexpr uint32_t kSize = 32, kBlock = 8;
+constexpr uint32_t kSize = kGuidedSize, kBlock = kGuidedBlock;
 
-RenderSettings settingsFor(uint32_t spp, uint32_t seed, bool guiding) {
-    RenderSettings settings;
-    settings.width = kSize;
-    settings.height = kSize;
-    settings.samplesPerPixel = spp;
-    settings.maxDepth = 6;
-    settings.seed = seed;
-    settings.guiding = guiding;
-    return settings;
+RenderSettings settingsFor(uint32_t spp, uint32_t seed, bool guiding, bool combine = true) {
+    return guidedTestSettings(spp, seed, guiding, combine);
 }
 
 void expectGuidedUnbiased(const Scene& scene, const std::string& what) {
