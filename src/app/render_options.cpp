@@ -85,9 +85,6 @@ OptionSpec traversalOption() {
 RayTracingRequest traversalRequest(const ParsedArgs& parsed) {
     const std::string mode = parsed.choiceValue("--traversal", "auto", {"auto", "bvh", "rt"});
     // Motion blur runs in the project's BVH only (motion.glsl), so auto takes it there.
-    if (mode == "rt" && parsed.has("--shutter"))
-        throw UsageError("--traversal rt: motion blur (--shutter) is traced by the project's "
-                         "BVH only; use --traversal bvh or auto");
     return mode == "rt"                           ? RayTracingRequest::Required
            : mode == "bvh" || parsed.has("--shutter") ? RayTracingRequest::Off
                                                       : RayTracingRequest::Auto;
@@ -166,6 +163,9 @@ void applyShutter(const ParsedArgs& parsed, GltfOptions& options) {
     const double close = number(text->substr(colon + 1));
     if (open > close)
         throw UsageError(usage);
+    if (parsed.value("--traversal") == "rt")
+        throw UsageError("--traversal rt: motion blur (--shutter) is traced by the project's "
+                         "BVH only; use --traversal bvh or auto");
     const double fps = parsed.floatValue("--fps", 24.0f, 1e-3f, 1e6f);
     options.shutterOpen = options.time + open / fps;
     options.shutterClose = options.time + close / fps;
@@ -264,7 +264,6 @@ Scene loadSceneWithFlags(const ParsedArgs& parsed, const std::string& path,
     options.time = time ? *time : sceneTimeFrom(parsed);
     options.animation = parsed.value("--animation").value_or("");
     applyShutter(parsed, options);
-    traversalRequest(parsed); // refuses rt with --shutter before the scene's warnings print
     if (auto mode = parsed.value("--instancing"))
         options.instancing = parseInstancing(*mode);
     const auto start = std::chrono::steady_clock::now();
