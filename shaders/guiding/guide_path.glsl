@@ -8,6 +8,12 @@ uint guideLeafNode(vec3 p) {
     return guideSpatialLeaf((p - guide.boxLo) * guide.invBoxSize);
 }
 
+// The BSDF's share of the mixture at the leaf of spatial node `node`: learnt, or the default.
+float guideLeafFraction(uint node) {
+    float learnt = guideSpatial[node].bsdfFraction;
+    return learnt > 0.0 ? learnt : guide.bsdfFraction;
+}
+
 // The path starts: no records.
 void guideStartPath(uint path) {
     if (guide.training != 0u)
@@ -29,8 +35,10 @@ void guideTakeRadianceBefore(uint path, vec3 pathRadiance) {
     }
 }
 
-// A guided vertex at p chose direction wi with mixture pdf `pdf`, leaving throughput beta.
-void guideKeepRecord(uint path, vec3 p, vec3 wi, float pdf, vec3 beta) {
+// A guided vertex at p chose direction wi with mixture pdf `pdf`, leaving throughput beta;
+// bsdfPdf and guidePdf: the mixture's two densities there, fCos: f |cos| (channel mean).
+void guideKeepRecord(uint path, vec3 p, vec3 wi, float pdf, vec3 beta, float bsdfPdf,
+                     float guidePdf, float fCos) {
     if (guide.training == 0u)
         return;
     uint count = guideCounts[path];
@@ -40,13 +48,13 @@ void guideKeepRecord(uint path, vec3 p, vec3 wi, float pdf, vec3 beta) {
     r.position = p;
     r.pending = 1u;
     r.direction = wi;
-    r.pad0 = 0.0;
+    r.bsdfPdf = bsdfPdf;
     r.scale = vec3(beta.r > 0.0 ? 1.0 / (beta.r * pdf) : 0.0,
                    beta.g > 0.0 ? 1.0 / (beta.g * pdf) : 0.0,
                    beta.b > 0.0 ? 1.0 / (beta.b * pdf) : 0.0);
-    r.pad1 = 0.0;
+    r.guidePdf = guidePdf;
     r.radianceBefore = vec3(0.0);
-    r.pad2 = 0.0;
+    r.fCos = fCos;
     guideRecords[path * WF_GUIDE_RECORDS + count] = r;
     guideCounts[path] = count + 1u;
 }
@@ -62,6 +70,21 @@ void guideAddFixed(uint cell, float value) {
         atomicAdd(guideSplats[2u * cell + 1u], 1u);
 }
 
+// Adds value (>= 0, clamped at WF_GUIDE_MAX_MOMENT) to a leaf's 64-bit fixed-point moment
+// (two words at `index`): the low word's carry by hand, the high word for what exceeds it.
+void guideAddMoment(uint index, float value) {
+    float v = min(value, WF_GUIDE_MAX_MOMENT) * WF_GUIDE_MOMENT_SCALE;
+    uint high = uint(v * (1.0 / 4294967296.0));
+    uint low = uint(max(v - float(high) * 4294967296.0, 0.0));
+    if (low != 0u) {
+        uint old = atomicAdd(guideLeafSamples[index], low);
+        if (old + low < old)
+            high += 1u;
+    }
+    if (high != 0u)
+        atomicAdd(guideLeafSamples[index + 1u], high);
+}
+
 // The path is done (its radiance final): every record with its radiance before taken splats
 // the radiance that arrived after it.
 void guideSplatPath(uint path, vec3 pathRadiance) {
@@ -75,10 +98,21 @@ void guideSplatPath(uint path, vec3 pathRadiance) {
         vec3 after = max(pathRadiance - r.radianceBefore, vec3(0.0)) * r.scale;
         float value = (after.r + after.g + after.b) * (1.0 / 3.0);
         uint node = guideLeafNode(r.position);
-        atomicAdd(guideLeafSamples[guideSpatial[node].child & ~WF_GUIDE_LEAF], 1u);
-        if (value > 0.0 && !isinf(value) && !isnan(value))
-            guideAddFixed(guideBuildingCell(guideSpatial[node].buildingRoot,
-                                            guideDirToSquare(r.direction)),
-                          value);
+        uint stats = (guideSpatial[node].child & ~WF_GUIDE_LEAF) * WF_GUIDE_LEAF_STATS;
+        atomicAdd(guideLeafSamples[stats], 1u);
+        if (!(value > 0.0) || isinf(value))
+            continue;
+        guideAddFixed(guideBuildingCell(guideSpatial[node].buildingRoot,
+                                        guideDirToSquare(r.direction)),
+                      value);
+        if (guide.learnFraction != 0u) {
+            // value is L / p_used; the vertex's estimate is f |cos| L / p_used.
+            float estimate = r.fCos * value;
+            float used = guideLeafFraction(node);
+            for (uint j = 0u; j < WF_GUIDE_FRACTIONS; ++j)
+                guideAddMoment(stats + 1u + 2u * j,
+                               guideCandidateMoment(estimate, r.bsdfPdf, r.guidePdf, used,
+                                                    guideFractionCandidate(j)));
+        }
     }
 }

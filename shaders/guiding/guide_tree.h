@@ -45,6 +45,24 @@ WF_INLINE float guideMixturePdf(float bsdfPdf, float guidePdf, float bsdfFractio
     return bsdfFraction * bsdfPdf + (1.0f - bsdfFraction) * guidePdf;
 }
 
+// The BSDF shares a leaf may learn (WF_GUIDE_FRACTIONS of them): all above 0, so the mixture
+// stays positive wherever the BSDF is; up to nearly BSDF sampling alone, where a leaf's guide
+// does not match its integrand (a diffuse room's smooth indirect light).
+WF_INLINE float guideFractionCandidate(uint j) {
+    return j == 0u ? 0.3f : j == 1u ? 0.5f : j == 2u ? 0.65f : j == 3u ? 0.8f
+         : j == 4u ? 0.9f : 0.97f;
+}
+
+// One training record's second moment had its vertex sampled with share `candidate`:
+// (f |cos| L / p_used)^2 x p_used / p_candidate, whose mean over records drawn with the share
+// used estimates the integral of (f |cos| L)^2 / p_candidate. estimate: f |cos| L / p_used.
+WF_INLINE float guideCandidateMoment(float estimate, float bsdfPdf, float guidePdf,
+                                     float usedFraction, float candidate) {
+    float used = guideMixturePdf(bsdfPdf, guidePdf, usedFraction);
+    float other = guideMixturePdf(bsdfPdf, guidePdf, candidate);
+    return other > 0.0f ? estimate * estimate * (used / other) : 0.0f;
+}
+
 // One quadrant choice: x-half by u.x, then y-half within it by u.y, each u rescaled to [0, 1)
 // for the next level. Returns the quadrant (x-half | y-half << 1).
 WF_INLINE uint guideChooseQuadrant(vec4 prob, WF_INOUT(vec2) u) {

@@ -27,11 +27,22 @@ namespace wf::gpu_types {
 #define WF_GUIDE_MAX_SPLAT 4095.0f
 
 struct GuideSpatialNode {
-    uint child;        // interior: the first child (the second is child + 1); leaf: LEAF | leaf
-    uint samplingRoot; // leaf: root of its frozen quadtree in the sampling node array
-    uint buildingRoot; // leaf: root of its quadtree under construction in the building array
-    uint pad;
+    uint child;         // interior: the first child (the second is child + 1); leaf: LEAF | leaf
+    uint samplingRoot;  // leaf: root of its frozen quadtree in the sampling node array
+    uint buildingRoot;  // leaf: root of its quadtree under construction in the building array
+    float bsdfFraction; // leaf: its learnt share of BSDF sampling; 0: GuideParams.bsdfFraction
 };
+
+// The learnt BSDF fraction: each training record also adds, for each candidate share j,
+// its estimator's second moment had the vertex sampled with share j (reweighted from the share
+// it used); the host picks the candidate with the least (src/render/guiding/sd_tree.cpp).
+// Per leaf the counters hold the record count, then per candidate a 64-bit fixed-point sum
+// (low word, high word) in units of 1 / WF_GUIDE_MOMENT_SCALE, each term clamped at
+// WF_GUIDE_MAX_MOMENT (the choice only: the image stays unbiased whatever share is chosen).
+#define WF_GUIDE_FRACTIONS 6u
+#define WF_GUIDE_LEAF_STATS (1u + 2u * WF_GUIDE_FRACTIONS)
+#define WF_GUIDE_MOMENT_SCALE 4096.0f
+#define WF_GUIDE_MAX_MOMENT 1.0e9f
 
 // A quadtree node. Quadrant q covers x-half (q & 1), y-half (q >> 1) of the node's square.
 // child[q] == 0: quadrant q is a leaf (a root is never anyone's child, so 0 is free).
@@ -49,7 +60,8 @@ struct GuideParams {
     vec3 invBoxSize;
     uint training;      // 1: keep training records and splat them into the building tree
     uint maxDepth;      // guide only vertices of bounce index below this (0: none)
-    uint pad0, pad1, pad2;
+    uint learnFraction; // 1: training records add the second moments of the candidate shares
+    uint pad1, pad2;
 };
 
 // A guided vertex of a path, kept until the path ends (WF_GUIDE_RECORDS per path): the
@@ -60,11 +72,11 @@ struct GuideRecord {
     vec3 position;
     uint pending;        // 1: radianceBefore not yet taken (the next shade pass takes it)
     vec3 direction;
-    float pad0;
+    float bsdfPdf;       // the BSDF's density of `direction` (solid angle)
     vec3 scale;          // per channel 1 / (throughput after the bounce x mixture pdf); 0 if none
-    float pad1;
+    float guidePdf;      // the guide's density of `direction` (solid angle)
     vec3 radianceBefore; // the path's radiance once this vertex's own light (NEE) was in
-    float pad2;
+    float fCos;          // the BSDF value (mean over channels) x |cos| for `direction`
 };
 #define WF_GUIDE_RECORDS 4u
 

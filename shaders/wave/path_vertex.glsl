@@ -216,8 +216,10 @@ void shadePathVertex(inout PathVertex v) {
     // a Dirac bounce (a caustic seen through glass); the rest sample the BSDF alone, where
     // the mixture's doubled weights would compound (docs/guiding.md, "Levers").
     guideHere = guideHere && (v.depth < guide.maxDepth || v.previousPdf == 0.0);
-    uint guideRoot = guideHere ? guideSpatial[guideLeafNode(surface.p)].samplingRoot : 0u;
-    float guideFraction = guide.bsdfFraction;
+    uint guideNode = guideHere ? guideLeafNode(surface.p) : 0u;
+    uint guideRoot = guideHere ? guideSpatial[guideNode].samplingRoot : 0u;
+    // The leaf's share on both sides of MIS (NEE here, the continuation below).
+    float guideFraction = guideHere ? guideLeafFraction(guideNode) : guide.bsdfFraction;
 #endif
 
 #if WF_HAS_EMITTERS && WF_LIGHT_SAMPLING != 0
@@ -294,6 +296,8 @@ void shadePathVertex(inout PathVertex v) {
 #endif
     }
     vec3 wi;
+    // What a training record keeps of the mixture: both densities and f |cos|.
+    float recordBsdfPdf = 0.0, recordGuidePdf = 0.0, recordFCos = 0.0;
     if (guideHere) {
         // One quadtree walk per lane: the guide's sample, or its density at the BSDF's.
         vec2 x = fromGuide ? vec2(0.0)
@@ -323,6 +327,9 @@ void shadePathVertex(inout PathVertex v) {
 #endif
             s.pdf = guideMixturePdf(directionPdf, squarePdf * WF_GUIDE_INV_4PI, guideFraction);
             s.weight = s.pdf > 0.0 ? f * (abs(s.wi.z) / s.pdf) : vec3(0.0);
+            recordBsdfPdf = directionPdf;
+            recordGuidePdf = squarePdf * WF_GUIDE_INV_4PI;
+            recordFCos = (f.r + f.g + f.b) * (1.0 / 3.0) * abs(s.wi.z);
         }
     } else {
         wi = normalize(tangent * s.wi.x + bitangent * s.wi.y + n * s.wi.z);
@@ -358,7 +365,8 @@ void shadePathVertex(inout PathVertex v) {
         v.previousNormal = receiver;
 #if WF_GUIDING
         if (guideHere && !s.isDelta)
-            guideKeepRecord(v.path, surface.p, wi, s.pdf, beta);
+            guideKeepRecord(v.path, surface.p, wi, s.pdf, beta, recordBsdfPdf, recordGuidePdf,
+                            recordFCos);
 #endif
         v.beta = beta;
         v.etaScale = etaScale;

@@ -119,14 +119,16 @@ void reportGuiding(bool verbose, const RenderStats& stats, StatsContext& statsCo
         training += it.seconds + it.rebuildSeconds;
         if (verbose)
             std::fprintf(stderr, "wavefront: guiding iteration %zu: %u spp, %llu spatial leaves, "
-                                 "%llu directional nodes, %.3f s render + %.3f s rebuild\n",
+                                 "%llu directional nodes, BSDF share %.2f, %.3f s render + "
+                                 "%.3f s rebuild\n",
                          i, it.samplesPerPixel, static_cast<unsigned long long>(it.spatialLeaves),
-                         static_cast<unsigned long long>(it.directionalNodes), it.seconds,
-                         it.rebuildSeconds);
+                         static_cast<unsigned long long>(it.directionalNodes),
+                         it.meanBsdfFraction, it.seconds, it.rebuildSeconds);
         iterations += std::string(i ? ", " : "") + "{\"spp\": " +
                       std::to_string(it.samplesPerPixel) + ", \"spatialLeaves\": " +
                       std::to_string(it.spatialLeaves) + ", \"directionalNodes\": " +
-                      std::to_string(it.directionalNodes) + ", \"seconds\": " +
+                      std::to_string(it.directionalNodes) + ", \"bsdfFraction\": " +
+                      jsonNumber(it.meanBsdfFraction) + ", \"seconds\": " +
                       jsonNumber(it.seconds) + ", \"rebuildSeconds\": " +
                       jsonNumber(it.rebuildSeconds) + "}";
     }

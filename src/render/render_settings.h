@@ -82,6 +82,9 @@ struct RenderSettings {
     bool guiding = false;
     bool guideCombineIterations = true;
     float guideBsdfFraction = 0.5f; // the BSDF's share of the one-sample mixture
+    // Each spatial leaf learns its own share (the candidate whose records' second moment was
+    // least, guide_tree.h); guideBsdfFraction until a leaf has learnt one.
+    bool guideLearnFraction = true;
     // Vertices of bounce index below this are guided, and those reached by a Dirac bounce;
     // the rest sample the BSDF alone (docs/guiding.md: guiding every vertex compounds the
     // mixture's doubled weights where the guide is blurred).

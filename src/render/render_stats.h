@@ -28,6 +28,7 @@ struct RenderStats {
         uint32_t samplesPerPixel = 0;
         uint64_t spatialLeaves = 0;
         uint64_t directionalNodes = 0;
+        double meanBsdfFraction = 0.0; // the leaves' BSDF shares after it, weighted by records
         double seconds = 0.0;        // rendering the iteration
         double rebuildSeconds = 0.0; // reading back, rebuilding and uploading the trees
     };

@@ -106,7 +106,8 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
         guide_ = std::make_unique<PathGuide>(context, scene.bounds.center - radius,
                                              scene.bounds.center + radius, pathCapacity_,
                                              settings.guideBsdfFraction,
-                                             settings.guideMaxDepth);
+                                             settings.guideMaxDepth,
+                                             settings.guideLearnFraction);
     }
     bindTables();
     waves_ = std::make_unique<WaveRecorder>(context, compiler, defines_, *table_,
@@ -411,9 +412,10 @@ void WavefrontRenderer::renderGuided(uint32_t budget,
             combiner.add(readMoments(), spp);
         it.rebuildSeconds = guide_->endIteration(iteration, pixelCount_);
         hostSince(host);
-        guiding::SDTreeStats tree = guide_->tree().stats();
+        guiding::SDTreeStats tree = guide_->tree().stats(settings_.guideBsdfFraction);
         it.spatialLeaves = tree.spatialLeaves;
         it.directionalNodes = tree.samplingNodes;
+        it.meanBsdfFraction = tree.meanBsdfFraction;
         stats_.guideIterations.push_back(it);
         if (onWave)
             onWave({samplesDone_, budget, stats_.seconds});

@@ -3,7 +3,7 @@
 // in rough metal: glossy inter-reflection, where the guide's mixture meets non-Lambert lobes)
 // and a scene whose NEE picks lights by the light tree. Each: guided renders (their own
 // training included) agree with an unguided reference per 8x8 region within 5 standard errors
-// over 8 seeds, with no non-finite sample.
+// over 16 seeds, with no non-finite sample.
 #include <gtest/gtest.h>
 
 #include "gpu_test_util.h"
@@ -17,6 +17,10 @@ namespace wf::test {
 namespace {
 
 constexpr uint32_t kSize = kGuidedSize, kBlock = kGuidedBlock;
+// 16 seeds: with 8, the glossy box's region under its light (rare bright glossy paths) put the
+// guided mean 5.4 standard errors low, an error estimate from too few heavy-tailed samples;
+// with 24 seeds it lies within them (docs/guiding.md, "Tests").
+constexpr uint32_t kSeeds = 16;
 
 RenderSettings settingsFor(uint32_t spp, uint32_t seed, bool guiding, bool combine = true) {
     return guidedTestSettings(spp, seed, guiding, combine);
@@ -27,7 +31,7 @@ void expectGuidedUnbiased(const Scene& scene, const std::string& what) {
     referenceSettings.aov = true; // the variance layer: the reference's own noise
     const RenderResult reference = renderScene(scene, referenceSettings);
     std::vector<std::vector<float>> images;
-    for (uint32_t seed = 1; seed <= 8; ++seed) {
+    for (uint32_t seed = 1; seed <= kSeeds; ++seed) {
         RenderResult result = renderScene(scene, settingsFor(64, seed, true));
         EXPECT_EQ(result.stats.nonFiniteSamples, 0u);
         EXPECT_EQ(result.stats.guideIterations.size(), 5u); // 1+2+4+8+16, then 33 spp

@@ -263,7 +263,7 @@ TEST(GuideTree, FixedPointSplatsMatchHostRecords) {
     Fixture f;
     SDTree host = f.tree; // records on the host ...
     std::vector<std::uint32_t> counters(f.flat.splatCounterCount(), 0u);
-    std::vector<std::uint32_t> leafSamples(f.flat.samplingBase.size(), 0u);
+    std::vector<std::uint32_t> leafStats(f.flat.samplingBase.size() * WF_GUIDE_LEAF_STATS, 0u);
     std::mt19937 rng(6);
     double recorded = 0.0;
     for (int i = 0; i < 20000; ++i) {
@@ -281,10 +281,10 @@ TEST(GuideTree, FixedPointSplatsMatchHostRecords) {
         counters[2 * cell] = old + add;
         if (counters[2 * cell] < old)
             counters[2 * cell + 1] += 1u;
-        leafSamples[f.flat.spatial[node].child & ~WF_GUIDE_LEAF] += 1u;
+        leafStats[(f.flat.spatial[node].child & ~WF_GUIDE_LEAF) * WF_GUIDE_LEAF_STATS] += 1u;
     }
     SDTree gpu = f.tree;
-    gpu.addSplats(f.flat, counters, leafSamples);
+    gpu.addSplats(f.flat, counters, leafStats);
     double hostSum = 0.0, gpuSum = 0.0;
     for (std::size_t l = 0; l < host.leaves().size(); ++l) {
         DirTree a = host.leaves()[l].building, b = gpu.leaves()[l].building;

@@ -18,17 +18,23 @@ namespace {
 constexpr size_t kSpatialNodes = size_t(1) << 15;
 constexpr size_t kDirNodes = size_t(1) << 18;
 constexpr double kEnergyThreshold = 0.01; // the paper's share of a leaf's energy
+// A leaf learns its BSDF share from at least this many records in an iteration: fewer give
+// second moments ruled by one or two records.
+constexpr double kFractionMinRecords = 256.0;
 } // namespace
 
 PathGuide::PathGuide(const Context& context, glm::vec3 sceneLo, glm::vec3 sceneHi,
-                     uint32_t pathCapacity, float bsdfFraction, uint32_t maxDepth)
+                     uint32_t pathCapacity, float bsdfFraction, uint32_t maxDepth,
+                     bool learnFraction)
     : tree_(sceneLo, sceneHi), bsdfFraction_(bsdfFraction), maxDepth_(maxDepth),
+      learnFraction_(learnFraction),
       params_(context, "guide params", sizeof(GuideParams)),
       spatial_(context, "guide spatial tree", kSpatialNodes * sizeof(GuideSpatialNode)),
       sampling_(context, "guide sampling quadtrees", kDirNodes * sizeof(GuideDirNode)),
       building_(context, "guide building quadtrees", kDirNodes * sizeof(GuideDirNode)),
       splats_(context, "guide splats", kDirNodes * 8 * sizeof(uint32_t)),
-      leafSamples_(context, "guide leaf samples", kSpatialNodes * sizeof(uint32_t)),
+      leafSamples_(context, "guide leaf statistics",
+                   kSpatialNodes * WF_GUIDE_LEAF_STATS * sizeof(uint32_t)),
       records_(context, "guide records",
                uint64_t(pathCapacity) * WF_GUIDE_RECORDS * sizeof(GuideRecord)),
       counts_(context, "guide record counts", uint64_t(pathCapacity) * sizeof(uint32_t)) {
@@ -81,6 +87,7 @@ void PathGuide::setTraining(bool training) {
     p.invBoxSize = 1.0f / tree_.boxSize();
     p.training = training ? 1u : 0u;
     p.maxDepth = maxDepth_;
+    p.learnFraction = learnFraction_ ? 1u : 0u;
     params_.upload(&p, sizeof p);
 }
 
@@ -92,7 +99,8 @@ void PathGuide::upload() {
     sampling_.upload(flat_.sampling);
     building_.upload(flat_.building);
     splats_.upload(std::vector<uint32_t>(flat_.splatCounterCount(), 0u));
-    leafSamples_.upload(std::vector<uint32_t>(flat_.samplingBase.size(), 0u));
+    leafSamples_.upload(
+        std::vector<uint32_t>(flat_.samplingBase.size() * WF_GUIDE_LEAF_STATS, 0u));
     setTraining(training_);
 }
 
@@ -100,9 +108,11 @@ double PathGuide::endIteration(uint32_t iteration, uint64_t pixels) {
     const auto start = std::chrono::steady_clock::now();
     std::vector<uint32_t> counters(flat_.splatCounterCount());
     splats_.download(counters.data(), counters.size() * sizeof(uint32_t));
-    std::vector<uint32_t> samples(flat_.samplingBase.size());
+    std::vector<uint32_t> samples(flat_.samplingBase.size() * WF_GUIDE_LEAF_STATS);
     leafSamples_.download(samples.data(), samples.size() * sizeof(uint32_t));
     tree_.addSplats(flat_, counters, samples);
+    if (learnFraction_)
+        tree_.learnFractions(kFractionMinRecords);
     tree_.endIteration(guiding::spatialSplitThreshold(iteration, pixels), kEnergyThreshold,
                        WF_GUIDE_MAX_DIR_DEPTH, kSpatialNodes / 2);
     flat_ = tree_.flatten();

@@ -28,7 +28,8 @@ class PathGuide {
 public:
     // sceneLo/Hi: the scene's bounds; pathCapacity: paths per wave (training records).
     PathGuide(const Context& context, glm::vec3 sceneLo, glm::vec3 sceneHi,
-              uint32_t pathCapacity, float bsdfFraction, uint32_t maxDepth);
+              uint32_t pathCapacity, float bsdfFraction, uint32_t maxDepth,
+              bool learnFraction);
 
     void appendBindings(DescriptorBindings& bindings) const;
     void appendMemoryReport(std::vector<std::pair<std::string, uint64_t>>& report) const;
@@ -50,6 +51,7 @@ private:
     guiding::FlatGuide flat_;
     float bsdfFraction_;
     uint32_t maxDepth_;
+    bool learnFraction_;
     bool training_ = false;
     Buffer params_, spatial_, sampling_, building_, splats_, leafSamples_, records_, counts_;
 };

@@ -134,7 +134,7 @@ void SDTree::record(glm::vec3 p, glm::vec3 direction, double value) {
 }
 
 void SDTree::addSplats(const FlatGuide& flat, const std::vector<std::uint32_t>& counters,
-                       const std::vector<std::uint32_t>& leafSamples) {
+                       const std::vector<std::uint32_t>& leafStats) {
     for (std::size_t l = 0; l < leaves_.size(); ++l) {
         DirTree& tree = leaves_[l].building;
         std::uint32_t base = flat.buildingBase[l];
@@ -146,7 +146,30 @@ void SDTree::addSplats(const FlatGuide& flat, const std::vector<std::uint32_t>& 
                 tree.nodes[n].sum[q] += double(fixed) / double(WF_GUIDE_FIXED_SCALE);
             }
         }
-        leaves_[l].samples += leafSamples[l];
+        const std::uint32_t* stats = leafStats.data() + l * WF_GUIDE_LEAF_STATS;
+        leaves_[l].samples += stats[0];
+        for (std::size_t j = 0; j < WF_GUIDE_FRACTIONS; ++j) {
+            std::uint64_t fixed =
+                std::uint64_t(stats[1 + 2 * j]) | (std::uint64_t(stats[2 + 2 * j]) << 32);
+            leaves_[l].moments[j] += double(fixed) / double(WF_GUIDE_MOMENT_SCALE);
+        }
+    }
+}
+
+int chooseBsdfFraction(const std::array<double, WF_GUIDE_FRACTIONS>& moments) {
+    int best = -1;
+    for (std::size_t j = 0; j < moments.size(); ++j)
+        if (moments[j] > 0.0 && (best < 0 || moments[j] < moments[std::size_t(best)]))
+            best = int(j);
+    return best;
+}
+
+void SDTree::learnFractions(double minRecords) {
+    for (SpatialLeaf& l : leaves_) {
+        int best = l.samples >= minRecords ? chooseBsdfFraction(l.moments) : -1;
+        if (best >= 0)
+            l.bsdfFraction = gpu_types::guideFractionCandidate(std::uint32_t(best));
+        l.moments = {};
     }
 }
 
@@ -177,7 +200,9 @@ void SDTree::split(std::uint32_t node, std::uint32_t depth, double threshold,
 void SDTree::endIteration(double splitThreshold, double energyThreshold,
                           std::uint32_t maxDirDepth, std::size_t maxLeaves) {
     split(0, 0, splitThreshold, maxLeaves);
+    lastSamples_.clear();
     for (SpatialLeaf& l : leaves_) {
+        lastSamples_.push_back(l.samples);
         l.building.propagate();
         DirTree next = l.building.refined(energyThreshold, maxDirDepth);
         l.sampling = std::move(l.building);
@@ -222,6 +247,7 @@ FlatGuide SDTree::flatten() const {
             g.child = WF_GUIDE_LEAF | nodes_[i].leaf;
             g.samplingRoot = flat.samplingBase[nodes_[i].leaf];
             g.buildingRoot = flat.buildingBase[nodes_[i].leaf];
+            g.bsdfFraction = leaves_[nodes_[i].leaf].bsdfFraction;
         } else {
             g.child = nodes_[i].child;
         }
@@ -235,13 +261,19 @@ std::size_t FlatGuide::bytes() const {
            splatCounterCount() * sizeof(std::uint32_t) + spatial.size() * sizeof(std::uint32_t);
 }
 
-SDTreeStats SDTree::stats() const {
+SDTreeStats SDTree::stats(float defaultFraction) const {
     SDTreeStats s;
     s.spatialLeaves = leaves_.size();
-    for (const SpatialLeaf& l : leaves_) {
+    double weighted = 0.0, weights = 0.0;
+    for (std::size_t i = 0; i < leaves_.size(); ++i) {
+        const SpatialLeaf& l = leaves_[i];
         s.samplingNodes += l.sampling.nodes.size();
         s.maxDirDepth = std::max(s.maxDirDepth, l.sampling.depth());
+        const double w = i < lastSamples_.size() ? lastSamples_[i] : 0.0;
+        weighted += w * (l.bsdfFraction > 0.0f ? l.bsdfFraction : defaultFraction);
+        weights += w;
     }
+    s.meanBsdfFraction = weights > 0.0 ? weighted / weights : defaultFraction;
     return s;
 }
 

@@ -46,7 +46,15 @@ struct SpatialLeaf {
     DirTree sampling; // frozen: what this iteration samples from (propagated)
     DirTree building; // what this iteration's splats fill
     double samples = 0.0; // splats recorded in `building`
+    // The learnt BSDF share of the mixture (0: not learnt, the renderer's default), and this
+    // iteration's second moments of the records under each candidate share
+    // (guideFractionCandidate; see WF_GUIDE_FRACTIONS).
+    float bsdfFraction = 0.0f;
+    std::array<double, WF_GUIDE_FRACTIONS> moments{};
 };
+
+// The candidate share with the least second moment, or -1 where no record carried light.
+int chooseBsdfFraction(const std::array<double, WF_GUIDE_FRACTIONS>& moments);
 
 // The flattened tree as uploaded. Leaf l's quadtrees start at samplingBase[l] and
 // buildingBase[l]; the building quadtrees' splat counters are 2 uints (64-bit fixed point,
@@ -65,6 +73,9 @@ struct SDTreeStats {
     std::size_t spatialLeaves = 0;
     std::size_t samplingNodes = 0; // directional nodes, over all leaves
     std::uint32_t maxDirDepth = 0;
+    // The leaves' BSDF shares (defaultFraction where not learnt), weighted by the splats each
+    // recorded in the iteration that ended last.
+    double meanBsdfFraction = 0.0;
 };
 
 class SDTree {
@@ -84,9 +95,14 @@ public:
     // One splat on the CPU (tests; the GPU splats into the flat counters instead).
     void record(glm::vec3 p, glm::vec3 direction, double value);
     // Adds the GPU's splats (counters laid out as `flat`, which must be this tree's last
-    // flatten()) and per-leaf splat counts into the building quadtrees.
+    // flatten()) and per-leaf statistics (WF_GUIDE_LEAF_STATS words per leaf: the splat
+    // count, then the candidate shares' 64-bit moments) into the building quadtrees.
     void addSplats(const FlatGuide& flat, const std::vector<std::uint32_t>& counters,
-                   const std::vector<std::uint32_t>& leafSamples);
+                   const std::vector<std::uint32_t>& leafStats);
+    // Every leaf with at least minRecords splats this iteration takes the candidate BSDF
+    // share whose second moment was least (kept where no record carried light); the moments
+    // restart. Before endIteration: split leaves then inherit their parent's share.
+    void learnFractions(double minRecords);
     // Ends a training iteration: splits spatial leaves with more than splitThreshold splats
     // (children copy their parent's quadtrees and half its count, recursively), then in every
     // leaf propagates the building quadtree, freezes it for sampling and starts a refined,
@@ -100,7 +116,7 @@ public:
     void coarsen(double energyThreshold, std::uint32_t maxDirDepth);
 
     FlatGuide flatten() const;
-    SDTreeStats stats() const;
+    SDTreeStats stats(float defaultFraction = 0.5f) const;
 
 private:
     struct Node {
@@ -113,6 +129,7 @@ private:
     glm::vec3 lo_, size_;
     std::vector<Node> nodes_;
     std::vector<SpatialLeaf> leaves_;
+    std::vector<double> lastSamples_; // per leaf, the splats of the iteration that ended last
 };
 
 // The paper's spatial split threshold c * sqrt(2^k) at iteration k (0-based: after the
