@@ -29,6 +29,7 @@ def main():
     p.add_argument("--reps", type=int, default=3)
     p.add_argument("--modes", default="off,auto,on")
     p.add_argument("--out", default="/tmp/guiding_auto")
+    p.add_argument("--scenes", default=",".join(GALLERY), help="comma-separated gallery scenes")
     a = p.parse_args()
     binary = Path(a.wavefront).resolve()
     check = binary.parent / "tests" / "wf_region_check"
@@ -36,7 +37,7 @@ def main():
     out = Path(a.out)
     out.mkdir(parents=True, exist_ok=True)
     modes = a.modes.split(",")
-    for scene in GALLERY:
+    for scene in a.scenes.split(","):
         gltf = str(scenes / f"{scene}.gltf")
         for mode in ("off", "on"):
             subprocess.run([binary, "render", gltf, "-o", out / "warm.exr", "--width", "16",

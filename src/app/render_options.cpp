@@ -49,10 +49,11 @@ std::vector<OptionSpec> samplingOptions() {
         {"--seed", "", "S", "random seed; same seed, same image bit for bit (default 0)"},
         {"--guiding", "", "MODE", "path guiding: off, on, or auto (default: on only where the "
                                   "measured rule of docs/guiding.md predicts a gain; on "
-                                  "lavapipe it predicts none). Trains an SD-tree over 1, 2, "
-                                  "4, ... spp (within --time-limit), the image from the rest, "
-                                  "the iterations' images weighed by inverse variance; a "
-                                  "--resume trains its own guide"},
+                                  "lavapipe it predicts none). "
+                                  "Trains an SD-tree over 1, 2, 4, ... spp (within "
+                                  "--time-limit), each spatial leaf learning its BSDF share, "
+                                  "the image from the rest, the iterations' images weighed by "
+                                  "inverse variance; a --resume trains its own guide"},
         {"--sampler", "", "NAME", "sample pattern: independent, stratified, multijitter, "
                                   "halton, hammersley, sobol (default) or bluenoise"},
         {"--texture-filter", "", "MODE", "cone (mip levels chosen by ray cones; default) or "

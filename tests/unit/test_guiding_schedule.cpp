@@ -136,16 +136,18 @@ TEST(GuidingAuto, NothingToGuideStaysOff) {
 }
 
 TEST(GuidingAuto, MeasuredGainsKeepEveryGalleryKindOff) {
-    // The measured factors (docs/guiding.md, "auto") predict a loss on caustic scenes and on
-    // diffuse ones at every budget: auto must not turn on where guiding was measured to lose.
+    // The least equal-time gains measured (docs/guiding.md, "auto") are losses on caustic
+    // scenes and on diffuse ones: auto must not turn on where guiding was measured to lose.
     for (uint32_t spp = 4; spp <= 70000; spp += spp < 5000 ? 1 : 997) {
         const auto caustic = decideGuiding(GuidingMode::Auto, {true, true, true}, spp);
         const auto diffuse = decideGuiding(GuidingMode::Auto, {true, false, true}, spp);
         ASSERT_FALSE(caustic.on) << spp;
         ASSERT_FALSE(diffuse.on) << spp;
-        ASSERT_GT(caustic.predictedGain, diffuse.predictedGain) << spp;
+        ASSERT_GT(caustic.predictedGain, 0.0) << spp;
         ASSERT_LT(caustic.predictedGain, 1.0) << spp;
-        ASSERT_NE(caustic.reason.find("auto: off"), std::string::npos) << spp;
+        ASSERT_LT(diffuse.predictedGain, 1.0) << spp;
+        ASSERT_NE(caustic.reason.find("auto: off (predicted efficiency"), std::string::npos);
+        ASSERT_NE(diffuse.reason.find("diffuse/glossy"), std::string::npos) << spp;
     }
 }
 

@@ -99,14 +99,14 @@ double imageShare(uint32_t budgetSpp) {
 
 namespace {
 
-// Measured on lavapipe (Mesa 25.0.7, 2 cores), docs/guiding.md "auto": variance per image
-// sample unguided / guided, from the renders' own error estimates at 1024 spp (glass caustic
-// 64x64: 2.97; Cornell box 64x64: 1.27), and the cost of a guided path against an unguided
-// one (paths/s, image phase included: 2.6x on the caustic, 1.75x on the Cornell box; the
-// larger is kept, as auto must not lose).
-constexpr double kCausticVarianceGain = 2.97;
-constexpr double kDiffuseVarianceGain = 1.27;
-constexpr double kGuidedPathCost = 2.6;
+// Measured on lavapipe (Mesa 25.0.7, 2 cores, an idle machine), docs/guiding.md "auto":
+// guided over unguided MIS efficiency at equal time (training included, medians over 5
+// seeds), the least over the image sizes and budgets measured, as auto must not lose.
+// Caustic scenes (the glass caustic): 1.24-1.57x at 64x64 over 0.75-8 s, but 0.62-0.69x at
+// 128x128 and 256 spp (the gallery's size) and 0.54x at 1024 spp. Diffuse and glossy ones:
+// the Cornell box 0.68-0.77x, the narrow gap 0.68-0.80x (64x64).
+constexpr double kCausticEqualTimeGain = 0.54;
+constexpr double kDiffuseEqualTimeGain = 0.68;
 
 } // namespace
 
@@ -128,18 +128,14 @@ GuidingDecision decideGuiding(GuidingMode mode, const GuideSceneTraits& traits,
         decision.reason = "auto: off (under 4 spp: too few samples to train a guide on)";
         return decision;
     }
-    const double share = imageShare(budgetSpp);
-    const double variance = traits.delta ? kCausticVarianceGain : kDiffuseVarianceGain;
-    decision.predictedGain = variance * share / kGuidedPathCost;
+    char line[240];
+    decision.predictedGain = traits.delta ? kCausticEqualTimeGain : kDiffuseEqualTimeGain;
     decision.on = decision.predictedGain >= kAutoMinGain;
-    char line[200];
     std::snprintf(line, sizeof line,
-                  "auto: %s (predicted efficiency %.2fx: variance per sample %.2fx lower on %s "
-                  "scenes, %.0f%% of the samples in the image, a guided path costs %.2fx; on "
-                  "needs %.2fx)",
-                  decision.on ? "on" : "off", decision.predictedGain, variance,
-                  traits.delta ? "caustic" : "diffuse/glossy", 100.0 * share, kGuidedPathCost,
-                  kAutoMinGain);
+                  "auto: %s (predicted efficiency %.2fx: measured at equal time on %s scenes; "
+                  "on needs %.2fx)",
+                  decision.on ? "on" : "off", decision.predictedGain,
+                  traits.delta ? "caustic" : "diffuse/glossy", kAutoMinGain);
     decision.reason = line;
     return decision;
 }

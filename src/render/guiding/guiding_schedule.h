@@ -68,11 +68,10 @@ struct GuideSceneTraits {
 GuideSceneTraits guideSceneTraits(const PreparedScene& scene);
 
 // auto's rule: guide where the predicted efficiency (1 / (relMSE x seconds)) gain is at least
-// kAutoMinGain. gain = (variance per image sample unguided / guided) x (image share of the
-// samples) / (cost of a guided path / an unguided one), each factor measured on the project's
-// scenes (docs/guiding.md, "auto"): the variance gain is the caustic scenes' where delta
-// surfaces send light onto non-delta ones, else the diffuse/glossy scenes'. Scenes without a
-// non-delta surface or without light gain nothing.
+// kAutoMinGain. The prediction is the least gain measured at equal time (training included)
+// on the project's scenes of the scene's kind (docs/guiding.md, "auto"): caustic scenes, where
+// delta surfaces send light onto non-delta ones, and diffuse or glossy scenes. Scenes without
+// a non-delta surface or without light gain nothing.
 struct GuidingDecision {
     bool on = false;
     double predictedGain = 0.0;
