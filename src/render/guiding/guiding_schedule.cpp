@@ -89,14 +89,6 @@ GuideSceneTraits guideSceneTraits(const PreparedScene& scene) {
     return traits;
 }
 
-double imageShare(uint32_t budgetSpp) {
-    GuideSchedule schedule(budgetSpp, 0.0, 0xffffffffu);
-    uint32_t done = 0;
-    while (const uint32_t spp = schedule.nextTrainingSpp(done, 0.0))
-        done += spp;
-    return budgetSpp == 0 ? 0.0 : double(budgetSpp - done) / budgetSpp;
-}
-
 namespace {
 
 // Measured on lavapipe (Mesa 25.0.7, 2 cores, an idle machine), docs/guiding.md "auto":

@@ -80,8 +80,6 @@ struct GuidingDecision {
 constexpr double kAutoMinGain = 1.1;
 GuidingDecision decideGuiding(GuidingMode mode, const GuideSceneTraits& traits,
                               uint32_t budgetSpp);
-// The image's share of budgetSpp under GuideSchedule without a time limit (0.5 with one).
-double imageShare(uint32_t budgetSpp);
 
 } // namespace guiding
 } // namespace wf
