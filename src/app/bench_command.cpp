@@ -97,7 +97,7 @@ struct GuideTraining {
     double seconds = 0.0;
 };
 
-GuideTraining trainBenchGuide(std::vector<Timed>& kernels, uint64_t pixels) {
+GuideTraining trainBenchGuide(std::vector<Timed>& kernels) {
     WavefrontRenderer& renderer = *kernels[0].renderer;
     PathGuide& guide = *renderer.guide();
     guiding::GuideSchedule schedule(kBenchGuideBudget, 0.0, 0xffffffffu);
@@ -107,7 +107,7 @@ GuideTraining trainBenchGuide(std::vector<Timed>& kernels, uint64_t pixels) {
     for (uint32_t iteration = 0, spp = 0;
          (spp = schedule.nextTrainingSpp(training.spp, 0.0)) > 0; ++iteration) {
         renderer.renderSamples(spp);
-        guide.endIteration(iteration, pixels);
+        guide.endIteration(iteration);
         training.spp += spp;
     }
     guide.setTraining(false);
@@ -173,7 +173,7 @@ int runBenchCommand(const std::vector<std::string>& args) {
         k.run.memory = k.renderer->memoryReport();
     GuideTraining training;
     if (settings.guiding)
-        training = trainBenchGuide(kernels, settings.width * settings.height);
+        training = trainBenchGuide(kernels);
 
     BenchSetup setup{scenePath, context.deviceName(), context.driverInfo(),
                      kernels[0].renderer->variant().describe(), settings.width, settings.height,

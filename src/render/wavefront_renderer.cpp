@@ -410,7 +410,7 @@ void WavefrontRenderer::renderGuided(uint32_t budget,
         const auto host = std::chrono::steady_clock::now();
         if (combine)
             combiner.add(readMoments(), spp);
-        it.rebuildSeconds = guide_->endIteration(iteration, pixelCount_);
+        it.rebuildSeconds = guide_->endIteration(iteration);
         hostSince(host);
         guiding::SDTreeStats tree = guide_->tree().stats(settings_.guideBsdfFraction);
         it.spatialLeaves = tree.spatialLeaves;

@@ -40,7 +40,7 @@ void ViewerGuide::afterSamples(WavefrontRenderer* renderer, uint32_t sppLimit) {
     if (renderer_->pixelsOfNextSample() > 0 || done - start_ < end ||
         (sppLimit > 0 && done >= sppLimit))
         return;
-    renderer_->guide()->endIteration(iteration_, renderer_->pixelCount());
+    renderer_->guide()->endIteration(iteration_);
     renderer_->clearImage();
     trainedSpp_ += done - start_;
     start_ = done;

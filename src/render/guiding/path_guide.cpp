@@ -104,7 +104,7 @@ void PathGuide::upload() {
     setTraining(training_);
 }
 
-double PathGuide::endIteration(uint32_t iteration, uint64_t pixels) {
+double PathGuide::endIteration(uint32_t iteration) {
     const auto start = std::chrono::steady_clock::now();
     std::vector<uint32_t> counters(flat_.splatCounterCount());
     splats_.download(counters.data(), counters.size() * sizeof(uint32_t));
@@ -113,7 +113,7 @@ double PathGuide::endIteration(uint32_t iteration, uint64_t pixels) {
     tree_.addSplats(flat_, counters, samples);
     if (learnFraction_)
         tree_.learnFractions(kFractionMinRecords);
-    tree_.endIteration(guiding::spatialSplitThreshold(iteration, pixels), kEnergyThreshold,
+    tree_.endIteration(guiding::spatialSplitThreshold(iteration), kEnergyThreshold,
                        WF_GUIDE_MAX_DIR_DEPTH, kSpatialNodes / 2);
     flat_ = tree_.flatten();
     for (double threshold = 2.0 * kEnergyThreshold;

@@ -38,9 +38,9 @@ public:
     // Samples from `tree` from now on (tests: a deliberately wrong guide). Its box must be
     // this guide's.
     void setTree(guiding::SDTree tree);
-    // Ends training iteration `iteration` (0-based) of an image of `pixels` pixels: reads the
-    // splats back, rebuilds the trees and uploads them. Returns the rebuild's seconds.
-    double endIteration(uint32_t iteration, uint64_t pixels);
+    // Ends training iteration `iteration` (0-based): reads the splats back, rebuilds the trees
+    // and uploads them. Returns the rebuild's seconds.
+    double endIteration(uint32_t iteration);
     const guiding::SDTree& tree() const { return tree_; }
     uint64_t deviceBytes() const;
 

@@ -277,9 +277,8 @@ SDTreeStats SDTree::stats(float defaultFraction) const {
     return s;
 }
 
-double spatialSplitThreshold(std::uint32_t iteration, std::uint64_t pixels) {
-    double c = std::max(1000.0, 12000.0 * double(pixels) / (1280.0 * 720.0));
-    return c * std::sqrt(std::pow(2.0, double(iteration)));
+double spatialSplitThreshold(std::uint32_t iteration) {
+    return 12000.0 * std::sqrt(std::pow(2.0, double(iteration)));
 }
 
 } // namespace wf::guiding

@@ -133,9 +133,11 @@ private:
 };
 
 // The paper's spatial split threshold c * sqrt(2^k) at iteration k (0-based: after the
-// iteration that rendered 2^k spp), with c scaled from the paper's 12000 at 1280x720 to the
-// image's pixel count.
-double spatialSplitThreshold(std::uint32_t iteration, std::uint64_t pixels);
+// iteration that rendered 2^k spp), with the paper's c = 12000 records whatever the image's
+// size: a leaf's quadtree needs that many records to resolve a caustic's directions
+// (docs/guiding.md, "Spatial threshold c": c scaled down with the pixel count, 1000 at
+// 64x64 and 128x128, gave smaller leaves whose guides missed them).
+double spatialSplitThreshold(std::uint32_t iteration);
 
 } // namespace wf::guiding
 
