@@ -94,11 +94,11 @@ namespace {
 // Measured on lavapipe (Mesa 25.0.7, 2 cores, an idle machine), docs/guiding.md "auto":
 // guided over unguided MIS efficiency at equal time (training included, medians over 5
 // seeds), the least over the image sizes and budgets measured, as auto must not lose.
-// Caustic scenes (the glass caustic): 1.24-1.57x at 64x64 over 0.75-8 s, but 0.62-0.69x at
-// 128x128 and 256 spp (the gallery's size) and 0.54x at 1024 spp. Diffuse and glossy ones:
-// the Cornell box 0.68-0.77x, the narrow gap 0.68-0.80x (64x64).
-constexpr double kCausticEqualTimeGain = 0.54;
-constexpr double kDiffuseEqualTimeGain = 0.68;
+// Caustic scenes (the glass caustic): 1.36-2.00x at 64x64 over 0.75-8 s, but 0.77-0.86x at
+// 128x128 and 256 spp (the gallery's size). Diffuse and glossy ones: the Cornell box
+// 0.84-0.96x over 0.25-1.5 s, the narrow gap 0.98-1.09x (64x64).
+constexpr double kCausticEqualTimeGain = 0.77;
+constexpr double kDiffuseEqualTimeGain = 0.84;
 
 } // namespace
 
