@@ -29,10 +29,30 @@ void guideTakeRadianceBefore(uint path, vec3 pathRadiance) {
     if (count == 0u)
         return;
     uint slot = path * WF_GUIDE_RECORDS + count - 1u;
-    if (guideRecords[slot].pending != 0u) {
+    if (guideRecords[slot].hitDistance < 0.0) {
         guideRecords[slot].radianceBefore = pathRadiance;
-        guideRecords[slot].pending = 0u;
+        guideRecords[slot].hitDistance = 0.0;
     }
+}
+
+// The vertex just shaded lies at p: the record whose ray found it (its radiance before just
+// taken) keeps how far its radiance came from.
+void guideTakeHitPoint(uint path, vec3 p) {
+    if (guide.training == 0u)
+        return;
+    uint count = guideCounts[path];
+    if (count == 0u)
+        return;
+    uint slot = path * WF_GUIDE_RECORDS + count - 1u;
+    if (guideRecords[slot].hitDistance == 0.0)
+        guideRecords[slot].hitDistance = max(length(p - guideRecords[slot].position), 1e-6);
+}
+
+// What the guide at spatial node `node` needs at a vertex at p: the vertex's offset from the
+// leaf's sampling centre and the parallax radius (0: none).
+void guideParallaxAt(uint node, vec3 p, out vec3 offset, out float radius) {
+    offset = p - guideSpatial[node].samplingCentre;
+    radius = guideParallaxRadius(offset, guideSpatial[node].radianceDistance);
 }
 
 // A guided vertex at p chose direction wi with mixture pdf `pdf`, leaving throughput beta;
@@ -46,7 +66,7 @@ void guideKeepRecord(uint path, vec3 p, vec3 wi, float pdf, vec3 beta, float bsd
         return;
     GuideRecord r;
     r.position = p;
-    r.pending = 1u;
+    r.hitDistance = -1.0;
     r.direction = wi;
     r.bsdfPdf = bsdfPdf;
     r.scale = vec3(beta.r > 0.0 ? 1.0 / (beta.r * pdf) : 0.0,
@@ -93,17 +113,36 @@ void guideSplatPath(uint path, vec3 pathRadiance) {
     uint count = min(guideCounts[path], WF_GUIDE_RECORDS);
     for (uint k = 0u; k < count; ++k) {
         GuideRecord r = guideRecords[path * WF_GUIDE_RECORDS + k];
-        if (r.pending != 0u)
+        if (r.hitDistance < 0.0)
             continue;
         vec3 after = max(pathRadiance - r.radianceBefore, vec3(0.0)) * r.scale;
         float value = (after.r + after.g + after.b) * (1.0 / 3.0);
         uint node = guideLeafNode(r.position);
         uint stats = (guideSpatial[node].child & ~WF_GUIDE_LEAF) * WF_GUIDE_LEAF_STATS;
         atomicAdd(guideLeafSamples[stats], 1u);
+        if (guide.parallax != 0u) {
+            vec3 inBox = max(r.position - guide.boxLo, vec3(0.0));
+            guideAddMoment(stats + WF_GUIDE_STAT_POSITION, inBox.x);
+            guideAddMoment(stats + WF_GUIDE_STAT_POSITION + 2u, inBox.y);
+            guideAddMoment(stats + WF_GUIDE_STAT_POSITION + 4u, inBox.z);
+        }
         if (!(value > 0.0) || isinf(value))
             continue;
+        vec3 direction = r.direction;
+        if (guide.parallax != 0u) {
+            // The direction from the leaf's centre to where the radiance came from (a ray that
+            // left the scene: from far away), and how far that is, for the leaf's distance.
+            vec3 source = r.position + r.direction * (r.hitDistance > 0.0 ? r.hitDistance
+                                                                          : guide.farDistance);
+            vec3 fromCentre = source - guideSpatial[node].buildingCentre;
+            float distance = length(fromCentre);
+            if (distance > 0.0)
+                direction = fromCentre / distance;
+            guideAddMoment(stats + WF_GUIDE_STAT_DISTANCE, value * distance);
+            guideAddMoment(stats + WF_GUIDE_STAT_ENERGY, value);
+        }
         guideAddFixed(guideBuildingCell(guideSpatial[node].buildingRoot,
-                                        guideDirToSquare(r.direction)),
+                                        guideDirToSquare(direction)),
                       value);
         if (guide.learnFraction != 0u) {
             // value is L / p_used; the vertex's estimate is f |cos| L / p_used.

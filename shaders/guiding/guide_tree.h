@@ -47,9 +47,11 @@ WF_INLINE float guideMixturePdf(float bsdfPdf, float guidePdf, float bsdfFractio
 
 // The BSDF shares a leaf may learn (WF_GUIDE_FRACTIONS of them): all above 0, so the mixture
 // stays positive wherever the BSDF is; up to nearly BSDF sampling alone, where a leaf's guide
-// does not match its integrand (a diffuse room's smooth indirect light).
+// does not match its integrand (a diffuse room's smooth indirect light). None below 0.5: a
+// sharp guide's records rarely show the BSDF sample that its gaps leave to 1 / share, so a
+// lower share learnt from them lost (docs/guiding.md, "Parallax").
 WF_INLINE float guideFractionCandidate(uint j) {
-    return j == 0u ? 0.3f : j == 1u ? 0.5f : j == 2u ? 0.65f : j == 3u ? 0.8f
+    return j == 0u ? 0.5f : j == 1u ? 0.6f : j == 2u ? 0.7f : j == 3u ? 0.8f
          : j == 4u ? 0.9f : 0.97f;
 }
 
@@ -61,6 +63,45 @@ WF_INLINE float guideCandidateMoment(float estimate, float bsdfPdf, float guideP
     float used = guideMixturePdf(bsdfPdf, guidePdf, usedFraction);
     float other = guideMixturePdf(bsdfPdf, guidePdf, candidate);
     return other > 0.0f ? estimate * estimate * (used / other) : 0.0f;
+}
+
+// Parallax (Ruppert et al. 2020 reproject their mixtures the same way): a leaf's quadtree
+// holds directions seen from a centre c to radiance placed on the sphere of radius R around c,
+// so a vertex at x = c + offset reaches the same point through another direction. A leaf's
+// few records spread over its whole box; without this, a bright patch 2 m away looks blurred
+// over every direction it takes from anywhere in the box. R is the learnt distance, at least
+// 1.5 |offset| so that x lies inside the sphere: every direction from x meets it once, the map
+// is a bijection and its Jacobian stays within [0.11, 3.8].
+WF_INLINE float guideParallaxRadius(vec3 offset, float radianceDistance) {
+    return radianceDistance > 0.0f ? max(radianceDistance, 1.5f * length(offset)) : 0.0f;
+}
+
+// Direction w seen from the centre -> the direction from x to the same point of the sphere of
+// radius `radius` (0: w itself). jacobian: d(solid angle at c) / d(solid angle at x), so a
+// density at c times it is the density at x.
+WF_INLINE vec3 guideParallaxFromCentre(vec3 offset, float radius, vec3 w, WF_OUT(float) jacobian) {
+    jacobian = 1.0f;
+    if (!(radius > 0.0f))
+        return w;
+    vec3 toPoint = radius * w - offset;
+    float t = length(toPoint);
+    vec3 wx = toPoint / t;
+    jacobian = t * t / (radius * radius * max(dot(wx, w), 1e-6f));
+    return wx;
+}
+
+// The inverse: direction wx from x -> the direction from the centre to the point where it meets
+// the sphere, with the same jacobian.
+WF_INLINE vec3 guideParallaxToCentre(vec3 offset, float radius, vec3 wx, WF_OUT(float) jacobian) {
+    jacobian = 1.0f;
+    if (!(radius > 0.0f))
+        return wx;
+    float b = dot(offset, wx);
+    float c = dot(offset, offset) - radius * radius; // < 0: x is inside
+    float t = -b + sqrt(max(b * b - c, 0.0f));
+    vec3 w = normalize(offset + t * wx);
+    jacobian = t * t / (radius * radius * max(dot(wx, w), 1e-6f));
+    return w;
 }
 
 // One quadrant choice: x-half by u.x, then y-half within it by u.y, each u rescaled to [0, 1)
@@ -213,6 +254,14 @@ WF_INLINE vec3 guideSample(uint root, vec2 u, WF_OUT(float) pdf) {
 
 WF_INLINE float guidePdf(uint root, vec3 w) {
     return guidePdfSquare(root, guideDirToSquare(w)) * WF_GUIDE_INV_4PI;
+}
+
+// The guide's solid-angle density of direction w at a vertex `offset` from the leaf's sampling
+// centre, with parallax radius `radius` (guideParallaxRadius; 0: none).
+WF_INLINE float guidePdfAt(uint root, vec3 offset, float radius, vec3 w) {
+    float jacobian;
+    vec3 fromCentre = guideParallaxToCentre(offset, radius, w, jacobian);
+    return guidePdf(root, fromCentre) * jacobian;
 }
 
 // The building quadtree's cell (node * 4 + quadrant, a leaf quadrant) holding square point x:

@@ -31,6 +31,14 @@ struct GuideSpatialNode {
     uint samplingRoot;  // leaf: root of its frozen quadtree in the sampling node array
     uint buildingRoot;  // leaf: root of its quadtree under construction in the building array
     float bsdfFraction; // leaf: its learnt share of BSDF sampling; 0: GuideParams.bsdfFraction
+    // Parallax (leaf): the frozen quadtree holds directions seen from samplingCentre to
+    // radiance placed radianceDistance away (learnt; 0: directions are used as they are);
+    // the building quadtree's splats are directions seen from buildingCentre (the mean
+    // position of the leaf's records in the iteration before, or its box's centre).
+    vec3 samplingCentre;
+    float radianceDistance;
+    vec3 buildingCentre;
+    float spatialPad;
 };
 
 // The learnt BSDF fraction: each training record also adds, for each candidate share j,
@@ -40,7 +48,14 @@ struct GuideSpatialNode {
 // (low word, high word) in units of 1 / WF_GUIDE_MOMENT_SCALE, each term clamped at
 // WF_GUIDE_MAX_MOMENT (the choice only: the image stays unbiased whatever share is chosen).
 #define WF_GUIDE_FRACTIONS 6u
-#define WF_GUIDE_LEAF_STATS (1u + 2u * WF_GUIDE_FRACTIONS)
+// Then, for parallax, more 64-bit sums: splatted value x distance from the building centre
+// to where the record's ray ended, and splatted value (their ratio: the leaf's learnt
+// radiance distance); and the records' positions (x, y, z from GuideParams.boxLo: their
+// mean is the next iteration's building centre).
+#define WF_GUIDE_STAT_DISTANCE (1u + 2u * WF_GUIDE_FRACTIONS)
+#define WF_GUIDE_STAT_ENERGY (WF_GUIDE_STAT_DISTANCE + 2u)
+#define WF_GUIDE_STAT_POSITION (WF_GUIDE_STAT_ENERGY + 2u)
+#define WF_GUIDE_LEAF_STATS (WF_GUIDE_STAT_POSITION + 6u)
 #define WF_GUIDE_MOMENT_SCALE 4096.0f
 #define WF_GUIDE_MAX_MOMENT 1.0e9f
 
@@ -61,7 +76,8 @@ struct GuideParams {
     uint training;      // 1: keep training records and splat them into the building tree
     uint maxDepth;      // guide only vertices of bounce index below this (0: none)
     uint learnFraction; // 1: training records add the second moments of the candidate shares
-    uint pad1, pad2;
+    uint parallax;      // 1: splat directions as seen from the leaf's centre (see GuideSpatialNode)
+    float farDistance;  // where a record whose ray left the scene places its radiance
 };
 
 // A guided vertex of a path, kept until the path ends (WF_GUIDE_RECORDS per path): the
@@ -70,7 +86,8 @@ struct GuideParams {
 // which is what the building quadtree sums.
 struct GuideRecord {
     vec3 position;
-    uint pending;        // 1: radianceBefore not yet taken (the next shade pass takes it)
+    float hitDistance;   // < 0: radianceBefore not yet taken (the next shade pass takes it);
+                         // then 0 until that pass finds the surface the ray hit, its distance
     vec3 direction;
     float bsdfPdf;       // the BSDF's density of `direction` (solid angle)
     vec3 scale;          // per channel 1 / (throughput after the bounce x mixture pdf); 0 if none
@@ -80,12 +97,14 @@ struct GuideRecord {
 };
 #define WF_GUIDE_RECORDS 4u
 
-#define WF_GUIDE_SPATIAL_NODE_TEXELS 1u
+#define WF_GUIDE_SPATIAL_NODE_TEXELS 3u
 #define WF_GUIDE_DIR_NODE_TEXELS 2u
 
 #ifdef __cplusplus
 } // namespace wf::gpu_types
 static_assert(sizeof(wf::gpu_types::GuideSpatialNode) == 16 * WF_GUIDE_SPATIAL_NODE_TEXELS);
+static_assert(offsetof(wf::gpu_types::GuideSpatialNode, samplingCentre) == 16);
+static_assert(offsetof(wf::gpu_types::GuideSpatialNode, buildingCentre) == 32);
 static_assert(sizeof(wf::gpu_types::GuideDirNode) == 16 * WF_GUIDE_DIR_NODE_TEXELS);
 static_assert(offsetof(wf::gpu_types::GuideDirNode, prob) == 16);
 static_assert(sizeof(wf::gpu_types::GuideParams) == 48);

@@ -173,6 +173,9 @@ void shadePathVertex(inout PathVertex v) {
     if (!surface.frontFace && surface.transmission > 0.0)
         v.beta *= exp(-surface.absorption * t);
 #endif
+#if WF_GUIDING
+    guideTakeHitPoint(v.path, surface.p);
+#endif
 #if WF_AOV
     v.aovAlbedoDistance = vec4(surface.baseColor, t);
     v.aovNormal = surface.ns;
@@ -218,6 +221,10 @@ void shadePathVertex(inout PathVertex v) {
     guideHere = guideHere && (v.depth < guide.maxDepth || v.previousPdf == 0.0);
     uint guideNode = guideHere ? guideLeafNode(surface.p) : 0u;
     uint guideRoot = guideHere ? guideSpatial[guideNode].samplingRoot : 0u;
+    vec3 guideOffset = vec3(0.0);
+    float guideRadius = 0.0;
+    if (guideHere)
+        guideParallaxAt(guideNode, surface.p, guideOffset, guideRadius);
     // The leaf's share on both sides of MIS (NEE here, the continuation below).
     float guideFraction = guideHere ? guideLeafFraction(guideNode) : guide.bsdfFraction;
 #endif
@@ -252,7 +259,9 @@ void shadePathVertex(inout PathVertex v) {
 #endif
                 if (guideHere)
                     directionPdf = guideMixturePdf(
-                        directionPdf, guidePdf(guideRoot, light.direction), guideFraction);
+                        directionPdf,
+                        guidePdfAt(guideRoot, guideOffset, guideRadius, light.direction),
+                        guideFraction);
                 weight = powerHeuristic(light.pdf, directionPdf);
             }
 #elif WF_LIGHT_SAMPLING == 2
@@ -300,13 +309,19 @@ void shadePathVertex(inout PathVertex v) {
     float recordBsdfPdf = 0.0, recordGuidePdf = 0.0, recordFCos = 0.0;
     if (guideHere) {
         // One quadtree walk per lane: the guide's sample, or its density at the BSDF's.
+        // Either way through the leaf's centre (parallax): jacobian turns the quadtree's
+        // density there into the density here.
+        float jacobian = 1.0;
         vec2 x = fromGuide ? vec2(0.0)
-                           : guideDirToSquare(normalize(tangent * s.wi.x + bitangent * s.wi.y +
-                                                        n * s.wi.z));
+                           : guideDirToSquare(guideParallaxToCentre(
+                                 guideOffset, guideRadius,
+                                 normalize(tangent * s.wi.x + bitangent * s.wi.y + n * s.wi.z),
+                                 jacobian));
         float squarePdf;
         x = guideSampleOrPdfSquare(guideRoot, fromGuide, uDirection, x, squarePdf);
         if (fromGuide) {
-            vec3 w = guideSquareToDir(x);
+            vec3 w = guideParallaxFromCentre(guideOffset, guideRadius, guideSquareToDir(x),
+                                             jacobian);
             s.wi = vec3(dot(w, tangent), dot(w, bitangent), dot(w, n));
             s.isDelta = false;
             s.eta = 1.0; // only Russian roulette reads it: any value stays unbiased
@@ -325,10 +340,11 @@ void shadePathVertex(inout PathVertex v) {
             vec3 f = bsdfEval(bsdf, woLocal, s.wi);
             float directionPdf = bsdfPdf(bsdf, woLocal, s.wi);
 #endif
-            s.pdf = guideMixturePdf(directionPdf, squarePdf * WF_GUIDE_INV_4PI, guideFraction);
+            float guideDensity = squarePdf * WF_GUIDE_INV_4PI * jacobian;
+            s.pdf = guideMixturePdf(directionPdf, guideDensity, guideFraction);
             s.weight = s.pdf > 0.0 ? f * (abs(s.wi.z) / s.pdf) : vec3(0.0);
             recordBsdfPdf = directionPdf;
-            recordGuidePdf = squarePdf * WF_GUIDE_INV_4PI;
+            recordGuidePdf = guideDensity;
             recordFCos = (f.r + f.g + f.b) * (1.0 / 3.0) * abs(s.wi.z);
         }
     } else {

@@ -85,6 +85,9 @@ struct RenderSettings {
     // Each spatial leaf learns its own share (the candidate whose records' second moment was
     // least, guide_tree.h); guideBsdfFraction until a leaf has learnt one.
     bool guideLearnFraction = true;
+    // Parallax: each leaf's quadtree holds directions seen from its centre to radiance at a
+    // learnt distance, reprojected to each vertex (guide_tree.h); off: directions as recorded.
+    bool guideParallax = true;
     // Vertices of bounce index below this are guided, and those reached by a Dirac bounce;
     // the rest sample the BSDF alone (docs/guiding.md: guiding every vertex compounds the
     // mixture's doubled weights where the guide is blurred).

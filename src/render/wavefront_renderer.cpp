@@ -107,7 +107,8 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
                                              scene.bounds.center + radius, pathCapacity_,
                                              settings.guideBsdfFraction,
                                              settings.guideMaxDepth,
-                                             settings.guideLearnFraction);
+                                             settings.guideLearnFraction,
+                                             settings.guideParallax);
     }
     bindTables();
     waves_ = std::make_unique<WaveRecorder>(context, compiler, defines_, *table_,

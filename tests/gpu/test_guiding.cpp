@@ -1,6 +1,6 @@
 // Path guiding (render/guiding/, WF_GUIDING): guided renders agree with unguided ones per 8x8
 // region within 5 standard errors over seeds (on the Cornell box, the glass caustic scene and
-// with a deliberately wrong frozen guide: unbiased, only noisier), whether the image combines
+// with a deliberately wrong frozen guide or parallax: unbiased, only noisier), whether the image combines
 // every iteration by inverse variance (the default) or keeps the last one, a seed gives the
 // same image twice, and no sample is NaN or Inf.
 #include <gtest/gtest.h>
@@ -104,8 +104,11 @@ TEST(Guiding, MegakernelTracesTheSameGuidedImage) {
 }
 
 // A frozen guide that sends all of its share straight down (-y, the Cornell box's floor),
-// whatever the light: the BSDF's share still covers every direction the BSDF does.
-TEST(Guiding, WrongFrozenGuideStaysUnbiased) {
+// whatever the light: the BSDF's share still covers every direction the BSDF does. parallax:
+// a guide over every direction (most towards +x) reprojected through a wrong centre (the
+// box's corner) at a wrong distance, so the Jacobians vary over the scene and the
+// directions; the mixture's pdf is still the one sampled.
+void expectWrongGuideUnbiased(bool parallax) {
     static ShaderCompiler compiler;
     Scene scene = loadScene("cornell_box");
     Reference reference = unguidedReference(scene);
@@ -119,21 +122,38 @@ TEST(Guiding, WrongFrozenGuideStaysUnbiased) {
         const guiding::SDTree& current = renderer.guide()->tree();
         guiding::SDTree wrong(current.boxLo(), current.boxLo() + current.boxSize());
         for (int iteration = 0; iteration < 3; ++iteration) { // a deep, peaked frozen quadtree
-            for (int i = 0; i < 64; ++i)
+            for (int i = 0; i < 64 && !parallax; ++i)
                 wrong.record(current.boxLo() + 0.5f * current.boxSize(),
                              glm::vec3(0.0f, -1.0f, 0.0f), 1.0);
+            // With parallax: mass over every direction, most towards +x, so that the
+            // Jacobians weigh wherever the BSDF samples.
+            for (int i = 0; i < 4096 && parallax; ++i) {
+                glm::vec3 w = gpu_types::guideSquareToDir(
+                    glm::vec2((float(i % 64) + 0.5f) / 64.0f, (float(i / 64) + 0.5f) / 64.0f));
+                float x = std::max(0.0f, w.x);
+                wrong.record(current.boxLo() + 0.5f * current.boxSize(), w,
+                             1.0 + 30.0 * x * x * x * x);
+            }
             wrong.endIteration(1e30, 0.01, 12);
         }
         EXPECT_GT(wrong.stats().maxDirDepth, 3u);
+        if (parallax) {
+            wrong.leaf(0).samplingCentre = current.boxLo();
+            wrong.leaf(0).radianceDistance = 0.05f * current.boxSize().x;
+        }
         renderer.guide()->setTree(std::move(wrong));
         renderer.render();
         EXPECT_EQ(renderer.stats().nonFiniteSamples, 0u);
         images.push_back(renderer.readImage());
     }
     EXPECT_EQ(expectRegionsUnbiased(images, reference.rgb, reference.variance, kSize, kSize,
-                                    kBlock, "cornell_box wrong guide"),
+                                    kBlock, parallax ? "cornell_box wrong parallax" : "cornell_box wrong guide"),
               16);
 }
+
+TEST(Guiding, WrongFrozenGuideStaysUnbiased) { expectWrongGuideUnbiased(false); }
+
+TEST(Guiding, WrongParallaxStaysUnbiased) { expectWrongGuideUnbiased(true); }
 
 } // namespace
 } // namespace wf::test

@@ -48,10 +48,10 @@ SDTree trainedTree(unsigned seed) {
 }
 
 // Probability of each of binsX x binsY cells of the unit square under squarePdf, by the
-// midpoint rule on the 2^MAX_DEPTH grid (exact for the quadtree, whose cells are coarser).
+// midpoint rule on a fine x fine grid (2^MAX_DEPTH: exact for the quadtree, whose cells are
+// coarser).
 std::vector<double> cellMass(const std::function<double(vec2)>& squarePdf, int binsX,
-                             int binsY) {
-    const int fine = 1 << MAX_DEPTH;
+                             int binsY, int fine = 1 << MAX_DEPTH) {
     std::vector<double> mass(size_t(binsX * binsY), 0.0);
     for (int i = 0; i < fine; ++i)
         for (int j = 0; j < fine; ++j) {
@@ -151,6 +151,81 @@ TEST(GuideTree, OneWalkSamplesAndEvaluatesAsTheTwoWalks) {
         y = f.view.guideSampleOrPdfSquare(root, false, vec2(0.0f), point, walkPdf);
         ASSERT_EQ(point, y);
         ASSERT_EQ(f.view.guidePdfSquare(root, point), walkPdf);
+    }
+}
+
+// Parallax: the map from a leaf's centre to a vertex and back is one bijection, both ways with
+// one Jacobian, within the bounds guide_tree.h states; no distance learnt: no change.
+TEST(GuideTree, ParallaxMapsAreInverseWithOneJacobian) {
+    std::mt19937 rng(21);
+    for (int i = 0; i < 20000; ++i) {
+        vec3 offset = (vec3(wf::test::uniform01(rng), wf::test::uniform01(rng),
+                            wf::test::uniform01(rng)) - 0.5f) * 2.0f;
+        float distance = 0.05f + 3.0f * wf::test::uniform01(rng);
+        float radius = guideParallaxRadius(offset, distance);
+        ASSERT_GE(radius, 1.5f * glm::length(offset) * 0.9999f);
+        vec3 w = guideSquareToDir(vec2(wf::test::uniform01(rng), wf::test::uniform01(rng)));
+        float toVertex, toCentre;
+        vec3 wx = guideParallaxFromCentre(offset, radius, w, toVertex);
+        vec3 back = guideParallaxToCentre(offset, radius, wx, toCentre);
+        ASSERT_NEAR(glm::length(wx), 1.0f, 1e-5f);
+        ASSERT_LT(glm::length(back - w), 2e-4f) << i;
+        ASSERT_NEAR(toVertex, toCentre, 1e-3f * toVertex) << i;
+        ASSERT_GE(toVertex, 0.11f);
+        ASSERT_LE(toVertex, 3.8f);
+    }
+    float jacobian;
+    const vec3 w = glm::normalize(vec3(0.2f, -0.7f, 0.4f));
+    EXPECT_EQ(guideParallaxToCentre(vec3(0.5f), guideParallaxRadius(vec3(0.5f), 0.0f), w, jacobian),
+              w);
+    EXPECT_EQ(jacobian, 1.0f);
+}
+
+// The density at a vertex away from the leaf's centre (the quadtree's density there times the
+// Jacobian) still integrates to 1 over the sphere, and sampling the quadtree then mapping the
+// direction follows it (chi-square) with the pdf it returns.
+TEST(GuideTree, ParallaxDensityIntegratesToOneAndSamplingFollowsIt) {
+    Fixture f;
+    const uint root = f.flat.samplingBase[0];
+    const vec3 offset(0.3f, -0.25f, 0.45f);
+    for (float distance : {0.4f, 1.2f, 5.0f}) {
+        const float radius = guideParallaxRadius(offset, distance);
+        auto pdfAt = [&](vec3 w) { return double(f.view.guidePdfAt(root, offset, radius, w)); };
+        // Midpoint rule in (cos theta, phi), finer than the quadtree: the mapped density is
+        // not constant over its cells.
+        const int n = 1024;
+        double integral = 0.0;
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j)
+                integral += pdfAt(wf::test::sphereDirection(-1.0 + 2.0 * (i + 0.5) / n,
+                                                            2.0 * M_PI * (j + 0.5) / n)) *
+                            (2.0 / n) * (2.0 * M_PI / n);
+        EXPECT_NEAR(integral, 1.0, 5e-3) << "distance " << distance;
+
+        const int binsX = 16, binsY = 32, samples = 400000;
+        // Mapped, the quadtree's finest cells have curved edges: 8 x 8 points per cell.
+        std::vector<double> expected = cellMass(
+            [&](vec2 x) { return 4.0 * M_PI * pdfAt(guideSquareToDir(x)); }, binsX, binsY,
+            8 << MAX_DEPTH);
+        for (double& e : expected)
+            e *= samples;
+        std::mt19937 rng(22);
+        std::vector<double> observed(expected.size(), 0.0);
+        int mismatches = 0;
+        for (int i = 0; i < samples; ++i) {
+            float squarePdf, jacobian;
+            vec2 x = f.view.guideSampleSquare(
+                root, vec2(wf::test::uniform01(rng), wf::test::uniform01(rng)), squarePdf);
+            vec3 w = guideParallaxFromCentre(offset, radius, guideSquareToDir(x), jacobian);
+            double pdf = squarePdf * WF_GUIDE_INV_4PI * jacobian;
+            if (std::abs(pdfAt(w) - pdf) > 1e-3 * pdf)
+                ++mismatches;
+            vec2 y = guideDirToSquare(w);
+            int bx = std::min(int(y.x * binsX), binsX - 1), by = std::min(int(y.y * binsY), binsY - 1);
+            observed[size_t(by * binsX + bx)] += 1.0;
+        }
+        EXPECT_GT(wf::test::chiSquarePValue(observed, expected), 1e-3) << "distance " << distance;
+        EXPECT_LT(mismatches, samples / 1000) << "distance " << distance;
     }
 }
 
@@ -297,6 +372,61 @@ TEST(GuideTree, FixedPointSplatsMatchHostRecords) {
     }
     EXPECT_NEAR(hostSum, recorded, 1e-6 * recorded);
     EXPECT_NEAR(gpuSum, recorded, 1e-4 * recorded);
+}
+
+// A leaf's parallax from the GPU's counters: the frozen quadtree is seen from the centre its
+// splats were seen from, at their energy-weighted mean distance; the records' mean position
+// becomes the next building centre, moved into each child's box when the leaf splits.
+TEST(GuideTree, LeavesLearnTheirParallaxFromTheCounters) {
+    SDTree tree(vec3(-1.0f), vec3(1.0f));
+    FlatGuide flat = tree.flatten();
+    const vec3 boxCentre = tree.boxLo() + 0.5f * tree.boxSize();
+    EXPECT_EQ(flat.spatial[0].radianceDistance, 0.0f) << "nothing learnt: no parallax";
+    EXPECT_EQ(flat.spatial[0].buildingCentre, boxCentre);
+    std::vector<std::uint32_t> counters(flat.splatCounterCount(), 0u);
+    std::vector<std::uint32_t> stats(WF_GUIDE_LEAF_STATS, 0u);
+    auto set64 = [&](std::uint32_t at, double value) {
+        std::uint64_t fixed = std::uint64_t(value * WF_GUIDE_MOMENT_SCALE);
+        stats[at] = std::uint32_t(fixed & 0xffffffffu);
+        stats[at + 1] = std::uint32_t(fixed >> 32);
+    };
+    stats[0] = 1000; // records, at a mean position 0.25 beyond the box's corner on x, ...
+    const vec3 mean = tree.boxLo() + vec3(0.25f, 0.5f, 1.5f);
+    for (std::uint32_t axis = 0; axis < 3; ++axis)
+        set64(WF_GUIDE_STAT_POSITION + 2 * axis, 1000.0 * (mean - tree.boxLo())[int(axis)]);
+    set64(WF_GUIDE_STAT_ENERGY, 2.0e5); // ... whose splats came from 2.5 away on average
+    set64(WF_GUIDE_STAT_DISTANCE, 2.5 * 2.0e5);
+    tree.addSplats(flat, counters, stats);
+    tree.endIteration(1e30, 0.01, 8); // no split
+    flat = tree.flatten();
+    EXPECT_EQ(flat.spatial[0].samplingCentre, boxCentre);
+    EXPECT_NEAR(flat.spatial[0].radianceDistance, 2.5f, 1e-4f);
+    EXPECT_LT(glm::length(flat.spatial[0].buildingCentre - mean), 1e-3f);
+
+    // The next iteration splits the leaf along x: both children sample from the parent's
+    // frozen view (its centre, its distance); their building centres are the mean moved into
+    // each child's box. No record carried light: the distance is kept.
+    stats.assign(WF_GUIDE_LEAF_STATS, 0u);
+    stats[0] = 1000;
+    for (std::uint32_t axis = 0; axis < 3; ++axis)
+        set64(WF_GUIDE_STAT_POSITION + 2 * axis, 1000.0 * (mean - tree.boxLo())[int(axis)]);
+    tree.addSplats(flat, counters, stats);
+    tree.endIteration(600.0, 0.01, 8); // one split: the halves hold 500 each
+    ASSERT_EQ(tree.leaves().size(), 2u);
+    flat = tree.flatten();
+    for (const auto& node : flat.spatial) {
+        if ((node.child & WF_GUIDE_LEAF) == 0u)
+            continue;
+        EXPECT_LT(glm::length(node.samplingCentre - mean), 1e-3f);
+        EXPECT_NEAR(node.radianceDistance, 2.5f, 1e-4f);
+        vec3 inBox = tree.unitPosition(node.buildingCentre);
+        EXPECT_GE(glm::min(inBox.x, glm::min(inBox.y, inBox.z)), -1e-5f);
+        EXPECT_LE(glm::max(inBox.x, glm::max(inBox.y, inBox.z)), 1.0f + 1e-5f);
+    }
+    // The child holding the mean keeps it; the other takes the nearest point of its box.
+    EXPECT_LT(glm::length(flat.spatial[flat.spatial[0].child].buildingCentre - mean), 1e-3f);
+    EXPECT_NEAR(flat.spatial[flat.spatial[0].child + 1].buildingCentre.x,
+                tree.boxLo().x + 0.5f * tree.boxSize().x, 1e-4f);
 }
 
 } // namespace

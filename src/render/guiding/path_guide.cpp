@@ -25,9 +25,9 @@ constexpr double kFractionMinRecords = 256.0;
 
 PathGuide::PathGuide(const Context& context, glm::vec3 sceneLo, glm::vec3 sceneHi,
                      uint32_t pathCapacity, float bsdfFraction, uint32_t maxDepth,
-                     bool learnFraction)
+                     bool learnFraction, bool parallax)
     : tree_(sceneLo, sceneHi), bsdfFraction_(bsdfFraction), maxDepth_(maxDepth),
-      learnFraction_(learnFraction),
+      learnFraction_(learnFraction), parallax_(parallax),
       params_(context, "guide params", sizeof(GuideParams)),
       spatial_(context, "guide spatial tree", kSpatialNodes * sizeof(GuideSpatialNode)),
       sampling_(context, "guide sampling quadtrees", kDirNodes * sizeof(GuideDirNode)),
@@ -88,6 +88,9 @@ void PathGuide::setTraining(bool training) {
     p.training = training ? 1u : 0u;
     p.maxDepth = maxDepth_;
     p.learnFraction = learnFraction_ ? 1u : 0u;
+    p.parallax = parallax_ ? 1u : 0u;
+    // Twice the box's diagonal: past anything in the scene.
+    p.farDistance = 2.0f * glm::length(tree_.boxSize());
     params_.upload(&p, sizeof p);
 }
 

@@ -29,7 +29,7 @@ public:
     // sceneLo/Hi: the scene's bounds; pathCapacity: paths per wave (training records).
     PathGuide(const Context& context, glm::vec3 sceneLo, glm::vec3 sceneHi,
               uint32_t pathCapacity, float bsdfFraction, uint32_t maxDepth,
-              bool learnFraction);
+              bool learnFraction, bool parallax);
 
     void appendBindings(DescriptorBindings& bindings) const;
     void appendMemoryReport(std::vector<std::pair<std::string, uint64_t>>& report) const;
@@ -52,6 +52,7 @@ private:
     float bsdfFraction_;
     uint32_t maxDepth_;
     bool learnFraction_;
+    bool parallax_;
     bool training_ = false;
     Buffer params_, spatial_, sampling_, building_, splats_, leafSamples_, records_, counts_;
 };

@@ -109,8 +109,12 @@ SDTree::SDTree(glm::vec3 lo, glm::vec3 hi) {
     float extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z, 1e-6f}) * 1.02f;
     lo_ = centre - glm::vec3(0.5f * extent);
     size_ = glm::vec3(extent);
-    nodes_.push_back(Node{});
+    Node root;
+    root.lo = lo_;
+    root.size = size_;
+    nodes_.push_back(root);
     leaves_.emplace_back();
+    leaves_.back().buildingCentre = centre;
 }
 
 glm::vec3 SDTree::unitPosition(glm::vec3 p) const { return (p - lo_) / size_; }
@@ -153,6 +157,14 @@ void SDTree::addSplats(const FlatGuide& flat, const std::vector<std::uint32_t>& 
                 std::uint64_t(stats[1 + 2 * j]) | (std::uint64_t(stats[2 + 2 * j]) << 32);
             leaves_[l].moments[j] += double(fixed) / double(WF_GUIDE_MOMENT_SCALE);
         }
+        auto sum64 = [&](std::uint32_t at) {
+            return double(std::uint64_t(stats[at]) | (std::uint64_t(stats[at + 1]) << 32)) /
+                   double(WF_GUIDE_MOMENT_SCALE);
+        };
+        leaves_[l].distanceSum += sum64(WF_GUIDE_STAT_DISTANCE);
+        leaves_[l].energySum += sum64(WF_GUIDE_STAT_ENERGY);
+        for (std::uint32_t axis = 0; axis < 3; ++axis)
+            leaves_[l].positionSum[int(axis)] += sum64(WF_GUIDE_STAT_POSITION + 2 * axis);
     }
 }
 
@@ -186,7 +198,16 @@ void SDTree::split(std::uint32_t node, std::uint32_t depth, double threshold,
         Node a, b;
         a.leaf = leafIndex;
         b.leaf = std::uint32_t(leaves_.size());
+        int axis = int(depth % 3);
+        a.lo = b.lo = nodes_[node].lo;
+        a.size = b.size = nodes_[node].size;
+        a.size[axis] = b.size[axis] = 0.5f * nodes_[node].size[axis];
+        b.lo[axis] += a.size[axis];
         leaves_.push_back(std::move(copy));
+        for (const Node& n : {a, b}) {
+            glm::vec3& c = leaves_[n.leaf].buildingCentre;
+            c = glm::clamp(c, n.lo, n.lo + n.size);
+        }
         nodes_.push_back(a);
         nodes_.push_back(b);
         nodes_[node].isLeaf = false;
@@ -199,6 +220,15 @@ void SDTree::split(std::uint32_t node, std::uint32_t depth, double threshold,
 
 void SDTree::endIteration(double splitThreshold, double energyThreshold,
                           std::uint32_t maxDirDepth, std::size_t maxLeaves) {
+    for (SpatialLeaf& l : leaves_) {
+        l.samplingCentre = l.buildingCentre;
+        if (l.energySum > 0.0)
+            l.radianceDistance = float(l.distanceSum / l.energySum);
+        if (l.samples > 0.0 && l.positionSum != glm::dvec3(0.0))
+            l.buildingCentre = lo_ + glm::vec3(l.positionSum / l.samples);
+        l.distanceSum = l.energySum = 0.0;
+        l.positionSum = glm::dvec3(0.0);
+    }
     split(0, 0, splitThreshold, maxLeaves);
     lastSamples_.clear();
     for (SpatialLeaf& l : leaves_) {
@@ -247,7 +277,11 @@ FlatGuide SDTree::flatten() const {
             g.child = WF_GUIDE_LEAF | nodes_[i].leaf;
             g.samplingRoot = flat.samplingBase[nodes_[i].leaf];
             g.buildingRoot = flat.buildingBase[nodes_[i].leaf];
-            g.bsdfFraction = leaves_[nodes_[i].leaf].bsdfFraction;
+            const SpatialLeaf& l = leaves_[nodes_[i].leaf];
+            g.bsdfFraction = l.bsdfFraction;
+            g.samplingCentre = l.samplingCentre;
+            g.radianceDistance = l.radianceDistance;
+            g.buildingCentre = l.buildingCentre;
         } else {
             g.child = nodes_[i].child;
         }

@@ -51,6 +51,15 @@ struct SpatialLeaf {
     // (guideFractionCandidate; see WF_GUIDE_FRACTIONS).
     float bsdfFraction = 0.0f;
     std::array<double, WF_GUIDE_FRACTIONS> moments{};
+    // Parallax (see GuideSpatialNode): the sampling quadtree's directions are seen from
+    // samplingCentre to radiance radianceDistance away (0: none); the building one's from
+    // buildingCentre, whose splats this iteration sum value x distance, value and the
+    // records' positions (from the tree's box corner).
+    glm::vec3 samplingCentre{0.0f};
+    float radianceDistance = 0.0f;
+    glm::vec3 buildingCentre{0.0f};
+    double distanceSum = 0.0, energySum = 0.0;
+    glm::dvec3 positionSum{0.0};
 };
 
 // The candidate share with the least second moment, or -1 where no record carried light.
@@ -103,8 +112,12 @@ public:
     // share whose second moment was least (kept where no record carried light); the moments
     // restart. Before endIteration: split leaves then inherit their parent's share.
     void learnFractions(double minRecords);
-    // Ends a training iteration: splits spatial leaves with more than splitThreshold splats
-    // (children copy their parent's quadtrees and half its count, recursively), then in every
+    // Ends a training iteration: each leaf's frozen quadtree will be seen from the centre its
+    // splats were seen from, at the energy-weighted mean distance they came from (kept where
+    // none did), and the mean position of its records becomes its next building centre;
+    // splits spatial leaves with more than splitThreshold splats (children copy their
+    // parent's quadtrees, centres, distance and half its count, recursively; the building
+    // centre moved into each child's box), then in every
     // leaf propagates the building quadtree, freezes it for sampling and starts a refined,
     // empty one (energyThreshold: the share of a leaf's energy past which a quadrant
     // subdivides).
@@ -123,6 +136,7 @@ private:
         std::uint32_t child = 0; // interior: first child (second = child + 1)
         std::uint32_t leaf = 0;  // leaf: index into leaves_
         bool isLeaf = true;
+        glm::vec3 lo{0.0f}, size{0.0f}; // its box, in world units
     };
     void split(std::uint32_t node, std::uint32_t depth, double threshold, std::size_t maxLeaves);
 
