@@ -15,10 +15,12 @@ light transport). Each stays a small, self-contained glTF; run `python3 make_fai
 - many_lamps.gltf: 1,024 small lamps (6 cm octahedra shaded on top, lit below, 0.3-0.7 m above
   a floor, emission over 400:1) among a few blocks. Choosing a light by power sends most shadow rays to bright lamps
   metres away; the light tree picks the lamps near and facing each point.
-- narrow_gap.gltf: a closed grey room lit only through a 12 cm opening low in one wall by a
-  small lamp outside, whose beam lights a spot on the ceiling. Shadow rays from almost every point in
-  the room hit the wall; the light arrives by way of the spot, which BSDF sampling finds
-  rarely: path guiding learns where it is (issue 30's failure scene for unguided MIS).
+- narrow_gap.gltf: a closed dark room (albedo 0.2) lit only through a 12 cm opening low in one
+  wall by a small lamp outside, whose beam lights a spot on the ceiling; the camera looks at the
+  floor below it. Shadow rays from almost every point in the room hit the wall; the light
+  arrives by way of the spot, which BSDF sampling finds rarely: path guiding learns where it
+  is (issue 30's failure scene for unguided MIS). Dark, so that most light comes straight
+  from the spot rather than after several bounces, which only the camera's vertex would guide.
 """
 
 import math
@@ -258,7 +260,7 @@ def rect(p0, p1, p2, p3, facing):
 
 def narrow_gap():
     g = GltfWriter()
-    grey = material(g, "grey", (0.6, 0.6, 0.6), lambert=True)
+    grey = material(g, "dark grey", (0.2, 0.2, 0.2), lambert=True)
     lamp = material(g, "lamp", (0.0, 0.0, 0.0), lambert=True,
                     emission=(8.0e6, 7.6e6, 6.8e6))
     # The room: x, z in [-2, 2], y in [0, 2.5]; the wall at x = 2 has a 12 cm square opening
@@ -289,7 +291,8 @@ def narrow_gap():
     corner = lambda i, j: tuple(c + s * (i * uu + j * vv) for c, uu, vv in zip(centre, u, v))
     g.node(name="lamp", mesh=g.mesh("lamp", [g.primitive(
         [rect(corner(-1, -1), corner(1, -1), corner(1, 1), corner(-1, 1), facing)], lamp)]))
-    camera(g, (1.6, 1.2, -1.8), (-1.5, 0.6, 0.8), 1.1)
+    # From the far corner down onto the floor below the spot, the opening in view.
+    camera(g, (-1.8, 1.5, 1.5), (0.8, 0.0, -0.3), 0.6)
     return g
 
 
