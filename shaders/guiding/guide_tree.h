@@ -46,13 +46,14 @@ WF_INLINE float guideMixturePdf(float bsdfPdf, float guidePdf, float bsdfFractio
 }
 
 // The BSDF shares a leaf may learn (WF_GUIDE_FRACTIONS of them): all above 0, so the mixture
-// stays positive wherever the BSDF is; up to nearly BSDF sampling alone, where a leaf's guide
-// does not match its integrand (a diffuse room's smooth indirect light). None below 0.5: a
-// sharp guide's records rarely show the BSDF sample that its gaps leave to 1 / share, so a
-// lower share learnt from them lost (docs/guiding.md, "Parallax").
+// stays positive wherever the BSDF is; up to BSDF sampling alone (1: where a leaf's guide
+// does not match its integrand, a diffuse room's smooth indirect light, its vertices skip
+// the guide's walks outside training). None below 0.5: a sharp guide's records rarely show
+// the BSDF sample that its gaps leave to 1 / share, so a lower share learnt from them lost
+// (docs/guiding.md, fourth session).
 WF_INLINE float guideFractionCandidate(uint j) {
     return j == 0u ? 0.5f : j == 1u ? 0.6f : j == 2u ? 0.7f : j == 3u ? 0.8f
-         : j == 4u ? 0.9f : 0.97f;
+         : j == 4u ? 0.9f : 1.0f;
 }
 
 // One training record's second moment had its vertex sampled with share `candidate`:
