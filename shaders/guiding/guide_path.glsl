@@ -20,16 +20,20 @@ void guideStartPath(uint path) {
         guideCounts[path] = 0u;
 }
 
+// The slot of the path's latest training record, or WF_GUIDE_NO_RECORD (not training, or none).
+#define WF_GUIDE_NO_RECORD 0xffffffffu
+uint guideLatestRecord(uint path) {
+    if (guide.training == 0u)
+        return WF_GUIDE_NO_RECORD;
+    uint count = guideCounts[path];
+    return count == 0u ? WF_GUIDE_NO_RECORD : path * WF_GUIDE_RECORDS + count - 1u;
+}
+
 // Before a vertex adds its emission: the previous guided vertex's own light (its NEE) is in
 // the path's radiance by now, and nothing that arrived along its sampled direction is yet.
 void guideTakeRadianceBefore(uint path, vec3 pathRadiance) {
-    if (guide.training == 0u)
-        return;
-    uint count = guideCounts[path];
-    if (count == 0u)
-        return;
-    uint slot = path * WF_GUIDE_RECORDS + count - 1u;
-    if (guideRecords[slot].hitDistance < 0.0) {
+    uint slot = guideLatestRecord(path);
+    if (slot != WF_GUIDE_NO_RECORD && guideRecords[slot].hitDistance < 0.0) {
         guideRecords[slot].radianceBefore = pathRadiance;
         guideRecords[slot].hitDistance = 0.0;
     }
@@ -38,13 +42,8 @@ void guideTakeRadianceBefore(uint path, vec3 pathRadiance) {
 // The vertex just shaded lies at p: the record whose ray found it (its radiance before just
 // taken) keeps how far its radiance came from.
 void guideTakeHitPoint(uint path, vec3 p) {
-    if (guide.training == 0u)
-        return;
-    uint count = guideCounts[path];
-    if (count == 0u)
-        return;
-    uint slot = path * WF_GUIDE_RECORDS + count - 1u;
-    if (guideRecords[slot].hitDistance == 0.0)
+    uint slot = guideLatestRecord(path);
+    if (slot != WF_GUIDE_NO_RECORD && guideRecords[slot].hitDistance == 0.0)
         guideRecords[slot].hitDistance = max(length(p - guideRecords[slot].position), 1e-6);
 }
 
