@@ -220,16 +220,17 @@ void shadePathVertex(inout PathVertex v) {
     // the mixture's doubled weights would compound (docs/guiding.md, "Levers").
     guideHere = guideHere && (v.depth < guide.maxDepth || v.previousPdf == 0.0);
     uint guideNode = guideHere ? guideLeafNode(surface.p) : 0u;
+    float leafFraction = guideHere ? guideLeafFraction(guideNode) : guide.bsdfFraction;
     // A leaf that learnt the BSDF alone (share 1) samples it alone, as an unguided vertex does,
     // but while training: its records still need the guide's density to learn again.
-    guideHere = guideHere && (guide.training != 0u || guideLeafFraction(guideNode) < 1.0);
+    guideHere = guideHere && (guide.training != 0u || leafFraction < 1.0);
     uint guideRoot = guideHere ? guideSpatial[guideNode].samplingRoot : 0u;
     vec3 guideOffset = vec3(0.0);
     float guideRadius = 0.0;
     if (guideHere)
         guideParallaxAt(guideNode, surface.p, guideOffset, guideRadius);
     // The leaf's share on both sides of MIS (NEE here, the continuation below).
-    float guideFraction = guideHere ? guideLeafFraction(guideNode) : guide.bsdfFraction;
+    float guideFraction = guideHere ? leafFraction : guide.bsdfFraction;
 #endif
 
 #if WF_HAS_EMITTERS && WF_LIGHT_SAMPLING != 0
