@@ -52,6 +52,13 @@ public:
     void update(const AdaptiveProgress& round, double target) {
         if (!enabled_)
             return;
+        if (round.stage == "training") { // the guide's iterations: one line each
+            std::fprintf(stderr, "%swavefront: target relMSE %g: training the guide, iteration "
+                                 "%u of %u spp, %.1f s elapsed\n",
+                         tty_ ? "\r" : "", target, round.round, round.level, round.seconds);
+            std::fflush(stderr);
+            return;
+        }
         // A later image round may follow; each image's last level ends its line.
         const bool last = round.stage == "render" && round.round == round.rounds;
         if (!tty_ && !last && round.seconds - lastPrinted_ < 1.0 && round.stage != "pilot")

@@ -173,19 +173,27 @@ void renderAdaptively(WavefrontRenderer& renderer, const RenderSettings& setting
     run.rgb = result.rgb;
     run.renderSeconds = result.stats.seconds;
     run.errorEstimate = result.estimate;
+    std::vector<std::pair<std::string, std::string>> attributes;
+    if (settings.guiding) {
+        attributes = {{"guiding", "on"},
+                      {"guidingIterations", std::to_string(result.stats.guideIterations.size())},
+                      {"guidingImageSpp", std::to_string(result.stats.guideFinalSamples)}};
+        reportGuiding(verbose, result.stats, statsContext);
+    }
     char numbers[4][32];
     std::snprintf(numbers[0], sizeof numbers[0], "%g", targetError);
     std::snprintf(numbers[1], sizeof numbers[1], "%.6g", allocation.predictedRelMse);
     std::snprintf(numbers[2], sizeof numbers[2], "%.6g", result.meanSpp);
     std::snprintf(numbers[3], sizeof numbers[3], "%u", result.pilotSpp);
-    writeRenderPart(output.exr, run,
-                    {{"targetError", numbers[0]}, {"targetMet", result.targetMet ? "true" : "false"},
-                     {"stoppedBy", result.stoppedBy}, {"predictedRelMse", numbers[1]},
-                     {"meanSpp", numbers[2]}, {"pilotSpp", numbers[3]},
-                     {"imageRounds", std::to_string(result.imageRounds)},
-                     {"minSpp", std::to_string(allocation.levels.front())},
-                     {"maxSpp", std::to_string(settings.samplesPerPixel)}},
-                    true,
+    attributes.insert(attributes.end(),
+                      {{"targetError", numbers[0]},
+                       {"targetMet", result.targetMet ? "true" : "false"},
+                       {"stoppedBy", result.stoppedBy}, {"predictedRelMse", numbers[1]},
+                       {"meanSpp", numbers[2]}, {"pilotSpp", numbers[3]},
+                       {"imageRounds", std::to_string(result.imageRounds)},
+                       {"minSpp", std::to_string(allocation.levels.front())},
+                       {"maxSpp", std::to_string(settings.samplesPerPixel)}});
+    writeRenderPart(output.exr, run, attributes, true,
                     output.aovs.empty()
                         ? std::vector<ExrChannel>{}
                         : aovChannels(output.aovs,

@@ -186,10 +186,6 @@ RenderRequest renderRequestFrom(const ParsedArgs& parsed) {
     applySppRangeFlags(parsed, settings);
     request.targetError = parsed.floatValue("--target-error", 0.0f, 1e-12f, 1e6f);
     if (adaptive) {
-        if (settings.guiding)
-            throw UsageError("--guiding on does not combine with --target-error (its pilot and "
-                             "rounds each restart the renderer with a seed of their own, which "
-                             "forgets the guide): use --guiding off or auto");
         checkAdaptiveFlags(parsed, settings);
         settings.pixelList = true;
     }

@@ -53,7 +53,9 @@ std::vector<OptionSpec> samplingOptions() {
                                   "Trains an SD-tree over 1, 2, 4, ... spp (within "
                                   "--time-limit), each spatial leaf learning its BSDF share, "
                                   "the image from the rest, the iterations' images weighed by "
-                                  "inverse variance; a --resume trains its own guide"},
+                                  "inverse variance; a --resume trains its own guide; with "
+                                  "--target-error the guide trains as the pilot and the rounds "
+                                  "sample it frozen"},
         {"--sampler", "", "NAME", "sample pattern: independent, stratified, multijitter, "
                                   "halton, hammersley, sobol (default) or bluenoise"},
         {"--texture-filter", "", "MODE", "cone (mip levels chosen by ray cones; default) or "
@@ -316,7 +318,8 @@ guiding::GuidingDecision resolveGuiding(RenderSettings& settings, const Prepared
     guiding::GuidingDecision decision;
     if (settings.pixelList) {
         // auto never refuses: where `on` would be refused, it stays off.
-        decision.reason = "auto: off (--target-error guides nothing yet)";
+        decision.reason = "auto: off with --target-error (its budget is unknown until the pilot; "
+                          "--guiding on trains the guide as the pilot)";
     } else {
         decision = guiding::decideGuiding(guiding::GuidingMode::Auto,
                                           guiding::guideSceneTraits(scene),

@@ -4,10 +4,12 @@
 #include <chrono>
 #include <cmath>
 #include <numeric>
+#include <optional>
 
 #include "errors.h"
 #include "image/error_metrics.h"
 #include "render/film_error.h"
+#include "render/guiding/path_guide.h"
 
 namespace wf {
 
@@ -187,6 +189,92 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// The guide of a guided adaptive render (docs/guiding.md, "--target-error"). It trains over
+// the whole image with the pilot's seed, so that no sample it learnt from is in the image:
+// iterations of 1, 2, 4, ... spp, each sampling the guide the one before it built, until one
+// has at least the pilot's spp; that last iteration's image is the pilot (its samples measure
+// a guide one iteration older than the frozen one, so the allocation errs towards more
+// samples). Before each image round it trains on while its samples stay within that round's
+// mean spp (the image at least half of the total, as in a guided render), within half of
+// maxSpp and within the time limit, so the guide keeps up with the rounds' doubling. Every
+// round samples the guide as frozen then; each round's samples are independent of it.
+class AdaptiveGuide {
+public:
+    AdaptiveGuide(WavefrontRenderer& renderer, const std::vector<uint32_t>& everyPixel,
+                  uint32_t pilotSeed, const std::function<void(const AdaptiveProgress&)>& onRound)
+        : renderer_(renderer), everyPixel_(everyPixel), pilotSeed_(pilotSeed), onRound_(onRound),
+          tree_(renderer.guide()->tree()) {}
+
+    // The pilot: iterations up to one of at least `pilotSpp` samples (the renderer restarted
+    // with the pilot's seed). Returns the last one's spp; `evidence` gets its moments.
+    uint32_t trainPilot(uint32_t pilotSpp, FilmMoments& evidence) {
+        uint32_t spp = 0;
+        do {
+            spp = nextSpp_;
+            evidence = runIteration(0.0);
+        } while (spp < pilotSpp);
+        return spp;
+    }
+
+    // Before an image round of mean `meanSpp`: more iterations while the rule above allows,
+    // their statistics added to `total`. `overTime(seconds)`: the limit would be passed.
+    void trainUpTo(double meanSpp, uint32_t maxSpp, const std::function<bool(double)>& overTime,
+                   RenderStats& total) {
+        bool restarted = false;
+        for (;;) {
+            const uint64_t after = uint64_t(trained_) + nextSpp_;
+            const double pace = total.seconds / std::max<double>(total.paths, 1);
+            if (double(after) > meanSpp || 2 * after > maxSpp ||
+                overTime(double(nextSpp_) * renderer_.pixelCount() * pace))
+                return;
+            if (!restarted) { // the pilot's stream again, its sample indices continuing
+                renderer_.restart(pilotSeed_, 0);
+                renderer_.guide()->setTree(tree_);
+                restarted = true;
+            }
+            runIteration(total.seconds);
+            const RenderStats& more = renderer_.stats();
+            addRenderStats(total, more);
+            total.guideIterations.push_back(more.guideIterations.back());
+            renderer_.reset();
+        }
+    }
+
+    // After the renderer restarted for an image round: sample the frozen guide.
+    void freeze() { renderer_.guide()->setTree(tree_); }
+
+private:
+    // secondsBefore: the render's seconds before the renderer's own (progress lines).
+    FilmMoments runIteration(double secondsBefore) {
+        PathGuide& guide = *renderer_.guide();
+        guide.setTraining(true);
+        renderer_.clearImage();
+        const auto start = std::chrono::steady_clock::now();
+        renderer_.renderPixelList(everyPixel_, trained_, nextSpp_);
+        const double seconds = secondsSince(start);
+        FilmMoments moments = renderer_.readMoments();
+        renderer_.endGuideIteration(iteration_, nextSpp_, seconds);
+        guide.setTraining(false);
+        tree_ = guide.tree();
+        trained_ += nextSpp_;
+        if (onRound_)
+            onRound_({"training", 1, iteration_ + 1, 0, renderer_.pixelCount(), nextSpp_,
+                      secondsBefore + renderer_.stats().seconds, 0.0});
+        ++iteration_;
+        nextSpp_ *= 2;
+        return moments;
+    }
+
+    WavefrontRenderer& renderer_;
+    const std::vector<uint32_t>& everyPixel_;
+    uint32_t pilotSeed_;
+    const std::function<void(const AdaptiveProgress&)>& onRound_;
+    guiding::SDTree tree_;
+    uint32_t trained_ = 0;  // samples per pixel so far, all with the pilot's seed
+    uint32_t nextSpp_ = 1;
+    uint32_t iteration_ = 0;
+};
+
 } // namespace
 
 AdaptiveResult renderAdaptive(WavefrontRenderer& renderer, uint32_t seed,
@@ -212,12 +300,20 @@ AdaptiveResult renderAdaptive(WavefrontRenderer& renderer, uint32_t seed,
     };
 
     renderer.restart(pilotSeedFor(seed), 0);
-    renderer.renderPixelList(everyPixel, 0, result.pilotSpp);
-    addStats(true);
-    if (onRound)
-        onRound({"pilot", 1, 1, 1, renderer.pixelCount(), result.pilotSpp,
-                 result.stats.seconds, 0.0});
-    FilmMoments evidence = renderer.readMoments();
+    FilmMoments evidence;
+    std::optional<AdaptiveGuide> guide;
+    if (renderer.guide()) {
+        guide.emplace(renderer, everyPixel, pilotSeedFor(seed), onRound);
+        result.pilotSpp = guide->trainPilot(result.pilotSpp, evidence);
+        addStats(true);
+    } else {
+        renderer.renderPixelList(everyPixel, 0, result.pilotSpp);
+        addStats(true);
+        if (onRound)
+            onRound({"pilot", 1, 1, 1, renderer.pixelCount(), result.pilotSpp,
+                     result.stats.seconds, 0.0});
+        evidence = renderer.readMoments();
+    }
     double previousMean = 0.0;
     for (uint32_t round = 1;; ++round) {
         const std::vector<double> relVariance = relativeSampleVariance(evidence);
@@ -246,7 +342,11 @@ AdaptiveResult renderAdaptive(WavefrontRenderer& renderer, uint32_t seed,
             break;
         }
 
+        if (guide)
+            guide->trainUpTo(allocation.meanSpp, settings.maxSpp, overTime, result.stats);
         renderer.restart(roundSeed(seed, round), 0);
+        if (guide)
+            guide->freeze();
         uint32_t previous = 0;
         bool cut = false;
         for (uint32_t k = 0; k < levels; ++k) {
@@ -281,6 +381,10 @@ AdaptiveResult renderAdaptive(WavefrontRenderer& renderer, uint32_t seed,
         for (float n : film.count)
             result.meanSpp += n;
         result.meanSpp /= std::max<size_t>(film.count.size(), 1);
+        if (guide) {
+            result.stats.guideFinalSamples = static_cast<uint32_t>(std::lround(result.meanSpp));
+            result.stats.guideBytes = renderer.guide()->deviceBytes();
+        }
         result.targetMet = target && result.estimate.reliable &&
                            result.estimate.relMse <= settings.targetError;
         if (!target) {

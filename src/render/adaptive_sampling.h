@@ -77,7 +77,7 @@ SampleAllocation allocateSamples(const std::vector<double>& relVariance,
                                  const AdaptiveSettings& settings);
 
 struct AdaptiveProgress {
-    std::string stage;      // "pilot" or "render"
+    std::string stage;      // "pilot", "training" (a guided pilot's iterations) or "render"
     uint32_t imageRound = 1; // with a target, the image round this stage belongs to
     uint32_t round = 0;     // 1-based within the stage
     uint32_t rounds = 0;
@@ -103,7 +103,9 @@ struct AdaptiveResult {
 };
 
 // Renders with `renderer` (made with RenderSettings.pixelList and samplesPerPixel >= maxSpp):
-// the pilot with a seed derived from `seed`, then the image with `seed` itself.
+// the pilot with a seed derived from `seed`, then the image with `seed` itself. A guided
+// renderer's pilot trains the guide (iterations of 1, 2, 4, ... spp, the last one the pilot)
+// and every round samples the guide frozen after it.
 AdaptiveResult renderAdaptive(WavefrontRenderer& renderer, uint32_t seed,
                               const AdaptiveSettings& settings, uint32_t width, uint32_t height,
                               const std::function<void(const AdaptiveProgress&)>& onRound = {});

@@ -77,9 +77,6 @@ ConvergenceMethod parseMethod(const std::string& text) {
     if (method.adaptive && samplerIsFiniteSet(method.sampler))
         throw UsageError("--methods: adaptive gives pixels parts of a finite set ('" + text +
                          "'); pick sobol, halton, independent or bluenoise");
-    if (method.guided && method.adaptive)
-        throw UsageError("--methods: guided does not combine with adaptive yet ('" + text +
-                         "'): adaptive renders lists of pixels, guiding trains on whole images");
     method.name = std::string(samplerName(method.sampler)) + "+" +
                   lightSamplingName(method.lightSampling) +
                   (method.randomize ? "" : "+no-randomize") +

@@ -42,8 +42,6 @@ ShaderVariant WavefrontRenderer::variantFor(const PreparedScene& scene) const {
     if (variant.rayTracing && variant.motion)
         throw UsageError("--traversal rt: motion blur (--shutter) is traced by the project's "
                          "BVH only; use --traversal bvh");
-    if (settings.guiding && settings.pixelList)
-        throw UsageError("--guiding does not combine with --target-error yet");
     variant.guiding = settings.guiding;
     const VkPhysicalDeviceLimits& limits = context.properties().limits;
     const uint64_t pageBytes =
@@ -404,20 +402,13 @@ void WavefrontRenderer::renderGuided(uint32_t budget,
         clearFilm();
         const auto start = std::chrono::steady_clock::now();
         renderSamples(spp);
-        RenderStats::GuideIterationStats it;
-        it.samplesPerPixel = spp;
-        it.seconds =
+        const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         const auto host = std::chrono::steady_clock::now();
         if (combine)
             combiner.add(readMoments(), spp);
-        it.rebuildSeconds = guide_->endIteration(iteration);
         hostSince(host);
-        guiding::SDTreeStats tree = guide_->tree().stats(settings_.guideBsdfFraction);
-        it.spatialLeaves = tree.spatialLeaves;
-        it.directionalNodes = tree.samplingNodes;
-        it.meanBsdfFraction = tree.meanBsdfFraction;
-        stats_.guideIterations.push_back(it);
+        endGuideIteration(iteration, spp, seconds);
         if (onWave)
             onWave({samplesDone_, budget, stats_.seconds});
     }
@@ -448,6 +439,28 @@ void WavefrontRenderer::renderGuided(uint32_t budget,
         stats_.guideWeights = image.weights;
     }
     hostSince(host);
+}
+
+const RenderStats::GuideIterationStats&
+WavefrontRenderer::endGuideIteration(uint32_t iteration, uint32_t spp, double seconds) {
+    if (!guide_)
+        throw InternalError("endGuideIteration: the renderer was made without guiding");
+    const auto host = std::chrono::steady_clock::now();
+    RenderStats::GuideIterationStats it;
+    it.samplesPerPixel = spp;
+    it.seconds = seconds;
+    it.rebuildSeconds = guide_->endIteration(iteration);
+    const guiding::SDTreeStats tree = guide_->tree().stats(settings_.guideBsdfFraction);
+    it.spatialLeaves = tree.spatialLeaves;
+    it.directionalNodes = tree.samplingNodes;
+    it.meanBsdfFraction = tree.meanBsdfFraction;
+    stats_.guideIterations.push_back(it);
+    // Host work between iterations counts in the render's time, as a pass of its own.
+    const double hostSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - host).count();
+    stats_.seconds += hostSeconds;
+    stats_.passMilliseconds["guide (host)"] += 1000.0 * hostSeconds;
+    return stats_.guideIterations.back();
 }
 
 void WavefrontRenderer::clearFilm() {

@@ -56,6 +56,11 @@ public:
     void renderGuided(uint32_t budget,
                       const std::function<void(const WaveProgress&)>& onWave = {},
                       const std::atomic<bool>* stop = nullptr);
+    // Guided renderers: ends training iteration `iteration` (0-based) of `spp` samples per
+    // pixel that took `seconds`: the guide rebuilds from its splats (host time counted in the
+    // stats). Returns the iteration's statistics, also appended to stats().guideIterations.
+    const RenderStats::GuideIterationStats& endGuideIteration(uint32_t iteration, uint32_t spp,
+                                                              double seconds);
     // Progressive use (the viewer): adds `samples` more samples per pixel, in as many waves as
     // needed, and returns the total so far.
     uint32_t renderSamples(uint32_t samples);

@@ -71,12 +71,20 @@ expect "slurm: merged" test -s "$work/farm.exr"
 expect "slurm: parts guided" grep -aq "guidingIterations" "$work/farm.exr.parts/frame_0_part_1.exr"
 expect "slurm: the flag reached the parts" grep -q -- "--guiding on" "$work/farm.exr.parts/part.sh"
 
-# Refusals: one line, exit 2.
-check "on + target-error" 2 "$wavefront" render "$box" -o "$work/x.exr" --guiding on \
-    --target-error 0.01 "${small[@]}"
-expect "on + target-error: one line" one_line_error
+# --target-error: the guide trains as the pilot (1, 2, 4, ... spp up to the pilot's 4 at
+# --spp 64), then the rounds sample it; auto stays off (the budget is unknown before the pilot).
+check "on + target-error" 0 "$wavefront" render "$caustic" -o "$work/te.exr" --guiding on \
+    --target-error 0.05 --spp 64 --width 32 --max-depth 4 --json "$work/te.json" --verbose
+expect "target-error: trained as the pilot" json_has "$work/te.json" \
+    "[i['spp'] for i in d['guiding']['iterations']][:3] == [1, 2, 4] and d['adaptive']['pilotSpp'] >= 4"
+expect "target-error: training within the image's budget" json_has "$work/te.json" \
+    "sum(i['spp'] for i in d['guiding']['iterations']) <= 4 + 0.5 * 64"
+expect "target-error: progress names the training" grep -q "training the guide, iteration 3 of 4 spp" \
+    "$work/stderr"
+expect "target-error: the EXR says guided" grep -aq "guidingIterations" "$work/te.exr"
 check "auto + target-error renders unguided" 0 "$wavefront" render "$box" -o "$work/x.exr" \
-    --guiding auto --target-error 0.05 --spp 16 "${small[@]}"
+    --guiding auto --target-error 0.05 --spp 16 "${small[@]}" --verbose
+expect "auto + target-error says why" grep -q "guiding auto: off with --target-error" "$work/stderr"
 
 # --time-limit: training keeps at most half of the limit, the image gets samples.
 check "on + time-limit" 0 "$wavefront" render "$caustic" -o "$work/tl.exr" --guiding on \

@@ -72,9 +72,11 @@ check "converge guided" 0 "$wavefront" converge "$cornell" -o "$work/conv3" \
     --max-depth 3 --no-plot -q
 expect "converge guided: a method of its own" json_has "$work/conv3/convergence.json" \
     "[m['name'] for m in d['methods']] == ['sobol+mis', 'sobol+mis+guided']"
-check "converge: guided with adaptive" 2 "$wavefront" converge "$cornell" -o "$work/c3" \
-    --methods sobol+guided+adaptive
-expect "guided with adaptive: one line" one_line_error
+check "converge: guided with adaptive" 0 "$wavefront" converge "$cornell" -o "$work/c4" \
+    --reference "$conv/reference.exr" --time 0.01 --max-spp 8 --methods sobol+guided+adaptive \
+    --max-depth 3 --no-plot -q
+expect "guided with adaptive: a method of its own" json_has "$work/c4/convergence.json" \
+    "[m['name'] for m in d['methods']] == ['sobol+mis+adaptive+guided']"
 check "converge: --guiding instead of the word" 2 "$wavefront" converge "$cornell" \
     -o "$work/c3" --guiding on
 expect "converge --guiding: one line" one_line_error

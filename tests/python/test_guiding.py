@@ -42,3 +42,13 @@ def test_renderer_wide_guiding_and_override():
 def test_bad_guiding_words():
     with pytest.raises(ValueError, match="guiding"):
         wf.Renderer(guiding="yes")
+
+
+def test_guided_target_error_trains_the_guide_as_the_pilot(renderer):
+    caustic = renderer.load(SCENES / "glass_caustic.gltf")
+    out = renderer.render(caustic, width=24, spp=64, max_depth=4, seed=3, guiding="on",
+                          target_error=0.05)
+    # The pilot is the training's iterations of 1, 2 and 4 spp (pilotSppFor(64) = 4).
+    assert out.stats["guiding"]["iterations"] >= 3
+    assert out.stats["adaptive"]["pilotSpp"] >= 4
+    assert np.isfinite(out.image).all() and out.image.mean() > 0
