@@ -306,6 +306,7 @@ int runRenderCommand(const std::vector<std::string>& args) {
     // trains its own over the samples it renders (each part unbiased, merged by sample count).
     const uint32_t resumedSpp = resumed ? resumed->spp : 0u;
     RenderSettings rest = settings;
+    rest.timePasses = parsed.has("--json"); // only the JSON reads the pass times
     rest.sppOffset += resumedSpp;
     rest.samplesPerPixel -= resumedSpp;
 

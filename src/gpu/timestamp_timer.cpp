@@ -6,9 +6,9 @@
 
 namespace wf {
 
-TimestampTimer::TimestampTimer(const Context& context, uint32_t maxPasses)
+TimestampTimer::TimestampTimer(const Context& context, uint32_t maxPasses, bool perPass)
     : device_(context.device()), capacity_(maxPasses + 1),
-      nanosecondsPerTick_(context.properties().limits.timestampPeriod) {
+      nanosecondsPerTick_(context.properties().limits.timestampPeriod), perPass_(perPass) {
     VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
     info.queryType = VK_QUERY_TYPE_TIMESTAMP;
     info.queryCount = capacity_;
@@ -33,6 +33,11 @@ void TimestampTimer::reset(VkCommandBuffer cmd) {
 // Bottom of pipe: written once every earlier command has finished, so a mark ends the pass
 // before it on any device.
 void TimestampTimer::mark(VkCommandBuffer cmd, const char* passName) {
+    if (!perPass_ && passName != nullptr) {
+        if (!names_.empty())
+            return; // one interval from the first mark to finish()
+        passName = "waves";
+    }
     if (names_.size() >= capacity_)
         throw InternalError("timestamp timer full: more than " + std::to_string(capacity_ - 1) +
                             " timed passes in one submit");

@@ -140,6 +140,7 @@ MethodRun runConvergence(const Context& context, const PreparedScene& scene,
     if (options.seeds.empty())
         throw InternalError("convergence: no seeds");
     RenderSettings settings = base;
+    settings.timePasses = false; // gpu_seconds needs the waves' GPU time only
     method.applyTo(settings);
     settings.samplesPerPixel = options.fixedCheckpoints.empty() ? options.maxSpp
                                                                 : options.fixedCheckpoints.back();

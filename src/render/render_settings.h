@@ -25,6 +25,10 @@ struct RenderSettings {
     // Waves are sized so that one submit takes about this long or less, so that a long render
     // never trips a GPU watchdog (0: waves of maxPathsPerWave regardless of time).
     double submitBudgetSeconds = 0.25;
+    // GPU time per pass in stats().passMilliseconds (bench, --json, the viewer, Python); false:
+    // one "waves" entry, the waves' GPU time, for renders that read no pass times (a plain
+    // render, converge), as timestamps cost lavapipe about 0.07 ms each (gpu/timestamp_timer.h).
+    bool timePasses = true;
     // Trace whole paths in one dispatch (shaders/megakernel.comp) instead of the wavefront's
     // passes: the baseline `wavefront bench` compares against. Same samples, same image.
     bool megakernel = false;

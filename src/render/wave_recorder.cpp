@@ -26,11 +26,11 @@ using gpu_types::QueueCounters;
 WaveRecorder::WaveRecorder(const Context& context, const ShaderCompiler& compiler,
                            const ShaderDefines& defines, const DescriptorTable& table,
                            const Buffer& counters, const ShaderVariant& variant,
-                           bool megakernel, uint32_t maxDepth)
+                           bool megakernel, uint32_t maxDepth, bool timePasses)
     : counters_(counters), maxDepth_(maxDepth) {
     // Four passes per depth (with shade bins, a shade pass per bin), plus raygen and accumulate.
     const uint32_t passesPerDepth = 3 + std::max(variant.shadeBins(), 1u);
-    timer_ = std::make_unique<TimestampTimer>(context, passesPerDepth * maxDepth + 2);
+    timer_ = std::make_unique<TimestampTimer>(context, passesPerDepth * maxDepth + 2, timePasses);
 
     PassResources resources{context, compiler, defines, table, counters, *timer_,
                             variant.rayTracing && !megakernel};

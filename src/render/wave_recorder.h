@@ -37,7 +37,7 @@ public:
     WaveRecorder(const Context& context, const ShaderCompiler& compiler,
                  const ShaderDefines& defines, const DescriptorTable& table,
                  const Buffer& counters, const ShaderVariant& variant, bool megakernel,
-                 uint32_t maxDepth);
+                 uint32_t maxDepth, bool timePasses);
     ~WaveRecorder();
 
     void record(VkCommandBuffer cmd, const gpu_types::PassConstants& wave) const;

@@ -111,7 +111,8 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
     bindTables();
     waves_ = std::make_unique<WaveRecorder>(context, compiler, defines_, *table_,
                                             pathBuffers_->counters, variant_,
-                                            settings.megakernel, settings.maxDepth);
+                                            settings.megakernel, settings.maxDepth,
+                                            settings.timePasses);
 
     camera_ = scene.camera;
     uploadParams();
