@@ -14,37 +14,56 @@ float guideLeafFraction(uint node) {
     return learnt > 0.0 ? learnt : guide.bsdfFraction;
 }
 
+// A path's word in guideCounts: how many records it keeps, and what its latest record still
+// waits for, so that the path's later vertices read this word alone, not the record.
+#define WF_GUIDE_COUNT_MASK 0xffu
+#define WF_GUIDE_AWAITS_RADIANCE 0x100u // its radiance before: the next shade pass takes it
+#define WF_GUIDE_AWAITS_HIT 0x200u      // then the point its ray hit, if any
+
 // The path starts: no records.
 void guideStartPath(uint path) {
     if (guide.training != 0u)
         guideCounts[path] = 0u;
 }
 
-// The slot of the path's latest training record, or WF_GUIDE_NO_RECORD (not training, or none).
-#define WF_GUIDE_NO_RECORD 0xffffffffu
-uint guideLatestRecord(uint path) {
-    if (guide.training == 0u)
-        return WF_GUIDE_NO_RECORD;
-    uint count = guideCounts[path];
-    return count == 0u ? WF_GUIDE_NO_RECORD : path * WF_GUIDE_RECORDS + count - 1u;
+// The slot of record k of a path: records of one index lie together, path after path, so that
+// the lanes of a SIMD group (consecutive paths) touch neighbouring records and most paths'
+// only record (the camera's vertex) spans a quarter of the buffer: in path-major order every
+// access of a wave's records was a TLB miss in a buffer of 2^19 x 256 bytes.
+uint guideRecordSlot(uint path, uint k) {
+    return k * params.pathCapacity + path;
+}
+
+// The slot of the path's latest training record, given the path's word (a count >= 1).
+uint guideLatestSlot(uint path, uint word) {
+    return guideRecordSlot(path, (word & WF_GUIDE_COUNT_MASK) - 1u);
 }
 
 // Before a vertex adds its emission: the previous guided vertex's own light (its NEE) is in
 // the path's radiance by now, and nothing that arrived along its sampled direction is yet.
 void guideTakeRadianceBefore(uint path, vec3 pathRadiance) {
-    uint slot = guideLatestRecord(path);
-    if (slot != WF_GUIDE_NO_RECORD && guideRecords[slot].hitDistance < 0.0) {
+    if (guide.training == 0u)
+        return;
+    uint word = guideCounts[path];
+    if ((word & WF_GUIDE_AWAITS_RADIANCE) != 0u) {
+        uint slot = guideLatestSlot(path, word);
         guideRecords[slot].radianceBefore = pathRadiance;
-        guideRecords[slot].hitDistance = 0.0;
+        guideRecords[slot].hitDistance = 0.0; // a ray that left the scene keeps 0
+        guideCounts[path] = (word & WF_GUIDE_COUNT_MASK) | WF_GUIDE_AWAITS_HIT;
     }
 }
 
 // The vertex just shaded lies at p: the record whose ray found it (its radiance before just
 // taken) keeps how far its radiance came from.
 void guideTakeHitPoint(uint path, vec3 p) {
-    uint slot = guideLatestRecord(path);
-    if (slot != WF_GUIDE_NO_RECORD && guideRecords[slot].hitDistance == 0.0)
+    if (guide.training == 0u)
+        return;
+    uint word = guideCounts[path];
+    if ((word & WF_GUIDE_AWAITS_HIT) != 0u) {
+        uint slot = guideLatestSlot(path, word);
         guideRecords[slot].hitDistance = max(length(p - guideRecords[slot].position), 1e-6);
+        guideCounts[path] = word & WF_GUIDE_COUNT_MASK;
+    }
 }
 
 // What the guide at spatial node `node` needs at a vertex at p: the vertex's offset from the
@@ -60,7 +79,7 @@ void guideKeepRecord(uint path, vec3 p, vec3 wi, float pdf, vec3 beta, float bsd
                      float guidePdf, float fCos) {
     if (guide.training == 0u)
         return;
-    uint count = guideCounts[path];
+    uint count = guideCounts[path] & WF_GUIDE_COUNT_MASK;
     if (count >= WF_GUIDE_RECORDS || !(pdf > 0.0))
         return;
     GuideRecord r;
@@ -74,8 +93,8 @@ void guideKeepRecord(uint path, vec3 p, vec3 wi, float pdf, vec3 beta, float bsd
     r.guidePdf = guidePdf;
     r.radianceBefore = vec3(0.0);
     r.fCos = fCos;
-    guideRecords[path * WF_GUIDE_RECORDS + count] = r;
-    guideCounts[path] = count + 1u;
+    guideRecords[guideRecordSlot(path, count)] = r;
+    guideCounts[path] = (count + 1u) | WF_GUIDE_AWAITS_RADIANCE;
 }
 
 // Adds value (>= 0) to a building cell: 64-bit fixed point in two words, the carry added by
@@ -109,9 +128,9 @@ void guideAddMoment(uint index, float value) {
 void guideSplatPath(uint path, vec3 pathRadiance) {
     if (guide.training == 0u)
         return;
-    uint count = min(guideCounts[path], WF_GUIDE_RECORDS);
+    uint count = min(guideCounts[path] & WF_GUIDE_COUNT_MASK, WF_GUIDE_RECORDS);
     for (uint k = 0u; k < count; ++k) {
-        GuideRecord r = guideRecords[path * WF_GUIDE_RECORDS + k];
+        GuideRecord r = guideRecords[guideRecordSlot(path, k)];
         if (r.hitDistance < 0.0)
             continue;
         vec3 after = max(pathRadiance - r.radianceBefore, vec3(0.0)) * r.scale;
