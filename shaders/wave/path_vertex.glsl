@@ -261,7 +261,9 @@ void shadePathVertex(inout PathVertex v) {
 #else
                 float directionPdf = bsdfPdf(bsdf, woLocal, wiLocal);
 #endif
-                if (guideHere)
+                // A leaf at share 1 (still walking while training, for its records) weighs the
+                // BSDF's pdf alone: its walk here would be multiplied by 0.
+                if (guideHere && guideFraction < 1.0)
                     directionPdf = guideMixturePdf(
                         directionPdf,
                         guidePdfAt(guideRoot, guideOffset, guideRadius, light.direction),
