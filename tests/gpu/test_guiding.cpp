@@ -49,16 +49,13 @@ void expectGuidedUnbiased(const std::string& name, bool combine = true, bool all
         EXPECT_EQ(result.stats.nonFiniteSamples, 0u);
         EXPECT_EQ(result.stats.guideIterations.size(), 5u); // 1+2+4+8+16, then 33 spp
         if (combine) {
-            // Inverse-variance weights over the iterations of 2 spp and more, summing to 1.
-            EXPECT_EQ(result.stats.guideFinalSamples, 63u);
+            // Every iteration weighs by its samples: the image is the mean of all 64.
+            EXPECT_EQ(result.stats.guideFinalSamples, 64u);
             const std::vector<double>& w = result.stats.guideWeights;
-            EXPECT_EQ(w.size(), 6u);
-            double sum = 0.0;
-            for (size_t k = 0; k < w.size(); ++k) {
-                EXPECT_EQ(w[k] > 0.0, k > 0) << "iteration " << k;
-                sum += w[k];
-            }
-            EXPECT_NEAR(sum, 1.0, 1e-9);
+            ASSERT_EQ(w.size(), 6u);
+            const uint32_t spp[] = {1, 2, 4, 8, 16, 33};
+            for (size_t k = 0; k < w.size(); ++k)
+                EXPECT_NEAR(w[k], spp[k] / 64.0, 1e-12) << "iteration " << k;
         } else {
             EXPECT_EQ(result.stats.guideFinalSamples, 33u);
             EXPECT_TRUE(result.stats.guideWeights.empty());
@@ -74,7 +71,8 @@ void expectGuidedUnbiased(const std::string& name, bool combine = true, bool all
 TEST(Guiding, CornellBoxUnbiased) { expectGuidedUnbiased("cornell_box"); }
 
 // The glass caustic's fireflies are where weights estimated from the images' own samples
-// could bias a combination: an iteration that caught one weighs less.
+// biased the combination (an iteration that caught one weighed less); these 8 seeds did not
+// show it (tests/unit/test_guide_combination.cpp does).
 TEST(Guiding, GlassCausticUnbiased) { expectGuidedUnbiased("glass_caustic"); }
 
 TEST(Guiding, LastIterationAloneUnbiased) { expectGuidedUnbiased("cornell_box", false); }

@@ -18,9 +18,8 @@ def test_guided_render_matches_the_cli(renderer, tmp_path):
     caustic = renderer.load(SCENES / "glass_caustic.gltf")
     out = renderer.render(caustic, width=24, spp=16, max_depth=4, seed=3, guiding="on")
     assert out.stats["guidingDecision"] == "on (asked)"
-    # Iterations of 1, 2, 4 spp, then 9: the image combines all but the 1-spp one by inverse
-    # variance (2 + 4 + 9 samples).
-    assert out.stats["guiding"]["iterations"] == 3 and out.stats["guiding"]["imageSpp"] == 15
+    # Iterations of 1, 2, 4 spp, then 9: the image is the mean of all 16 samples.
+    assert out.stats["guiding"]["iterations"] == 3 and out.stats["guiding"]["imageSpp"] == 16
     assert np.isfinite(out.image).all() and out.image.mean() > 0
     path = tmp_path / "guided.exr"
     run_cli("render", SCENES / "glass_caustic.gltf", "-o", path, "--quiet", "--width", "24",

@@ -1,7 +1,8 @@
-// The inverse-variance combination of a guided render's iterations
-// (src/render/guiding/guide_combination.cpp): weights inverse to each image's relative
-// variance and summing to one, single-sample images left out, and the combined film's mean and
-// variance of the mean those of the weighted sum.
+// The combination of a guided render's iterations (src/render/guiding/guide_combination.cpp):
+// weights that are the iterations' shares of the samples, whatever the images hold, so that
+// rare bright samples keep their weight (heavy-tailed images combine to their expectation,
+// which inverse-variance weights estimated from the images did not), and the combined film's
+// mean and variance of the mean those of the weighted sum.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -37,19 +38,64 @@ FilmMoments film(uint32_t spp, float mean, float sigma, std::mt19937& rng) {
     return m;
 }
 
-TEST(GuideCombination, WeighsByInverseVarianceAndLeavesOutSingleSamples) {
+TEST(GuideCombination, WeighsBySamplesWhateverTheImagesHold) {
     std::mt19937 rng(3);
     ImageCombiner combiner(kPixels);
-    combiner.add(film(1, 1.0f, 0.5f, rng), 1);   // no variance estimate: left out
-    combiner.add(film(4, 1.0f, 2.0f, rng), 4);   // variance of the mean 1.0
-    combiner.add(film(16, 1.0f, 1.0f, rng), 16); // 1/16: weight 16x the one before
+    combiner.add(film(1, 1.0f, 0.5f, rng), 1);
+    combiner.add(film(4, 1.0f, 20.0f, rng), 4); // far noisier: the same weight per sample
+    combiner.add(film(16, 1.0f, 1.0f, rng), 16);
     const CombinedImage image = combiner.combine();
     ASSERT_EQ(image.weights.size(), 3u);
-    EXPECT_EQ(image.weights[0], 0.0);
-    EXPECT_NEAR(image.weights[1] + image.weights[2], 1.0, 1e-12);
-    EXPECT_NEAR(image.weights[2] / image.weights[1], 16.0, 16.0 * 0.25); // estimated variances
-    EXPECT_EQ(image.samplesPerPixel, 20u);
-    EXPECT_EQ(image.film[3], 20.0f);
+    EXPECT_NEAR(image.weights[0], 1.0 / 21.0, 1e-12);
+    EXPECT_NEAR(image.weights[1], 4.0 / 21.0, 1e-12);
+    EXPECT_NEAR(image.weights[2], 16.0 / 21.0, 1e-12);
+    EXPECT_EQ(image.samplesPerPixel, 21u);
+    EXPECT_EQ(image.film[3], 21.0f);
+}
+
+// Images whose pixels are 0 but for rare bright samples (a caustic's fireflies): over many
+// renders the combination's mean is the truth within 5 standard errors. Weights that fall
+// where an image caught a bright sample (inverse variance estimated from it) under-count
+// them: with those, this fails (about 30% low).
+TEST(GuideCombination, RareBrightSamplesKeepTheirWeight) {
+    std::mt19937 rng(6);
+    std::bernoulli_distribution bright(0.002);
+    constexpr double kValue = 50.0, kTruth = kValue * 0.002;
+    auto fireflies = [&](uint32_t spp) {
+        FilmMoments m;
+        m.sum.assign(kPixels * 3, 0.0f);
+        m.squares.assign(kPixels * 3, 0.0f);
+        m.count.assign(kPixels, float(spp));
+        m.largest.assign(kPixels, 0.0f);
+        for (uint32_t p = 0; p < kPixels; ++p)
+            for (uint32_t s = 0; s < spp; ++s)
+                if (bright(rng))
+                    for (int c = 0; c < 3; ++c) {
+                        m.sum[3 * p + c] += float(kValue);
+                        m.squares[3 * p + c] += float(kValue * kValue);
+                        m.largest[p] = float(kValue);
+                    }
+        return m;
+    };
+    constexpr int kRenders = 400;
+    double sum = 0.0, squares = 0.0;
+    for (int r = 0; r < kRenders; ++r) {
+        ImageCombiner combiner(kPixels);
+        combiner.add(fireflies(2), 2);
+        combiner.add(fireflies(4), 4);
+        combiner.add(fireflies(8), 8);
+        const CombinedImage image = combiner.combine();
+        double mean = 0.0;
+        for (uint32_t p = 0; p < kPixels; ++p)
+            mean += image.film[4 * p] / image.film[4 * p + 3];
+        mean /= kPixels;
+        sum += mean;
+        squares += mean * mean;
+    }
+    const double mean = sum / kRenders;
+    const double standardError =
+        std::sqrt((squares / kRenders - mean * mean) / (kRenders - 1));
+    EXPECT_NEAR(mean, kTruth, 5.0 * standardError);
 }
 
 TEST(GuideCombination, FilmCarriesTheWeightedMeanAndItsVariance) {
@@ -72,8 +118,7 @@ TEST(GuideCombination, FilmCarriesTheWeightedMeanAndItsVariance) {
 }
 
 // Images of equal expectation combine to that expectation: the mean over many pixels of the
-// combination agrees with the truth within 5 standard errors, and is closer than the noisier
-// image's alone.
+// combination agrees with the truth within 5 standard errors.
 TEST(GuideCombination, CombinationKeepsTheExpectation) {
     std::mt19937 rng(5);
     ImageCombiner combiner(kPixels);
@@ -89,7 +134,6 @@ TEST(GuideCombination, CombinationKeepsTheExpectation) {
     }
     const double mean = sum / kPixels, standardError = std::sqrt(variance) / kPixels;
     EXPECT_NEAR(mean, 0.5, 5.0 * standardError);
-    EXPECT_LT(standardError, 0.5 / std::sqrt(16.0 * kPixels)); // better than the best alone
 }
 
 } // namespace

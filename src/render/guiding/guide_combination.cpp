@@ -25,59 +25,15 @@ void ImageCombiner::add(const FilmMoments& moments, uint32_t spp) {
     images_.push_back(std::move(it));
 }
 
-std::vector<double> ImageCombiner::denominators() const {
-    std::vector<double> mean(size_t(pixels_) * 3, 0.0);
-    double total = 0.0;
-    for (const Iteration& it : images_) {
-        for (size_t i = 0; i < mean.size(); ++i)
-            mean[i] += double(it.spp) * it.mean[i];
-        total += it.spp;
-    }
-    for (double& m : mean) {
-        m = total > 0.0 ? m / total : 0.0;
-        m = m * m + 0.01;
-    }
-    return mean;
-}
-
-std::vector<double> ImageCombiner::relativeVariances() const {
-    const std::vector<double> denominator = denominators();
-    std::vector<double> out;
-    for (const Iteration& it : images_) {
-        double sum = 0.0;
-        if (it.spp >= 2)
-            for (size_t i = 0; i < denominator.size(); ++i)
-                sum += it.variance[i] / denominator[i];
-        out.push_back(sum / double(std::max<size_t>(1, denominator.size())));
-    }
-    return out;
-}
-
 CombinedImage ImageCombiner::combine() const {
     CombinedImage out;
-    const std::vector<double> variances = relativeVariances();
     double weightSum = 0.0;
-    for (size_t k = 0; k < images_.size(); ++k) {
-        // A zero variance (a black image) has no noise to weigh: give it the weight its
-        // samples would have among the others, by the spp.
-        const double w = images_[k].spp < 2 ? 0.0
-                         : variances[k] > 0.0 ? 1.0 / variances[k]
-                                              : 0.0;
-        out.weights.push_back(w);
-        weightSum += w;
+    for (const Iteration& it : images_) {
+        out.weights.push_back(it.spp);
+        weightSum += it.spp;
     }
-    if (!(weightSum > 0.0)) {
-        // No variance anywhere (black images, or single samples): weigh by samples instead.
-        out.weights.assign(images_.size(), 0.0);
-        for (size_t k = 0; k < images_.size(); ++k)
-            if (images_[k].spp >= 2 || images_.size() == 1)
-                out.weights[k] = images_[k].spp;
-        weightSum = 0.0;
-        for (double w : out.weights)
-            weightSum += w;
-        if (!(weightSum > 0.0))
-            return out;
-    }
+    if (!(weightSum > 0.0))
+        return out;
     for (double& w : out.weights)
         w /= weightSum;
     for (size_t k = 0; k < images_.size(); ++k)
