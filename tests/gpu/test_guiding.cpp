@@ -1,7 +1,7 @@
 // Path guiding (render/guiding/, WF_GUIDING): guided renders agree with unguided ones per 8x8
 // region within 5 standard errors over seeds (on the Cornell box, the glass caustic scene and
 // with a deliberately wrong frozen guide or parallax: unbiased, only noisier), whether the image combines
-// every iteration by inverse variance (the default) or keeps the last one, a seed gives the
+// every iteration by its samples (the default) or keeps the last one, a seed gives the
 // same image twice, and no sample is NaN or Inf.
 #include <gtest/gtest.h>
 
