@@ -53,7 +53,7 @@ std::vector<OptionSpec> samplingOptions() {
                                   "Trains an SD-tree over 1, 2, 4, ... spp (within "
                                   "--time-limit), each spatial leaf learning its BSDF share, "
                                   "the image from the rest, the iterations' images weighed by "
-                                  "inverse variance; a --resume trains its own guide; with "
+                                  "their samples; a --resume trains its own guide; with "
                                   "--target-error the guide trains as the pilot and the rounds "
                                   "sample it frozen"},
         {"--sampler", "", "NAME", "sample pattern: independent, stratified, multijitter, "

@@ -81,8 +81,8 @@ struct RenderSettings {
     // guide over iterations of 1, 2, 4, ... spp while the last iteration keeps at least half
     // of samplesPerPixel, then renders the rest with the frozen guide. Sample indices
     // continue across iterations. The image: guideCombineIterations, every iteration's image
-    // weighted by its inverse variance (render/guiding/guide_combination.h); else the last
-    // iteration's alone.
+    // weighted by its samples, the mean of all (render/guiding/guide_combination.h); else the
+    // last iteration's alone.
     bool guiding = false;
     bool guideCombineIterations = true;
     float guideBsdfFraction = 0.5f; // the BSDF's share of the one-sample mixture
