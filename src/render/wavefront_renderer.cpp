@@ -384,15 +384,6 @@ void WavefrontRenderer::renderGuided(uint32_t budget,
     auto elapsed = [&]() {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
     };
-    // Host work between iterations (tree rebuilds, reading films back, the combination)
-    // counts in the render's time, as a pass of its own.
-    auto hostSince = [this](std::chrono::steady_clock::time_point start) {
-        const double seconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        stats_.seconds += seconds;
-        stats_.passMilliseconds["guide (host)"] += 1000.0 * seconds;
-        return seconds;
-    };
     const bool combine = settings_.guideCombineIterations && pathBuffers_->momentFilm;
     guiding::ImageCombiner combiner(pixelCount_);
     guide_->setTraining(true);
@@ -408,7 +399,7 @@ void WavefrontRenderer::renderGuided(uint32_t budget,
         const auto host = std::chrono::steady_clock::now();
         if (combine)
             combiner.add(readMoments(), spp);
-        hostSince(host);
+        countGuideHostTime(host);
         endGuideIteration(iteration, spp, seconds);
         if (onWave)
             onWave({samplesDone_, budget, stats_.seconds});
@@ -439,7 +430,7 @@ void WavefrontRenderer::renderGuided(uint32_t budget,
         stats_.guideFinalSamples = image.samplesPerPixel;
         stats_.guideWeights = image.weights;
     }
-    hostSince(host);
+    countGuideHostTime(host);
 }
 
 const RenderStats::GuideIterationStats&
@@ -456,12 +447,17 @@ WavefrontRenderer::endGuideIteration(uint32_t iteration, uint32_t spp, double se
     it.directionalNodes = tree.samplingNodes;
     it.meanBsdfFraction = tree.meanBsdfFraction;
     stats_.guideIterations.push_back(it);
-    // Host work between iterations counts in the render's time, as a pass of its own.
-    const double hostSeconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - host).count();
-    stats_.seconds += hostSeconds;
-    stats_.passMilliseconds["guide (host)"] += 1000.0 * hostSeconds;
+    countGuideHostTime(host);
     return stats_.guideIterations.back();
+}
+
+// Host work between training iterations (tree rebuilds, reading films back, the combination)
+// counts in the render's time, as a pass of its own.
+void WavefrontRenderer::countGuideHostTime(std::chrono::steady_clock::time_point start) {
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    stats_.seconds += seconds;
+    stats_.passMilliseconds["guide (host)"] += 1000.0 * seconds;
 }
 
 void WavefrontRenderer::clearFilm() {

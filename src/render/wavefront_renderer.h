@@ -7,6 +7,7 @@
 // What a wave records is wave_recorder.h's; reading the film back, film_readback.h's.
 #pragma once
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -124,6 +125,7 @@ public:
     }
 
 private:
+    void countGuideHostTime(std::chrono::steady_clock::time_point start);
     ShaderVariant variantFor(const PreparedScene& scene) const;
     void bindTables();
     void uploadParams();

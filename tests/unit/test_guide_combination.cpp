@@ -5,6 +5,7 @@
 // mean and variance of the mean those of the weighted sum.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <random>
 
@@ -18,24 +19,34 @@ using wf::guiding::ImageCombiner;
 
 constexpr uint32_t kPixels = 400;
 
-// A film of `spp` samples per pixel, each pixel's samples normal around `mean` with standard
-// deviation `sigma`, drawn with `rng`.
-FilmMoments film(uint32_t spp, float mean, float sigma, std::mt19937& rng) {
-    std::normal_distribution<float> sample(mean, sigma);
+// A film of `spp` samples per pixel, each sample's rgb from draw().
+template <typename Draw>
+FilmMoments filmOf(uint32_t spp, Draw draw) {
     FilmMoments m;
     m.sum.assign(kPixels * 3, 0.0f);
     m.squares.assign(kPixels * 3, 0.0f);
     m.count.assign(kPixels, float(spp));
     m.largest.assign(kPixels, 0.0f);
     for (uint32_t p = 0; p < kPixels; ++p)
-        for (uint32_t s = 0; s < spp; ++s)
+        for (uint32_t s = 0; s < spp; ++s) {
+            const std::array<float, 3> rgb = draw();
             for (int c = 0; c < 3; ++c) {
-                float x = sample(rng);
-                m.sum[3 * p + c] += x;
-                m.squares[3 * p + c] += x * x;
-                m.largest[p] = std::max(m.largest[p], x);
+                m.sum[3 * p + c] += rgb[c];
+                m.squares[3 * p + c] += rgb[c] * rgb[c];
+                m.largest[p] = std::max(m.largest[p], rgb[c]);
             }
+        }
     return m;
+}
+
+// A film whose samples are normal around `mean` with standard deviation `sigma`, drawn with
+// `rng`, each channel on its own.
+FilmMoments film(uint32_t spp, float mean, float sigma, std::mt19937& rng) {
+    std::normal_distribution<float> sample(mean, sigma);
+    return filmOf(spp, [&]() {
+        const float r = sample(rng), g = sample(rng), b = sample(rng);
+        return std::array<float, 3>{r, g, b};
+    });
 }
 
 TEST(GuideCombination, WeighsBySamplesWhateverTheImagesHold) {
@@ -62,20 +73,10 @@ TEST(GuideCombination, RareBrightSamplesKeepTheirWeight) {
     std::bernoulli_distribution bright(0.002);
     constexpr double kValue = 50.0, kTruth = kValue * 0.002;
     auto fireflies = [&](uint32_t spp) {
-        FilmMoments m;
-        m.sum.assign(kPixels * 3, 0.0f);
-        m.squares.assign(kPixels * 3, 0.0f);
-        m.count.assign(kPixels, float(spp));
-        m.largest.assign(kPixels, 0.0f);
-        for (uint32_t p = 0; p < kPixels; ++p)
-            for (uint32_t s = 0; s < spp; ++s)
-                if (bright(rng))
-                    for (int c = 0; c < 3; ++c) {
-                        m.sum[3 * p + c] += float(kValue);
-                        m.squares[3 * p + c] += float(kValue * kValue);
-                        m.largest[p] = float(kValue);
-                    }
-        return m;
+        return filmOf(spp, [&]() {
+            const float x = bright(rng) ? float(kValue) : 0.0f;
+            return std::array<float, 3>{x, x, x};
+        });
     };
     constexpr int kRenders = 400;
     double sum = 0.0, squares = 0.0;
