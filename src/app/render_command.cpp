@@ -21,6 +21,7 @@
 #include "render/adaptive_sampling.h"
 #include "render/film_error.h"
 #include "render/gpu_scene/scene_buffers.h"
+#include "render/guiding/guiding_schedule.h"
 #include "render/wavefront_renderer.h"
 #include "scene/scene_summary.h"
 
@@ -119,22 +120,28 @@ void reportGuiding(bool verbose, const RenderStats& stats, StatsContext& statsCo
         training += it.seconds + it.rebuildSeconds;
         if (verbose)
             std::fprintf(stderr, "wavefront: guiding iteration %zu: %u spp, %llu spatial leaves, "
-                                 "%llu directional nodes, BSDF share %.2f, %.3f s render + "
-                                 "%.3f s rebuild\n",
+                                 "%llu directional nodes, BSDF share %.2f (%llu leaves sample "
+                                 "the guide), %.3f s render + %.3f s rebuild\n",
                          i, it.samplesPerPixel, static_cast<unsigned long long>(it.spatialLeaves),
                          static_cast<unsigned long long>(it.directionalNodes),
-                         it.meanBsdfFraction, it.seconds, it.rebuildSeconds);
+                         it.meanBsdfFraction, static_cast<unsigned long long>(it.guidedLeaves),
+                         it.seconds, it.rebuildSeconds);
         iterations += std::string(i ? ", " : "") + "{\"spp\": " +
                       std::to_string(it.samplesPerPixel) + ", \"spatialLeaves\": " +
                       std::to_string(it.spatialLeaves) + ", \"directionalNodes\": " +
                       std::to_string(it.directionalNodes) + ", \"bsdfFraction\": " +
-                      jsonNumber(it.meanBsdfFraction) + ", \"seconds\": " +
+                      jsonNumber(it.meanBsdfFraction) + ", \"guidedLeaves\": " +
+                      std::to_string(it.guidedLeaves) + ", \"seconds\": " +
                       jsonNumber(it.seconds) + ", \"rebuildSeconds\": " +
                       jsonNumber(it.rebuildSeconds) + "}";
     }
     std::string weights;
     for (size_t i = 0; i < stats.guideWeights.size(); ++i)
         weights += std::string(i ? ", " : "") + jsonNumber(stats.guideWeights[i]);
+    if (verbose && stats.guideStoppedUnused)
+        std::fprintf(stderr, "wavefront: guiding: training stopped: in %u iterations in a row "
+                             "every leaf learnt BSDF share 1 (the guide does not pay here)\n",
+                     guiding::kUnusedIterationsToStop);
     if (verbose)
         std::fprintf(stderr, "wavefront: guiding: %.3f s training, the image from %u spp (%s)\n",
                      training, stats.guideFinalSamples,
@@ -142,7 +149,9 @@ void reportGuiding(bool verbose, const RenderStats& stats, StatsContext& statsCo
                                      : ("iterations weighted " + weights).c_str());
     statsContext.extraFields.push_back(
         {"guiding", "{\"iterations\": [" + iterations + "], \"trainingSeconds\": " +
-                        jsonNumber(training) + ", \"weights\": [" + weights + "]" +
+                        jsonNumber(training) + ", \"stoppedUnused\": " +
+                        (stats.guideStoppedUnused ? "true" : "false") +
+                        ", \"weights\": [" + weights + "]" +
                         ", \"imageSpp\": " +
                         std::to_string(stats.guideFinalSamples) + ", \"memoryBytes\": " +
                         std::to_string(stats.guideBytes) + "}"});

@@ -51,8 +51,10 @@ std::vector<OptionSpec> samplingOptions() {
                                   "measured rule of docs/guiding.md predicts a gain; on "
                                   "lavapipe it predicts none). "
                                   "Trains an SD-tree over 1, 2, 4, ... spp (within "
-                                  "--time-limit), each spatial leaf learning its BSDF share, "
-                                  "the image from the rest, the iterations' images weighed by "
+                                  "--time-limit), each spatial leaf learning its BSDF share "
+                                  "(training stops once every leaf learnt share 1 in two "
+                                  "iterations in a row: the guide does not pay there), the "
+                                  "image from the rest, the iterations' images weighed by "
                                   "their samples; a --resume trains its own guide; with "
                                   "--target-error the guide trains as the pilot and the rounds "
                                   "sample it frozen"},

@@ -9,6 +9,7 @@
 #include "errors.h"
 #include "image/error_metrics.h"
 #include "render/film_error.h"
+#include "render/guiding/guiding_schedule.h"
 #include "render/guiding/path_guide.h"
 
 namespace wf {
@@ -196,8 +197,10 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 // a guide one iteration older than the frozen one, so the allocation errs towards more
 // samples). Before each image round it trains on while its samples stay within that round's
 // mean spp (the image at least half of the total, as in a guided render), within half of
-// maxSpp and within the time limit, so the guide keeps up with the rounds' doubling. Every
-// round samples the guide as frozen then; each round's samples are independent of it.
+// maxSpp and within the time limit, so the guide keeps up with the rounds' doubling, unless
+// the learnt shares stopped it (guiding::UnusedGuideStop; the pilot's iterations run
+// regardless). Every round samples the guide as frozen then; each round's samples are
+// independent of it.
 class AdaptiveGuide {
 public:
     AdaptiveGuide(WavefrontRenderer& renderer, const std::vector<uint32_t>& everyPixel,
@@ -224,7 +227,7 @@ public:
         for (;;) {
             const uint64_t after = uint64_t(trained_) + nextSpp_;
             const double pace = total.seconds / std::max<double>(total.paths, 1);
-            if (double(after) > meanSpp || 2 * after > maxSpp ||
+            if (unused_.stopped() || double(after) > meanSpp || 2 * after > maxSpp ||
                 overTime(double(nextSpp_) * renderer_.pixelCount() * pace))
                 return;
             if (!restarted) { // the pilot's stream again, its sample indices continuing
@@ -240,6 +243,8 @@ public:
         }
     }
 
+    bool stoppedUnused() const { return unused_.stopped(); }
+
     // After the renderer restarted for an image round: sample the frozen guide.
     void freeze() { renderer_.guide()->setTree(tree_); }
 
@@ -253,7 +258,8 @@ private:
         renderer_.renderPixelList(everyPixel_, trained_, nextSpp_);
         const double seconds = secondsSince(start);
         FilmMoments moments = renderer_.readMoments();
-        renderer_.endGuideIteration(iteration_, nextSpp_, seconds);
+        unused_.endIteration(
+            renderer_.endGuideIteration(iteration_, nextSpp_, seconds).guidedLeaves > 0);
         guide.setTraining(false);
         tree_ = guide.tree();
         trained_ += nextSpp_;
@@ -270,6 +276,7 @@ private:
     uint32_t pilotSeed_;
     const std::function<void(const AdaptiveProgress&)>& onRound_;
     guiding::SDTree tree_;
+    guiding::UnusedGuideStop unused_; // the pilot's iterations count, but always run
     uint32_t trained_ = 0;  // samples per pixel so far, all with the pilot's seed
     uint32_t nextSpp_ = 1;
     uint32_t iteration_ = 0;
@@ -384,6 +391,7 @@ AdaptiveResult renderAdaptive(WavefrontRenderer& renderer, uint32_t seed,
         if (guide) {
             result.stats.guideFinalSamples = static_cast<uint32_t>(std::lround(result.meanSpp));
             result.stats.guideBytes = renderer.guide()->deviceBytes();
+            result.stats.guideStoppedUnused = guide->stoppedUnused();
         }
         result.targetMet = target && result.estimate.reliable &&
                            result.estimate.relMse <= settings.targetError;

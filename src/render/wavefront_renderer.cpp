@@ -400,11 +400,12 @@ void WavefrontRenderer::renderGuided(uint32_t budget,
         if (combine)
             combiner.add(readMoments(), spp);
         countGuideHostTime(host);
-        endGuideIteration(iteration, spp, seconds);
+        schedule.endIteration(endGuideIteration(iteration, spp, seconds).guidedLeaves > 0);
         if (onWave)
             onWave({samplesDone_, budget, stats_.seconds});
     }
     guide_->setTraining(false);
+    stats_.guideStoppedUnused = schedule.stoppedUnused();
     if (stop && stop->load())
         return; // the film keeps the last iteration's image, for a checkpoint
     clearFilm();
@@ -446,6 +447,7 @@ WavefrontRenderer::endGuideIteration(uint32_t iteration, uint32_t spp, double se
     it.spatialLeaves = tree.spatialLeaves;
     it.directionalNodes = tree.samplingNodes;
     it.meanBsdfFraction = tree.meanBsdfFraction;
+    it.guidedLeaves = tree.guidedLeaves;
     stats_.guideIterations.push_back(it);
     countGuideHostTime(host);
     return stats_.guideIterations.back();

@@ -1,8 +1,9 @@
 // Path guiding (render/guiding/, WF_GUIDING): guided renders agree with unguided ones per 8x8
 // region within 5 standard errors over seeds (on the Cornell box, the glass caustic scene and
 // with a deliberately wrong frozen guide or parallax: unbiased, only noisier), whether the image combines
-// every iteration by its samples (the default) or keeps the last one, a seed gives the
-// same image twice, and no sample is NaN or Inf.
+// every iteration by its samples (the default) or keeps the last one, training stops where
+// the learnt shares leave the guide unused, a seed gives the same image twice, and no sample
+// is NaN or Inf.
 #include <gtest/gtest.h>
 
 #include "gpu_test_util.h"
@@ -43,21 +44,37 @@ void expectGuidedUnbiased(const std::string& name, bool combine = true, bool all
     std::vector<std::vector<float>> images;
     for (uint32_t seed = 1; seed <= 8; ++seed) {
         RenderSettings settings = settingsFor(64, seed, true, combine);
-        if (allVertices)
+        if (allVertices) { // and a fixed share of 0.5, so that every vertex samples the guide
             settings.guideMaxDepth = settings.maxDepth;
+            settings.guideLearnFraction = false;
+        }
         RenderResult result = renderScene(scene, settings);
         EXPECT_EQ(result.stats.nonFiniteSamples, 0u);
-        EXPECT_EQ(result.stats.guideIterations.size(), 5u); // 1+2+4+8+16, then 33 spp
+        // 1+2+4+8+16, then 33 spp; or 1+2+4+8, then 49, where every leaf learnt share 1 in
+        // iterations 2 and 3 (guiding::UnusedGuideStop; after 3 and 4 it stops the schedule's
+        // own end).
+        const auto& iterations = result.stats.guideIterations;
+        const bool stopped = result.stats.guideStoppedUnused;
+        ASSERT_EQ(iterations.size(), stopped && iterations[2].guidedLeaves == 0 ? 4u : 5u);
+        std::vector<uint32_t> spp;
+        uint32_t trained = 0;
+        for (const auto& it : iterations) {
+            spp.push_back(it.samplesPerPixel);
+            trained += it.samplesPerPixel;
+        }
+        if (stopped)
+            EXPECT_EQ(iterations.back().guidedLeaves + iterations.end()[-2].guidedLeaves, 0u);
+        const uint32_t imageSpp = 64 - trained;
+        spp.push_back(imageSpp);
         if (combine) {
             // Every iteration weighs by its samples: the image is the mean of all 64.
             EXPECT_EQ(result.stats.guideFinalSamples, 64u);
             const std::vector<double>& w = result.stats.guideWeights;
-            ASSERT_EQ(w.size(), 6u);
-            const uint32_t spp[] = {1, 2, 4, 8, 16, 33};
+            ASSERT_EQ(w.size(), spp.size());
             for (size_t k = 0; k < w.size(); ++k)
                 EXPECT_NEAR(w[k], spp[k] / 64.0, 1e-12) << "iteration " << k;
         } else {
-            EXPECT_EQ(result.stats.guideFinalSamples, 33u);
+            EXPECT_EQ(result.stats.guideFinalSamples, imageSpp);
             EXPECT_TRUE(result.stats.guideWeights.empty());
         }
         images.push_back(std::move(result.rgb));
@@ -78,6 +95,23 @@ TEST(Guiding, GlassCausticUnbiased) { expectGuidedUnbiased("glass_caustic"); }
 TEST(Guiding, LastIterationAloneUnbiased) { expectGuidedUnbiased("cornell_box", false); }
 
 TEST(Guiding, EveryVertexGuidedUnbiased) { expectGuidedUnbiased("glass_caustic", true, true); }
+
+// The learnt shares end training where the guide does not pay (guiding::UnusedGuideStop):
+// the Cornell box's leaves learn BSDF share 1 from the start, the narrow gap's a share below 1
+// from its third iteration on, in every seed.
+TEST(Guiding, TrainingStopsWhereEveryLeafLearnsBsdfShareOne) {
+    const Scene box = loadScene("cornell_box"), gap = loadScene("narrow_gap");
+    for (uint32_t seed = 1; seed <= 4; ++seed) {
+        RenderResult result = renderScene(box, settingsFor(256, seed, true));
+        EXPECT_TRUE(result.stats.guideStoppedUnused) << seed;
+        EXPECT_EQ(result.stats.guideIterations.size(), 4u) << seed;
+        EXPECT_EQ(result.stats.guideFinalSamples, 256u) << seed;
+        result = renderScene(gap, settingsFor(256, seed, true));
+        EXPECT_FALSE(result.stats.guideStoppedUnused) << seed;
+        EXPECT_EQ(result.stats.guideIterations.size(), 7u) << seed; // 1 + ... + 64, then 129
+        EXPECT_GT(result.stats.guideIterations.back().guidedLeaves, 0u) << seed;
+    }
+}
 
 TEST(Guiding, SameSeedSameImage) {
     Scene scene = loadScene("glass_caustic");

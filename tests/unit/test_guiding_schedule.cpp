@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "errors.h"
@@ -23,19 +24,24 @@ struct ScheduleRun {
     std::vector<uint32_t> image;    // spp of each image pass
     double trainingSeconds = 0.0, seconds = 0.0;
     uint32_t done = 0;
+    bool stoppedUnused = false;
 };
 
 // A renderer whose passes cost secondsPerSpp each sample (training ones trainCost), that
 // takes the schedule's every answer whole, as renderGuided's advance() may take fewer.
+// guideSampled(k): whether the guide built by iteration k is sampled (some leaf's share < 1).
 ScheduleRun simulate(uint32_t budget, double limit, double trainCost, double imageCost,
-             uint32_t maxIterations = kNoMax) {
+                     uint32_t maxIterations = kNoMax,
+                     const std::function<bool(size_t)>& guideSampled = nullptr) {
     GuideSchedule schedule(budget, limit, maxIterations);
     ScheduleRun run;
     while (const uint32_t spp = schedule.nextTrainingSpp(run.done, run.seconds)) {
+        schedule.endIteration(!guideSampled || guideSampled(run.training.size()));
         run.training.push_back(spp);
         run.done += spp;
         run.seconds += spp * trainCost;
     }
+    run.stoppedUnused = schedule.stoppedUnused();
     run.trainingSeconds = run.seconds;
     while (const uint32_t spp = schedule.nextImageSpp(run.done, run.seconds)) {
         // One wave of at most 4 spp, as advance() takes at most what a wave holds.
@@ -76,6 +82,27 @@ TEST(GuidingSchedule, MaxIterationsCapsTraining) {
     EXPECT_TRUE(simulate(1024, 0.0, 1.0, 1.0, 0).training.empty());
     EXPECT_EQ(simulate(1024, 0.0, 1.0, 1.0, 3).training, (std::vector<uint32_t>{1, 2, 4}));
     EXPECT_EQ(simulate(1024, 0.0, 1.0, 1.0, 0).done, 1024u);
+}
+
+TEST(GuidingSchedule, TrainingStopsWhereTheLearntSharesLeaveTheGuideUnused) {
+    const auto never = [](size_t) { return false; };
+    // Unused after every iteration: iterations 2 and 3 are the first pair that may stop it.
+    ScheduleRun run = simulate(1024, 0.0, 1.0, 1.0, kNoMax, never);
+    EXPECT_EQ(run.training, (std::vector<uint32_t>{1, 2, 4, 8}));
+    EXPECT_TRUE(run.stoppedUnused);
+    EXPECT_EQ(run.done, 1024u); // the image takes the rest
+    // Sampled from iteration 2 on (the narrow gap): the whole schedule.
+    run = simulate(1024, 0.0, 1.0, 1.0, kNoMax, [](size_t k) { return k >= 2; });
+    EXPECT_EQ(run.training, (std::vector<uint32_t>{1, 2, 4, 8, 16, 32, 64, 128, 256}));
+    EXPECT_FALSE(run.stoppedUnused);
+    // One iteration alone unused is not enough; two in a row are.
+    run = simulate(1024, 0.0, 1.0, 1.0, kNoMax, [](size_t k) { return k == 2 || k == 4; });
+    EXPECT_EQ(run.training, (std::vector<uint32_t>{1, 2, 4, 8, 16, 32, 64}));
+    EXPECT_TRUE(run.stoppedUnused);
+    // A budget that ends training first: not stopped by the rule.
+    run = simulate(16, 0.0, 1.0, 1.0, kNoMax, never);
+    EXPECT_EQ(run.training, (std::vector<uint32_t>{1, 2, 4}));
+    EXPECT_FALSE(run.stoppedUnused);
 }
 
 TEST(GuidingSchedule, TrainingFitsHalfOfTheTimeLimit) {

@@ -14,7 +14,7 @@ GuideSchedule::GuideSchedule(uint32_t budgetSpp, double timeLimitSeconds, uint32
     : budget_(budgetSpp), limit_(timeLimitSeconds), maxIterations_(maxIterations) {}
 
 uint32_t GuideSchedule::nextTrainingSpp(uint32_t samplesDone, double seconds) {
-    if (iterations_ >= maxIterations_ || nextSpp_ == 0)
+    if (iterations_ >= maxIterations_ || nextSpp_ == 0 || unused_.stopped())
         return 0;
     const uint32_t spp = nextSpp_;
     // The image keeps at least half of the samples...
@@ -30,6 +30,14 @@ uint32_t GuideSchedule::nextTrainingSpp(uint32_t samplesDone, double seconds) {
     ++iterations_;
     nextSpp_ = spp >= (1u << 30) ? 0 : 2 * spp;
     return spp;
+}
+
+void UnusedGuideStop::endIteration(bool guideSampled) {
+    ++iterations_;
+    unusedStreak_ = guideSampled ? 0 : unusedStreak_ + 1;
+    // The iteration that just ended has index iterations_ - 1.
+    if (unusedStreak_ >= kUnusedIterationsToStop && iterations_ >= kFirstUnusedStop + 1)
+        stopped_ = true;
 }
 
 uint32_t GuideSchedule::nextImageSpp(uint32_t samplesDone, double seconds) {

@@ -21,6 +21,27 @@ namespace guiding {
 // while the pace so far (seconds per spp, rebuilds included) says training ends within half of
 // the limit. The first iteration always runs (as the first pass of an unguided render does),
 // so a time limit shorter than one iteration still trains once and renders one image pass.
+// Where the guide does not pay, stop paying for it: training ends after
+// kUnusedIterationsToStop iterations in a row whose guide no spatial leaf samples (every leaf
+// learnt BSDF share 1), the last of them iteration kFirstUnusedStop or later (1 + 2 + 4 + 8 =
+// 15 spp trained). Earlier iterations have too few records to learn a share below 1 even
+// where the guide pays (the narrow gap's first two do not; from its third on, every seed's
+// does). The image is then unguided MIS's. Measured in docs/guiding.md ("Sixth session").
+constexpr uint32_t kUnusedIterationsToStop = 2;
+constexpr uint32_t kFirstUnusedStop = 3;
+
+class UnusedGuideStop {
+public:
+    // After each training iteration, in order: whether the guide it built is sampled anywhere.
+    void endIteration(bool guideSampled);
+    bool stopped() const { return stopped_; }
+
+private:
+    uint32_t iterations_ = 0;
+    uint32_t unusedStreak_ = 0;
+    bool stopped_ = false;
+};
+
 class GuideSchedule {
 public:
     // budgetSpp: samples per pixel of this render (or of this --spp-offset part), training
@@ -30,6 +51,11 @@ public:
     // The spp of the next training iteration, or 0: training is over. samplesDone: the
     // render's samples so far (all of them training); seconds: wall time since it began.
     uint32_t nextTrainingSpp(uint32_t samplesDone, double seconds);
+    // After each training iteration: whether the guide it built is sampled anywhere (some
+    // spatial leaf learnt a BSDF share below 1); see UnusedGuideStop.
+    void endIteration(bool guideSampled) { unused_.endIteration(guideSampled); }
+    // Whether training ended because the guide learnt that it does not pay.
+    bool stoppedUnused() const { return unused_.stopped(); }
     // After training: the spp of the next image pass (at most; a pass may take fewer), or 0 to
     // stop. The first image pass always gets at least one sample; later ones only as many as
     // the image phase's own pace says still fit in the limit.
@@ -43,6 +69,7 @@ private:
     uint32_t maxIterations_;
     uint32_t iterations_ = 0;
     uint32_t nextSpp_ = 1;
+    UnusedGuideStop unused_;
     // Where the image phase began (samples, seconds); imageStarted_ once nextImageSpp ran.
     bool imageStarted_ = false;
     uint32_t imageFirstSample_ = 0;

@@ -83,7 +83,10 @@ void PathGuide::setTraining(bool training) {
     training_ = training;
     GuideParams p{};
     p.boxLo = tree_.boxLo();
-    p.bsdfFraction = bsdfFraction_;
+    // Leaves that learnt no share sample the default one; before the first iteration ends the
+    // guide is uniform, which loses to the BSDF's own sampling wherever shares are learnt, so
+    // the first iteration samples the BSDF alone (its records still learn from it).
+    p.bsdfFraction = learnFraction_ && !tree_.hasLearnt() ? 1.0f : bsdfFraction_;
     p.invBoxSize = 1.0f / tree_.boxSize();
     p.training = training ? 1u : 0u;
     p.maxDepth = maxDepth_;

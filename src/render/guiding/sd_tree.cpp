@@ -304,8 +304,11 @@ SDTreeStats SDTree::stats(float defaultFraction) const {
         s.samplingNodes += l.sampling.nodes.size();
         s.maxDirDepth = std::max(s.maxDirDepth, l.sampling.depth());
         const double w = i < lastSamples_.size() ? lastSamples_[i] : 0.0;
-        weighted += w * (l.bsdfFraction > 0.0f ? l.bsdfFraction : defaultFraction);
+        const float fraction = l.bsdfFraction > 0.0f ? l.bsdfFraction : defaultFraction;
+        weighted += w * fraction;
         weights += w;
+        if (fraction < 1.0f)
+            ++s.guidedLeaves;
     }
     s.meanBsdfFraction = weights > 0.0 ? weighted / weights : defaultFraction;
     return s;

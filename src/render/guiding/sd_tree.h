@@ -85,6 +85,8 @@ struct SDTreeStats {
     // The leaves' BSDF shares (defaultFraction where not learnt), weighted by the splats each
     // recorded in the iteration that ended last.
     double meanBsdfFraction = 0.0;
+    // Leaves whose share (defaultFraction where not learnt) is below 1: where the guide samples.
+    std::size_t guidedLeaves = 0;
 };
 
 class SDTree {
@@ -130,6 +132,8 @@ public:
 
     FlatGuide flatten() const;
     SDTreeStats stats(float defaultFraction = 0.5f) const;
+    // Whether an iteration ended (before, every leaf's guide is uniform).
+    bool hasLearnt() const { return !lastSamples_.empty(); }
 
 private:
     struct Node {
