@@ -188,6 +188,19 @@ TEST(GuideFraction, LeavesLearnFlattenAndPassOnTheirShare) {
     tree.learnFractions(256.0);
     EXPECT_EQ(tree.leaves()[0].bsdfFraction, guideFractionCandidate(2));
     EXPECT_EQ(tree.leaves()[1].bsdfFraction, guideFractionCandidate(WF_GUIDE_FRACTIONS - 1));
+
+    // Enough records, none of which carried light (every moment 0): nothing to guide
+    // towards, so BSDF sampling alone; too few records still keep the share they had.
+    flat = tree.flatten();
+    stats.assign(flat.samplingBase.size() * WF_GUIDE_LEAF_STATS, 0u);
+    stats[0] = 100;
+    stats[WF_GUIDE_LEAF_STATS] = 300;
+    counters.assign(flat.splatCounterCount(), 0u);
+    tree.addSplats(flat, counters, stats);
+    tree.leaf(1).bsdfFraction = guideFractionCandidate(0);
+    tree.learnFractions(256.0);
+    EXPECT_EQ(tree.leaves()[0].bsdfFraction, guideFractionCandidate(2));
+    EXPECT_EQ(tree.leaves()[1].bsdfFraction, 1.0f);
 }
 
 // A new tree has learnt nothing: its leaves say 0, so the shaders use the renderer's default.

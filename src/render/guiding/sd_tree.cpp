@@ -178,9 +178,13 @@ int chooseBsdfFraction(const std::array<double, WF_GUIDE_FRACTIONS>& moments) {
 
 void SDTree::learnFractions(double minRecords) {
     for (SpatialLeaf& l : leaves_) {
-        int best = l.samples >= minRecords ? chooseBsdfFraction(l.moments) : -1;
-        if (best >= 0)
-            l.bsdfFraction = gpu_types::guideFractionCandidate(std::uint32_t(best));
+        if (l.samples >= minRecords) {
+            // Where no record carried light, the quadtree they build is empty (uniform): the
+            // guide has nothing to sample towards, so the leaf samples the BSDF alone.
+            const int best = chooseBsdfFraction(l.moments);
+            l.bsdfFraction = gpu_types::guideFractionCandidate(
+                best >= 0 ? std::uint32_t(best) : WF_GUIDE_FRACTIONS - 1u);
+        }
         l.moments = {};
     }
 }

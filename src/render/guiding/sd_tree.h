@@ -111,8 +111,8 @@ public:
     void addSplats(const FlatGuide& flat, const std::vector<std::uint32_t>& counters,
                    const std::vector<std::uint32_t>& leafStats);
     // Every leaf with at least minRecords splats this iteration takes the candidate BSDF
-    // share whose second moment was least (kept where no record carried light); the moments
-    // restart. Before endIteration: split leaves then inherit their parent's share.
+    // share whose second moment was least (share 1 where no record carried light: its
+    // quadtree is then empty); the moments restart. Before endIteration: split leaves then inherit their parent's share.
     void learnFractions(double minRecords);
     // Ends a training iteration: each leaf's frozen quadtree will be seen from the centre its
     // splats were seen from, at the energy-weighted mean distance they came from (kept where
