@@ -203,7 +203,9 @@ pyb::dict Renderer::output(const LoadedScene& scene, const Settings& settings,
     if (s.guiding)
         context.extraFields.push_back(
             {"guiding", "{\"iterations\": " + std::to_string(stats.guideIterations.size()) +
-                            ", \"imageSpp\": " + std::to_string(stats.guideFinalSamples) + "}"});
+                            ", \"imageSpp\": " + std::to_string(stats.guideFinalSamples) +
+                            ", \"stoppedUnused\": " +
+                            (stats.guideStoppedUnused ? "true" : "false") + "}"});
     for (const auto& field : extraStats)
         context.extraFields.push_back(field);
     context.extraFields.push_back({"peakHostMemoryBytes", std::to_string(peakHostMemoryBytes())});

@@ -20,11 +20,19 @@ def test_guided_render_matches_the_cli(renderer, tmp_path):
     assert out.stats["guidingDecision"] == "on (asked)"
     # Iterations of 1, 2, 4 spp, then 9: the image is the mean of all 16 samples.
     assert out.stats["guiding"]["iterations"] == 3 and out.stats["guiding"]["imageSpp"] == 16
+    assert out.stats["guiding"]["stoppedUnused"] is False  # the budget ended training first
     assert np.isfinite(out.image).all() and out.image.mean() > 0
     path = tmp_path / "guided.exr"
     run_cli("render", SCENES / "glass_caustic.gltf", "-o", path, "--quiet", "--width", "24",
             "--spp", "16", "--max-depth", "4", "--seed", "3", "--guiding", "on")
     assert np.array_equal(out.image, wf.read_exr(path)[0])
+
+
+def test_training_stops_where_the_guide_does_not_pay(renderer, cornell):
+    # The Cornell box's leaves learn BSDF share 1: training ends after 1 + 2 + 4 + 8 spp.
+    out = renderer.render(cornell, width=32, spp=64, max_depth=6, seed=1, guiding="on")
+    assert out.stats["guiding"]["stoppedUnused"] is True
+    assert out.stats["guiding"]["iterations"] == 4 and out.stats["guiding"]["imageSpp"] == 64
 
 
 def test_renderer_wide_guiding_and_override():
