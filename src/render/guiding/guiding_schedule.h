@@ -15,12 +15,6 @@ struct PreparedScene;
 
 namespace guiding {
 
-// Iterations of 1, 2, 4, ... spp, the image keeping at least half of the budget: iteration k
-// (2^k spp) runs while the samples done after it are at most half of the budget, so the image
-// gets the rest. With a time limit the same rule holds in seconds: an iteration runs only
-// while the pace so far (seconds per spp, rebuilds included) says training ends within half of
-// the limit. The first iteration always runs (as the first pass of an unguided render does),
-// so a time limit shorter than one iteration still trains once and renders one image pass.
 // Where the guide does not pay, stop paying for it: training ends after
 // kUnusedIterationsToStop iterations in a row whose guide no spatial leaf samples (every leaf
 // learnt BSDF share 1), the last of them iteration kFirstUnusedStop or later (1 + 2 + 4 + 8 =
@@ -42,6 +36,13 @@ private:
     bool stopped_ = false;
 };
 
+// Iterations of 1, 2, 4, ... spp, the image keeping at least half of the budget: iteration k
+// (2^k spp) runs while the samples done after it are at most half of the budget, so the image
+// gets the rest. With a time limit the same rule holds in seconds: an iteration runs only
+// while the pace so far (seconds per spp, rebuilds included) says training ends within half of
+// the limit. The first iteration always runs (as the first pass of an unguided render does),
+// so a time limit shorter than one iteration still trains once and renders one image pass.
+// Training also ends where UnusedGuideStop says so.
 class GuideSchedule {
 public:
     // budgetSpp: samples per pixel of this render (or of this --spp-offset part), training
