@@ -22,6 +22,7 @@ void ViewerGuide::attach(WavefrontRenderer* renderer) {
     iteration_ = 0;
     start_ = 0;
     trainedSpp_ = 0;
+    unused_ = {};
     if (renderer_)
         renderer_->guide()->setTraining(true);
 }
@@ -40,19 +41,26 @@ void ViewerGuide::afterSamples(WavefrontRenderer* renderer, uint32_t sppLimit) {
     if (renderer_->pixelsOfNextSample() > 0 || done - start_ < end ||
         (sppLimit > 0 && done >= sppLimit))
         return;
-    renderer_->guide()->endIteration(iteration_);
+    PathGuide& guide = *renderer_->guide();
+    guide.endIteration(iteration_);
+    unused_.endIteration(guide.tree().stats(guide.bsdfFraction()).guidedLeaves > 0);
     renderer_->clearImage();
     trainedSpp_ += done - start_;
     start_ = done;
     ++iteration_;
+    if (unused_.stopped())
+        iteration_ = kIterations; // the guide does not pay here: frozen, unsampled
     if (guiding::progressiveTrainingEnd(iteration_, kIterations) == 0)
-        renderer_->guide()->setTraining(false);
+        guide.setTraining(false);
 }
 
 std::string ViewerGuide::status() const {
     if (!renderer_)
         return "guide: none (unguided)";
     const uint32_t end = guiding::progressiveTrainingEnd(iteration_, kIterations);
+    if (end == 0 && unused_.stopped())
+        return "guide: unused (every leaf learnt BSDF share 1) after " +
+               std::to_string(trainedSpp_) + " spp of training; the image refines";
     if (end == 0)
         return "guide: frozen after " + std::to_string(trainedSpp_) +
                " spp of training; the image refines";

@@ -1,13 +1,16 @@
 // The viewer's path guide (--guiding on, auto's choice, or the overlay's switch): the guide
 // trains while the image refines. The accumulation restarts after 1, 2, 4, ... spp, each time
 // with the guide improved by those samples (guiding_schedule.h: progressiveTrainingEnd), and
-// after kIterations the guide freezes and the image keeps refining. Sample indices keep
+// after kIterations (or earlier, where guiding::UnusedGuideStop says the guide does not pay)
+// the guide freezes and the image keeps refining. Sample indices keep
 // counting across the restarts, so the shown image's samples never trained the guide it
 // samples. A moved camera restarts the image but keeps what the guide learnt (it is a
 // world-space radiance estimate, valid from any viewpoint).
 #pragma once
 #include <cstdint>
 #include <string>
+
+#include "render/guiding/guiding_schedule.h"
 
 namespace wf {
 
@@ -38,6 +41,7 @@ private:
     uint32_t iteration_ = 0;
     uint32_t start_ = 0;         // samplesDone() when this iteration's image began
     uint32_t trainedSpp_ = 0;
+    guiding::UnusedGuideStop unused_;
 };
 
 } // namespace wf

@@ -42,6 +42,7 @@ public:
     // and uploads them. Returns the rebuild's seconds.
     double endIteration(uint32_t iteration);
     const guiding::SDTree& tree() const { return tree_; }
+    float bsdfFraction() const { return bsdfFraction_; } // leaves that learnt none sample it
     uint64_t deviceBytes() const;
 
 private:
