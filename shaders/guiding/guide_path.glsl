@@ -144,6 +144,14 @@ void guideSplatPath(uint path, vec3 pathRadiance) {
             guideAddMoment(stats + WF_GUIDE_STAT_POSITION + 2u, inBox.y);
             guideAddMoment(stats + WF_GUIDE_STAT_POSITION + 4u, inBox.z);
         }
+        if (guide.learnFraction != 0u) {
+            vec3 total = max(pathRadiance, vec3(0.0)) * r.scale;
+            float whole = r.fCos * (total.r + total.g + total.b) * (1.0 / 3.0);
+            if (whole > 0.0 && !isinf(whole)) {
+                guideAddMoment(stats + WF_GUIDE_STAT_TOTAL, whole * whole);
+                guideAddMoment(stats + WF_GUIDE_STAT_TOTAL_SUM, whole);
+            }
+        }
         if (!(value > 0.0) || isinf(value))
             continue;
         vec3 direction = r.direction;

@@ -55,7 +55,13 @@ struct GuideSpatialNode {
 #define WF_GUIDE_STAT_DISTANCE (1u + 2u * WF_GUIDE_FRACTIONS)
 #define WF_GUIDE_STAT_ENERGY (WF_GUIDE_STAT_DISTANCE + 2u)
 #define WF_GUIDE_STAT_POSITION (WF_GUIDE_STAT_ENERGY + 2u)
-#define WF_GUIDE_LEAF_STATS (WF_GUIDE_STAT_POSITION + 6u)
+// Then the records' whole-path estimates' sum of squares and sum (the learnt share weighs what a
+// candidate removes against their variance): per record w = f |cos| x scale x the path's final
+// radiance, the path's estimate at the vertex with everything before it divided by the
+// throughput to it (at the camera's vertex, the pixel sample itself).
+#define WF_GUIDE_STAT_TOTAL (WF_GUIDE_STAT_POSITION + 6u)
+#define WF_GUIDE_STAT_TOTAL_SUM (WF_GUIDE_STAT_TOTAL + 2u)
+#define WF_GUIDE_LEAF_STATS (WF_GUIDE_STAT_TOTAL_SUM + 2u)
 #define WF_GUIDE_MOMENT_SCALE 4096.0f
 #define WF_GUIDE_MAX_MOMENT 1.0e9f
 

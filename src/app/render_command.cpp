@@ -22,6 +22,7 @@
 #include "render/film_error.h"
 #include "render/gpu_scene/scene_buffers.h"
 #include "render/guiding/guiding_schedule.h"
+#include "render/guiding/sd_tree.h"
 #include "render/wavefront_renderer.h"
 #include "scene/scene_summary.h"
 
@@ -121,17 +122,19 @@ void reportGuiding(bool verbose, const RenderStats& stats, StatsContext& statsCo
         if (verbose)
             std::fprintf(stderr, "wavefront: guiding iteration %zu: %u spp, %llu spatial leaves, "
                                  "%llu directional nodes, BSDF share %.2f (%llu leaves sample "
-                                 "the guide), %.3f s render + %.3f s rebuild\n",
+                                 "the guide, %llu pay), %.3f s render + %.3f s rebuild\n",
                          i, it.samplesPerPixel, static_cast<unsigned long long>(it.spatialLeaves),
                          static_cast<unsigned long long>(it.directionalNodes),
                          it.meanBsdfFraction, static_cast<unsigned long long>(it.guidedLeaves),
-                         it.seconds, it.rebuildSeconds);
+                         static_cast<unsigned long long>(it.payingLeaves), it.seconds,
+                         it.rebuildSeconds);
         iterations += std::string(i ? ", " : "") + "{\"spp\": " +
                       std::to_string(it.samplesPerPixel) + ", \"spatialLeaves\": " +
                       std::to_string(it.spatialLeaves) + ", \"directionalNodes\": " +
                       std::to_string(it.directionalNodes) + ", \"bsdfFraction\": " +
                       jsonNumber(it.meanBsdfFraction) + ", \"guidedLeaves\": " +
-                      std::to_string(it.guidedLeaves) + ", \"seconds\": " +
+                      std::to_string(it.guidedLeaves) + ", \"payingLeaves\": " +
+                      std::to_string(it.payingLeaves) + ", \"seconds\": " +
                       jsonNumber(it.seconds) + ", \"rebuildSeconds\": " +
                       jsonNumber(it.rebuildSeconds) + "}";
     }
@@ -140,8 +143,9 @@ void reportGuiding(bool verbose, const RenderStats& stats, StatsContext& statsCo
         weights += std::string(i ? ", " : "") + jsonNumber(stats.guideWeights[i]);
     if (verbose && stats.guideStoppedUnused)
         std::fprintf(stderr, "wavefront: guiding: training stopped: in %u iterations in a row "
-                             "every leaf learnt BSDF share 1 (the guide does not pay here)\n",
-                     guiding::kUnusedIterationsToStop);
+                             "no leaf learnt a share that pays (one that cuts %.0f%% of its "
+                             "paths' variance); the rest samples the BSDF alone\n",
+                     guiding::kUnusedIterationsToStop, 100.0 * guiding::kMinVarianceCut);
     if (verbose)
         std::fprintf(stderr, "wavefront: guiding: %.3f s training, the image from %u spp (%s)\n",
                      training, stats.guideFinalSamples,

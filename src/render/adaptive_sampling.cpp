@@ -259,9 +259,11 @@ private:
         const double seconds = secondsSince(start);
         FilmMoments moments = renderer_.readMoments();
         unused_.endIteration(
-            renderer_.endGuideIteration(iteration_, nextSpp_, seconds).guidedLeaves > 0);
+            renderer_.endGuideIteration(iteration_, nextSpp_, seconds).payingLeaves > 0);
         guide.setTraining(false);
         tree_ = guide.tree();
+        if (unused_.stopped())
+            tree_.setBsdfFractions(1.0f); // the rounds sample the BSDF alone
         trained_ += nextSpp_;
         if (onRound_)
             onRound_({"training", 1, iteration_ + 1, 0, renderer_.pixelCount(), nextSpp_,

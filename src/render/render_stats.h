@@ -30,11 +30,13 @@ struct RenderStats {
         uint64_t directionalNodes = 0;
         double meanBsdfFraction = 0.0; // the leaves' BSDF shares after it, weighted by records
         uint64_t guidedLeaves = 0;     // leaves that sample the guide after it (share < 1)
+        uint64_t payingLeaves = 0;     // of those, the ones whose share pays (kMinVarianceCut)
         double seconds = 0.0;        // rendering the iteration
         double rebuildSeconds = 0.0; // reading back, rebuilding and uploading the trees
     };
     std::vector<GuideIterationStats> guideIterations;
-    // Training ended early: the learnt shares said the guide does not pay (GuideSchedule).
+    // Training ended early: the learnt shares said the guide does not pay (GuideSchedule);
+    // the image then samples the BSDF alone.
     bool guideStoppedUnused = false;
     uint32_t guideFinalSamples = 0; // samples per pixel in the image (all iterations combined)
     // Combined images: each iteration's weight (training iterations, then the last), sum 1.

@@ -400,12 +400,14 @@ void WavefrontRenderer::renderGuided(uint32_t budget,
         if (combine)
             combiner.add(readMoments(), spp);
         countGuideHostTime(host);
-        schedule.endIteration(endGuideIteration(iteration, spp, seconds).guidedLeaves > 0);
+        schedule.endIteration(endGuideIteration(iteration, spp, seconds).payingLeaves > 0);
         if (onWave)
             onWave({samplesDone_, budget, stats_.seconds});
     }
     guide_->setTraining(false);
     stats_.guideStoppedUnused = schedule.stoppedUnused();
+    if (stats_.guideStoppedUnused)
+        guide_->sampleBsdfAlone(); // leaves whose share did not pay may still be below 1
     if (stop && stop->load())
         return; // the film keeps the last iteration's image, for a checkpoint
     clearFilm();
@@ -448,6 +450,8 @@ WavefrontRenderer::endGuideIteration(uint32_t iteration, uint32_t spp, double se
     it.directionalNodes = tree.samplingNodes;
     it.meanBsdfFraction = tree.meanBsdfFraction;
     it.guidedLeaves = tree.guidedLeaves;
+    // A fixed share (learning off) learns nothing that says it does not pay.
+    it.payingLeaves = settings_.guideLearnFraction ? tree.payingLeaves : tree.guidedLeaves;
     stats_.guideIterations.push_back(it);
     countGuideHostTime(host);
     return stats_.guideIterations.back();

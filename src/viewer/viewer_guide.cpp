@@ -43,13 +43,15 @@ void ViewerGuide::afterSamples(WavefrontRenderer* renderer, uint32_t sppLimit) {
         return;
     PathGuide& guide = *renderer_->guide();
     guide.endIteration(iteration_);
-    unused_.endIteration(guide.tree().stats(guide.bsdfFraction()).guidedLeaves > 0);
+    unused_.endIteration(guide.tree().stats(guide.bsdfFraction()).payingLeaves > 0);
     renderer_->clearImage();
     trainedSpp_ += done - start_;
     start_ = done;
     ++iteration_;
-    if (unused_.stopped())
-        iteration_ = kIterations; // the guide does not pay here: frozen, unsampled
+    if (unused_.stopped()) { // the guide does not pay here: frozen, unsampled
+        iteration_ = kIterations;
+        guide.sampleBsdfAlone();
+    }
     if (guiding::progressiveTrainingEnd(iteration_, kIterations) == 0)
         guide.setTraining(false);
 }
@@ -59,7 +61,7 @@ std::string ViewerGuide::status() const {
         return "guide: none (unguided)";
     const uint32_t end = guiding::progressiveTrainingEnd(iteration_, kIterations);
     if (end == 0 && unused_.stopped())
-        return "guide: unused (every leaf learnt BSDF share 1) after " +
+        return "guide: unused (no leaf's share paid) after " +
                std::to_string(trainedSpp_) + " spp of training; the image refines";
     if (end == 0)
         return "guide: frozen after " + std::to_string(trainedSpp_) +

@@ -55,7 +55,7 @@ void expectGuidedUnbiased(const std::string& name, bool combine = true, bool all
         // own end).
         const auto& iterations = result.stats.guideIterations;
         const bool stopped = result.stats.guideStoppedUnused;
-        ASSERT_EQ(iterations.size(), stopped && iterations[2].guidedLeaves == 0 ? 4u : 5u);
+        ASSERT_EQ(iterations.size(), stopped && iterations[2].payingLeaves == 0 ? 4u : 5u);
         std::vector<uint32_t> spp;
         uint32_t trained = 0;
         for (const auto& it : iterations) {
@@ -63,7 +63,7 @@ void expectGuidedUnbiased(const std::string& name, bool combine = true, bool all
             trained += it.samplesPerPixel;
         }
         if (stopped)
-            EXPECT_EQ(iterations.back().guidedLeaves + iterations.end()[-2].guidedLeaves, 0u);
+            EXPECT_EQ(iterations.back().payingLeaves + iterations.end()[-2].payingLeaves, 0u);
         const uint32_t imageSpp = 64 - trained;
         spp.push_back(imageSpp);
         if (combine) {
@@ -109,7 +109,10 @@ TEST(Guiding, TrainingStopsWhereEveryLeafLearnsBsdfShareOne) {
         result = renderScene(gap, settingsFor(256, seed, true));
         EXPECT_FALSE(result.stats.guideStoppedUnused) << seed;
         EXPECT_EQ(result.stats.guideIterations.size(), 7u) << seed; // 1 + ... + 64, then 129
-        EXPECT_GT(result.stats.guideIterations.back().guidedLeaves, 0u) << seed;
+        uint64_t guided = 0; // at this size some iterations' leaves fall back to share 1
+        for (const auto& it : result.stats.guideIterations)
+            guided += it.guidedLeaves;
+        EXPECT_GT(guided, 0u) << seed;
     }
 }
 

@@ -203,6 +203,38 @@ TEST(GuideFraction, LeavesLearnFlattenAndPassOnTheirShare) {
     EXPECT_EQ(tree.leaves()[1].bsdfFraction, 1.0f);
 }
 
+// A share below 1 pays where it cuts the variance of the records' whole-path estimates by at
+// least kMinVarianceCut: the same moments choose share 0.7 either way, which pays where the
+// vertex's part is most of the path's variance, not where the path's variance is far larger
+// (NEE's direct light).
+TEST(GuideFraction, AShareBelowOneMustCutThePathsVariance) {
+    for (const double pathVariance : {0.8e4, 1.0e6}) {
+        SDTree tree(vec3(-1.0f), vec3(1.0f));
+        FlatGuide flat = tree.flatten();
+        std::vector<std::uint32_t> counters(flat.splatCounterCount(), 0u);
+        std::vector<std::uint32_t> stats(WF_GUIDE_LEAF_STATS, 0u);
+        const double records = 1000.0, mean = 10.0;
+        stats[0] = std::uint32_t(records);
+        for (std::size_t j = 0; j < WF_GUIDE_FRACTIONS; ++j) // the least, 7e3, with share 0.7
+            setMoment(stats, 0, j, j == 2 ? 7.0e3 : 1.0e4);
+        // Sum of squares and sum of the whole-path estimates: variance x records = pathVariance.
+        auto set64 = [&](std::uint32_t at, double value) {
+            const auto fixed = std::uint64_t(value * WF_GUIDE_MOMENT_SCALE);
+            stats[at] = std::uint32_t(fixed & 0xffffffffu);
+            stats[at + 1] = std::uint32_t(fixed >> 32);
+        };
+        set64(WF_GUIDE_STAT_TOTAL, pathVariance + records * mean * mean);
+        set64(WF_GUIDE_STAT_TOTAL_SUM, records * mean);
+        tree.addSplats(flat, counters, stats);
+        tree.learnFractions(256.0);
+        // The cut, 3e3, is 0.375 of 8e3 (kept) and 0.003 of 1e6 (not enough).
+        ASSERT_EQ(wf::guiding::kMinVarianceCut, 0.3);
+        EXPECT_EQ(tree.leaves()[0].bsdfFraction, guideFractionCandidate(2)) << pathVariance;
+        EXPECT_EQ(tree.leaves()[0].guidePays, pathVariance < 1.0e5) << pathVariance;
+        EXPECT_EQ(tree.stats().payingLeaves, pathVariance < 1.0e5 ? 1u : 0u) << pathVariance;
+    }
+}
+
 // A new tree has learnt nothing: its leaves say 0, so the shaders use the renderer's default.
 TEST(GuideFraction, UnlearntLeavesFlattenToTheDefault) {
     SDTree tree(vec3(-1.0f), vec3(1.0f));

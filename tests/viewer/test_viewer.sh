@@ -127,9 +127,9 @@ run "guided" 0 "$wavefront" view "$cornell" --guiding on "${common[@]}" "${slow[
     --spp 16 --width 64 --height 48 --frames 12 --screenshot "$work/guided.exr"
 check "guided screenshot written" test -s "$work/guided.exr" -a -s "$work/guided.png"
 # The Cornell box's leaves learn BSDF share 1, so training stops after 1 + 2 + 4 + 8 spp
-# (guiding::UnusedGuideStop); a share below 1 somewhere would keep it training.
+# (guiding::UnusedGuideStop); a share that pays somewhere would keep it training.
 check "guided view trained while refining" grep -Eq \
-    "guide: (training, iteration [2-8] of 8|unused \(every leaf learnt BSDF share 1\) after 15 spp)" \
+    "guide: (training, iteration [2-8] of 8|unused \(no leaf's share paid\) after 15 spp)" \
     "$work/guided.log"
 
 # 3. Orbiting every frame with a 1 ms target: the low-resolution preview is drawn and scaled.

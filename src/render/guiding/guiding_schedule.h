@@ -16,18 +16,19 @@ struct PreparedScene;
 namespace guiding {
 
 // Where the guide does not pay, stop paying for it: training ends after
-// kUnusedIterationsToStop iterations in a row whose guide no spatial leaf samples (every leaf
-// learnt BSDF share 1), the last of them iteration kFirstUnusedStop or later (1 + 2 + 4 + 8 =
-// 15 spp trained). Earlier iterations have too few records to learn a share below 1 even
-// where the guide pays (the narrow gap's first two do not; from its third on, every seed's
-// does). The image is then unguided MIS's. Measured in docs/guiding.md ("Sixth session").
+// kUnusedIterationsToStop iterations in a row in which no spatial leaf learnt a share that
+// pays (below 1 and cutting kMinVarianceCut of its paths' variance, SDTree::learnFractions),
+// the last of them iteration kFirstUnusedStop or later (1 + 2 + 4 + 8 = 15 spp trained), and
+// the rest samples the BSDF alone: the image is unguided MIS's. Earlier iterations have too
+// few records to learn a share below 1 even where the guide pays (the narrow gap's first two
+// do not; its third does in every seed). Measured in docs/guiding.md ("Sixth session").
 constexpr uint32_t kUnusedIterationsToStop = 2;
 constexpr uint32_t kFirstUnusedStop = 3;
 
 class UnusedGuideStop {
 public:
-    // After each training iteration, in order: whether the guide it built is sampled anywhere.
-    void endIteration(bool guideSampled);
+    // After each training iteration, in order: whether some leaf learnt a share that pays.
+    void endIteration(bool guidePays);
     bool stopped() const { return stopped_; }
 
 private:
@@ -52,9 +53,9 @@ public:
     // The spp of the next training iteration, or 0: training is over. samplesDone: the
     // render's samples so far (all of them training); seconds: wall time since it began.
     uint32_t nextTrainingSpp(uint32_t samplesDone, double seconds);
-    // After each training iteration: whether the guide it built is sampled anywhere (some
-    // spatial leaf learnt a BSDF share below 1); see UnusedGuideStop.
-    void endIteration(bool guideSampled) { unused_.endIteration(guideSampled); }
+    // After each training iteration: whether some spatial leaf learnt a share that pays; see
+    // UnusedGuideStop.
+    void endIteration(bool guidePays) { unused_.endIteration(guidePays); }
     // Whether training ended because the guide learnt that it does not pay.
     bool stoppedUnused() const { return unused_.stopped(); }
     // After training: the spp of the next image pass (at most; a pass may take fewer), or 0 to

@@ -79,6 +79,12 @@ void PathGuide::setTree(guiding::SDTree tree) {
     upload();
 }
 
+void PathGuide::sampleBsdfAlone() {
+    tree_.setBsdfFractions(1.0f);
+    flat_ = tree_.flatten();
+    upload();
+}
+
 void PathGuide::setTraining(bool training) {
     training_ = training;
     GuideParams p{};

@@ -161,6 +161,8 @@ void SDTree::addSplats(const FlatGuide& flat, const std::vector<std::uint32_t>& 
             return double(std::uint64_t(stats[at]) | (std::uint64_t(stats[at + 1]) << 32)) /
                    double(WF_GUIDE_MOMENT_SCALE);
         };
+        leaves_[l].totalSquares += sum64(WF_GUIDE_STAT_TOTAL);
+        leaves_[l].totalSum += sum64(WF_GUIDE_STAT_TOTAL_SUM);
         leaves_[l].distanceSum += sum64(WF_GUIDE_STAT_DISTANCE);
         leaves_[l].energySum += sum64(WF_GUIDE_STAT_ENERGY);
         for (std::uint32_t axis = 0; axis < 3; ++axis)
@@ -178,15 +180,29 @@ int chooseBsdfFraction(const std::array<double, WF_GUIDE_FRACTIONS>& moments) {
 
 void SDTree::learnFractions(double minRecords) {
     for (SpatialLeaf& l : leaves_) {
+        l.guidePays = false;
         if (l.samples >= minRecords) {
-            // Where no record carried light, the quadtree they build is empty (uniform): the
-            // guide has nothing to sample towards, so the leaf samples the BSDF alone.
+            const std::uint32_t alone = WF_GUIDE_FRACTIONS - 1u; // share 1
             const int best = chooseBsdfFraction(l.moments);
-            l.bsdfFraction = gpu_types::guideFractionCandidate(
-                best >= 0 ? std::uint32_t(best) : WF_GUIDE_FRACTIONS - 1u);
+            l.bsdfFraction =
+                gpu_types::guideFractionCandidate(best >= 0 ? std::uint32_t(best) : alone);
+            // Sampling the guide costs its walks and its rays: it pays where it removes at
+            // least kMinVarianceCut of the variance of the whole paths' estimates through the
+            // leaf, not only a part of the vertex's own (where the leaf's light is mostly NEE's
+            // direct light, the guide's cut is a sliver of it).
+            const double variance = l.totalSquares - l.totalSum * l.totalSum / l.samples;
+            l.guidePays = best >= 0 && std::uint32_t(best) != alone &&
+                          l.moments[alone] - l.moments[std::size_t(best)] >=
+                              kMinVarianceCut * variance;
         }
         l.moments = {};
+        l.totalSquares = l.totalSum = 0.0;
     }
+}
+
+void SDTree::setBsdfFractions(float fraction) {
+    for (SpatialLeaf& l : leaves_)
+        l.bsdfFraction = fraction;
 }
 
 void SDTree::split(std::uint32_t node, std::uint32_t depth, double threshold,
@@ -313,6 +329,8 @@ SDTreeStats SDTree::stats(float defaultFraction) const {
         weights += w;
         if (fraction < 1.0f)
             ++s.guidedLeaves;
+        if (l.guidePays)
+            ++s.payingLeaves;
     }
     s.meanBsdfFraction = weights > 0.0 ? weighted / weights : defaultFraction;
     return s;

@@ -51,6 +51,10 @@ struct SpatialLeaf {
     // (guideFractionCandidate; see WF_GUIDE_FRACTIONS).
     float bsdfFraction = 0.0f;
     std::array<double, WF_GUIDE_FRACTIONS> moments{};
+    // The records' whole-path estimates (WF_GUIDE_STAT_TOTAL): sum of squares and sum.
+    double totalSquares = 0.0, totalSum = 0.0;
+    // The share learnt last cuts at least kMinVarianceCut of their variance (it pays).
+    bool guidePays = false;
     // Parallax (see GuideSpatialNode): the sampling quadtree's directions are seen from
     // samplingCentre to radiance radianceDistance away (0: none); the building one's from
     // buildingCentre, whose splats this iteration sum value x distance, value and the
@@ -61,6 +65,13 @@ struct SpatialLeaf {
     double distanceSum = 0.0, energySum = 0.0;
     glm::dvec3 positionSum{0.0};
 };
+
+// A leaf's share below 1 pays where it cuts the variance of the whole paths' estimates
+// through the leaf by at least this much: where leaves sample the guide, a sample costs
+// 1.15-1.5x an unguided one (docs/guiding.md), and 1 - 1 / 1.4 = 0.3. Measured cuts (64x64
+// and 128x128, 256 spp, seed 1): the narrow gap 0.45-36, the sphere near the floor
+// 0.005-0.22, the glass caustic at 128x128 0-0.8 (docs/guiding.md, "Sixth session").
+constexpr double kMinVarianceCut = 0.3;
 
 // The candidate share with the least second moment, or -1 where no record carried light.
 int chooseBsdfFraction(const std::array<double, WF_GUIDE_FRACTIONS>& moments);
@@ -87,6 +98,8 @@ struct SDTreeStats {
     double meanBsdfFraction = 0.0;
     // Leaves whose share (defaultFraction where not learnt) is below 1: where the guide samples.
     std::size_t guidedLeaves = 0;
+    // Leaves whose learnt share pays (SpatialLeaf::guidePays).
+    std::size_t payingLeaves = 0;
 };
 
 class SDTree {
@@ -112,8 +125,13 @@ public:
                    const std::vector<std::uint32_t>& leafStats);
     // Every leaf with at least minRecords splats this iteration takes the candidate BSDF
     // share whose second moment was least (share 1 where no record carried light: its
-    // quadtree is then empty); the moments restart. Before endIteration: split leaves then inherit their parent's share.
+    // quadtree is then empty), and notes whether that share pays: whether it removes at
+    // least kMinVarianceCut of the variance of the records' whole-path estimates (a leaf
+    // with fewer records does not pay); the moments restart. Before endIteration: split
+    // leaves then inherit their parent's share.
     void learnFractions(double minRecords);
+    // Every leaf takes this BSDF share (1: the BSDF alone).
+    void setBsdfFractions(float fraction);
     // Ends a training iteration: each leaf's frozen quadtree will be seen from the centre its
     // splats were seen from, at the energy-weighted mean distance they came from (kept where
     // none did), and the mean position of its records becomes its next building centre;
