@@ -43,7 +43,7 @@ void ViewerGuide::afterSamples(WavefrontRenderer* renderer, uint32_t sppLimit) {
         return;
     PathGuide& guide = *renderer_->guide();
     guide.endIteration(iteration_);
-    unused_.endIteration(guide.tree().stats(guide.bsdfFraction()).payingLeaves > 0);
+    unused_.endIteration(guide.tree().stats().payingLeaves > 0); // learnt shares only
     renderer_->clearImage();
     trainedSpp_ += done - start_;
     start_ = done;

@@ -42,7 +42,6 @@ public:
     // and uploads them. Returns the rebuild's seconds.
     double endIteration(uint32_t iteration);
     const guiding::SDTree& tree() const { return tree_; }
-    float bsdfFraction() const { return bsdfFraction_; } // leaves that learnt none sample it
     // Every leaf samples the BSDF alone from now on (the guide does not pay).
     void sampleBsdfAlone();
     uint64_t deviceBytes() const;
