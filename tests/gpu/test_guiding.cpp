@@ -2,8 +2,8 @@
 // region within 5 standard errors over seeds (on the Cornell box, the glass caustic scene and
 // with a deliberately wrong frozen guide or parallax: unbiased, only noisier), whether the image combines
 // every iteration by its samples (the default) or keeps the last one, training stops where
-// the learnt shares leave the guide unused, a seed gives the same image twice, and no sample
-// is NaN or Inf.
+// the learnt shares leave the guide unused, a guide set aside is not looked up (the image is
+// unguided MIS's), a seed gives the same image twice, and no sample is NaN or Inf.
 #include <gtest/gtest.h>
 
 #include "gpu_test_util.h"
@@ -122,6 +122,45 @@ TEST(Guiding, SameSeedSameImage) {
     RenderResult b = renderScene(scene, settingsFor(16, 7, true));
     EXPECT_EQ(a.rgb, b.rgb);
     EXPECT_GT(a.stats.guideIterations.size(), 0u);
+}
+
+// Where no vertex looks the guide up (GuideParams.maxDepth 0: what a render whose training
+// stopped uploads, PathGuide::sampleBsdfAlone), not even one reached through the glass, a
+// guided render traces unguided MIS's paths: the same samples give the same image, whatever
+// the guide and its share (here a uniform one at 0.5, which would change every guided path).
+TEST(Guiding, NoVertexLooksTheGuideUpAtMaxDepthZero) {
+    static ShaderCompiler compiler;
+    Scene scene = loadScene("glass_caustic");
+    PreparedScene prepared = prepareScene(scene);
+    const std::vector<float> unguided = renderScene(scene, settingsFor(8, 11, false)).rgb;
+    RenderSettings settings = settingsFor(8, 11, true);
+    settings.guideMaxIterations = 0;
+    settings.guideLearnFraction = false;
+    settings.guideMaxDepth = 0;
+    const std::vector<float> none = renderScene(scene, settings).rgb;
+    settings.guideMaxDepth = settings.maxDepth; // every vertex, until the guide is set aside
+    WavefrontRenderer renderer(gpuContext(), prepared, settings, compiler);
+    renderer.guide()->sampleBsdfAlone();
+    renderer.render();
+    const std::vector<float> setAside = renderer.readImage();
+    renderer.reset(); // and looked up again after a reset: the uniform guide's paths differ
+    renderer.guide()->reset();
+    renderer.render();
+    const std::vector<float> guided = renderer.readImage();
+    ASSERT_EQ(none.size(), unguided.size());
+    ASSERT_EQ(setAside.size(), unguided.size());
+    size_t noneApart = 0, setAsideApart = 0;
+    double guidedDifference = 0.0;
+    for (size_t i = 0; i < unguided.size(); ++i) {
+        const float tolerance = 1e-5f * std::max(1.0f, std::abs(unguided[i]));
+        noneApart += std::abs(none[i] - unguided[i]) > tolerance ? 1 : 0;
+        setAsideApart += std::abs(setAside[i] - unguided[i]) > tolerance ? 1 : 0;
+        guidedDifference += std::abs(double(guided[i]) - unguided[i]);
+    }
+    EXPECT_EQ(noneApart, 0u);
+    EXPECT_EQ(setAsideApart, 0u);
+    EXPECT_GT(guidedDifference, 1e-2 * double(unguided.size()) / 3.0);
+    EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
 }
 
 // The megakernel baseline guides with the same GLSL functions: the same training, the same

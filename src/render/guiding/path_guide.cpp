@@ -68,18 +68,21 @@ uint64_t PathGuide::deviceBytes() const {
 }
 
 void PathGuide::reset() {
+    bsdfAlone_ = false;
     tree_ = guiding::SDTree(tree_.boxLo(), tree_.boxLo() + tree_.boxSize());
     flat_ = tree_.flatten();
     upload();
 }
 
 void PathGuide::setTree(guiding::SDTree tree) {
+    bsdfAlone_ = false;
     tree_ = std::move(tree);
     flat_ = tree_.flatten();
     upload();
 }
 
 void PathGuide::sampleBsdfAlone() {
+    bsdfAlone_ = true;
     tree_.setBsdfFractions(1.0f);
     flat_ = tree_.flatten();
     upload();
@@ -95,7 +98,8 @@ void PathGuide::setTraining(bool training) {
     p.bsdfFraction = learnFraction_ && !tree_.hasLearnt() ? 1.0f : bsdfFraction_;
     p.invBoxSize = 1.0f / tree_.boxSize();
     p.training = training ? 1u : 0u;
-    p.maxDepth = maxDepth_;
+    // Sampling the BSDF alone, no vertex needs the guide: not even a walk to its leaf.
+    p.maxDepth = bsdfAlone_ ? 0u : maxDepth_;
     p.learnFraction = learnFraction_ ? 1u : 0u;
     p.parallax = parallax_ ? 1u : 0u;
     // Twice the box's diagonal: past anything in the scene.

@@ -42,7 +42,8 @@ public:
     // and uploads them. Returns the rebuild's seconds.
     double endIteration(uint32_t iteration);
     const guiding::SDTree& tree() const { return tree_; }
-    // Every leaf samples the BSDF alone from now on (the guide does not pay).
+    // Every leaf samples the BSDF alone from now on (the guide does not pay), and no vertex
+    // looks the guide up (until reset() or setTree()).
     void sampleBsdfAlone();
     uint64_t deviceBytes() const;
 
@@ -56,6 +57,7 @@ private:
     bool learnFraction_;
     bool parallax_;
     bool training_ = false;
+    bool bsdfAlone_ = false; // sampleBsdfAlone() since the last reset() or setTree()
     Buffer params_, spatial_, sampling_, building_, splats_, leafSamples_, records_, counts_;
 };
 
