@@ -246,7 +246,11 @@ public:
     bool stoppedUnused() const { return unused_.stopped(); }
 
     // After the renderer restarted for an image round: sample the frozen guide.
-    void freeze() { renderer_.guide()->setTree(tree_); }
+    void freeze() {
+        renderer_.guide()->setTree(tree_);
+        if (unused_.stopped())
+            renderer_.guide()->sampleBsdfAlone(); // and no vertex walks to its leaf
+    }
 
 private:
     // secondsBefore: the render's seconds before the renderer's own (progress lines).
@@ -259,7 +263,8 @@ private:
         const double seconds = secondsSince(start);
         FilmMoments moments = renderer_.readMoments();
         unused_.endIteration(
-            renderer_.endGuideIteration(iteration_, nextSpp_, seconds).payingLeaves > 0);
+            renderer_.endGuideIteration(iteration_, nextSpp_, seconds).payingLeaves > 0,
+            uint64_t(everyPixel_.size()) * nextSpp_);
         guide.setTraining(false);
         tree_ = guide.tree();
         if (unused_.stopped())

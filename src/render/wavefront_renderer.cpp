@@ -400,7 +400,8 @@ void WavefrontRenderer::renderGuided(uint32_t budget,
         if (combine)
             combiner.add(readMoments(), spp);
         countGuideHostTime(host);
-        schedule.endIteration(endGuideIteration(iteration, spp, seconds).payingLeaves > 0);
+        schedule.endIteration(endGuideIteration(iteration, spp, seconds).payingLeaves > 0,
+                              uint64_t(pixelCount_) * spp);
         if (onWave)
             onWave({samplesDone_, budget, stats_.seconds});
     }

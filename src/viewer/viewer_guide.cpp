@@ -43,7 +43,8 @@ void ViewerGuide::afterSamples(WavefrontRenderer* renderer, uint32_t sppLimit) {
         return;
     PathGuide& guide = *renderer_->guide();
     guide.endIteration(iteration_);
-    unused_.endIteration(guide.tree().stats().payingLeaves > 0); // learnt shares only
+    unused_.endIteration(guide.tree().stats().payingLeaves > 0, // learnt shares only
+                         uint64_t(renderer_->pixelCount()) * (done - start_));
     renderer_->clearImage();
     trainedSpp_ += done - start_;
     start_ = done;

@@ -29,10 +29,11 @@ def test_guided_render_matches_the_cli(renderer, tmp_path):
 
 
 def test_training_stops_where_the_guide_does_not_pay(renderer, cornell):
-    # The Cornell box's leaves learn BSDF share 1: training ends after 1 + 2 + 4 + 8 spp.
-    out = renderer.render(cornell, width=32, spp=64, max_depth=6, seed=1, guiding="on")
+    # The Cornell box's leaves learn BSDF share 1: at 64x64 training ends after 1 + 2 + 4 spp.
+    out = renderer.render(cornell, width=64, height=64, spp=32, max_depth=6, seed=1,
+                          guiding="on")
     assert out.stats["guiding"]["stoppedUnused"] is True
-    assert out.stats["guiding"]["iterations"] == 4 and out.stats["guiding"]["imageSpp"] == 64
+    assert out.stats["guiding"]["iterations"] == 3 and out.stats["guiding"]["imageSpp"] == 32
 
 
 def test_renderer_wide_guiding_and_override():

@@ -29,14 +29,17 @@ struct ScheduleRun {
 
 // A renderer whose passes cost secondsPerSpp each sample (training ones trainCost), that
 // takes the schedule's every answer whole, as renderGuided's advance() may take fewer.
-// guideSampled(k): whether the guide built by iteration k is sampled (some leaf's share < 1).
+// guideSampled(k): whether the guide built by iteration k is sampled (some leaf's share < 1);
+// pixels: the image's (64x64 unless given).
 ScheduleRun simulate(uint32_t budget, double limit, double trainCost, double imageCost,
                      uint32_t maxIterations = kNoMax,
-                     const std::function<bool(size_t)>& guideSampled = nullptr) {
+                     const std::function<bool(size_t)>& guideSampled = nullptr,
+                     uint32_t pixels = 64 * 64) {
     GuideSchedule schedule(budget, limit, maxIterations);
     ScheduleRun run;
     while (const uint32_t spp = schedule.nextTrainingSpp(run.done, run.seconds)) {
-        schedule.endIteration(!guideSampled || guideSampled(run.training.size()));
+        schedule.endIteration(!guideSampled || guideSampled(run.training.size()),
+                              uint64_t(pixels) * spp);
         run.training.push_back(spp);
         run.done += spp;
         run.seconds += spp * trainCost;
@@ -86,11 +89,20 @@ TEST(GuidingSchedule, MaxIterationsCapsTraining) {
 
 TEST(GuidingSchedule, TrainingStopsWhereTheLearntSharesLeaveTheGuideUnused) {
     const auto never = [](size_t) { return false; };
-    // Unused after every iteration: iterations 2 and 3 are the first pair that may stop it.
+    // Unused after every iteration: at 64x64 iterations 1 and 2 (7 spp of 4096 pixels) are
+    // the first pair that may stop it.
     ScheduleRun run = simulate(1024, 0.0, 1.0, 1.0, kNoMax, never);
-    EXPECT_EQ(run.training, (std::vector<uint32_t>{1, 2, 4, 8}));
+    EXPECT_EQ(run.training, (std::vector<uint32_t>{1, 2, 4}));
     EXPECT_TRUE(run.stoppedUnused);
     EXPECT_EQ(run.done, 1024u); // the image takes the rest
+    // A smaller image needs more samples per pixel first: at 32x32, 31 spp (iteration 4).
+    run = simulate(1024, 0.0, 1.0, 1.0, kNoMax, never, 32 * 32);
+    EXPECT_EQ(run.training, (std::vector<uint32_t>{1, 2, 4, 8, 16}));
+    EXPECT_TRUE(run.stoppedUnused);
+    // A larger one no sooner than iteration 2: the first two never learn a share that pays.
+    run = simulate(1024, 0.0, 1.0, 1.0, kNoMax, never, 1024 * 1024);
+    EXPECT_EQ(run.training, (std::vector<uint32_t>{1, 2, 4}));
+    EXPECT_TRUE(run.stoppedUnused);
     // Sampled from iteration 2 on (the narrow gap): the whole schedule.
     run = simulate(1024, 0.0, 1.0, 1.0, kNoMax, [](size_t k) { return k >= 2; });
     EXPECT_EQ(run.training, (std::vector<uint32_t>{1, 2, 4, 8, 16, 32, 64, 128, 256}));
@@ -100,8 +112,8 @@ TEST(GuidingSchedule, TrainingStopsWhereTheLearntSharesLeaveTheGuideUnused) {
     EXPECT_EQ(run.training, (std::vector<uint32_t>{1, 2, 4, 8, 16, 32, 64}));
     EXPECT_TRUE(run.stoppedUnused);
     // A budget that ends training first: not stopped by the rule.
-    run = simulate(16, 0.0, 1.0, 1.0, kNoMax, never);
-    EXPECT_EQ(run.training, (std::vector<uint32_t>{1, 2, 4}));
+    run = simulate(8, 0.0, 1.0, 1.0, kNoMax, never);
+    EXPECT_EQ(run.training, (std::vector<uint32_t>{1, 2}));
     EXPECT_FALSE(run.stoppedUnused);
 }
 

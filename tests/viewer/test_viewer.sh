@@ -126,8 +126,8 @@ check "resized view matches render" "$compare" "$work/resized.exr" "$work/render
 run "guided" 0 "$wavefront" view "$cornell" --guiding on "${common[@]}" "${slow[@]}" \
     --spp 16 --width 64 --height 48 --frames 12 --screenshot "$work/guided.exr"
 check "guided screenshot written" test -s "$work/guided.exr" -a -s "$work/guided.png"
-# The Cornell box's leaves learn BSDF share 1, so training stops after 1 + 2 + 4 + 8 spp
-# (guiding::UnusedGuideStop); a share that pays somewhere would keep it training.
+# The Cornell box's leaves learn BSDF share 1, so training stops after 1 + 2 + 4 + 8 spp at
+# 64x48 (guiding::UnusedGuideStop); a share that pays somewhere would keep it training.
 check "guided view trained while refining" grep -Eq \
     "guide: (training, iteration [2-8] of 8|unused \(no leaf's share paid\) after 15 spp)" \
     "$work/guided.log"

@@ -32,11 +32,13 @@ uint32_t GuideSchedule::nextTrainingSpp(uint32_t samplesDone, double seconds) {
     return spp;
 }
 
-void UnusedGuideStop::endIteration(bool guidePays) {
+void UnusedGuideStop::endIteration(bool guidePays, uint64_t pixelSamples) {
     ++iterations_;
+    pixelSamples_ += pixelSamples;
     unusedStreak_ = guidePays ? 0 : unusedStreak_ + 1;
     // The iteration that just ended has index iterations_ - 1.
-    if (unusedStreak_ >= kUnusedIterationsToStop && iterations_ >= kFirstUnusedStop + 1)
+    if (unusedStreak_ >= kUnusedIterationsToStop && iterations_ >= kFirstUnusedStop + 1 &&
+        pixelSamples_ >= kMinStopPixelSamples)
         stopped_ = true;
 }
 
@@ -99,16 +101,16 @@ GuideSceneTraits guideSceneTraits(const PreparedScene& scene) {
 
 namespace {
 
-// Measured on lavapipe (Mesa 25.0.7, 2 cores), docs/guiding.md "auto" and "Sixth session":
+// Measured on lavapipe (Mesa 25.0.7, 2 cores), docs/guiding.md "auto" and "Seventh session":
 // guided over unguided MIS efficiency at equal time (training included), the least over the
 // image sizes and budgets measured, as auto must not lose. Caustic scenes (the glass
-// caustic): 0.97-1.00x at 64x64 over 0.75-8 s (converge, 10 seeds), 1.05x at the gallery's
+// caustic): 0.94-1.00x at 64x64 over 0.75-8 s (converge, 5 seeds), 0.98x at the gallery's
 // 128x128 and 256 spp (training stops there: no leaf's share pays). Diffuse and glossy ones:
-// the dark narrow gap 2.3-2.8x over 0.5-8 s, but the Cornell box 0.95-0.96x over 0.25-1.5 s
-// (64x64; the gallery's other scenes 0.96-1.01x at 128x128, training stopped). Every gain
-// but the narrow gap's is the cost of 15 spp of training, the guide then unused.
-constexpr double kCausticEqualTimeGain = 0.97;
-constexpr double kDiffuseEqualTimeGain = 0.95;
+// the dark narrow gap 2.2-2.8x over 0.5-8 s, but the Cornell box 0.98-1.00x over 0.25-1.5 s
+// (64x64) and 0.94x in the gallery, whose other scenes read 0.96-1.04x (training stopped).
+// Every gain but the narrow gap's is the cost of 7 spp of training, the guide then unused.
+constexpr double kCausticEqualTimeGain = 0.94;
+constexpr double kDiffuseEqualTimeGain = 0.94;
 
 } // namespace
 

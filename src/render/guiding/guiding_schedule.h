@@ -18,22 +18,28 @@ namespace guiding {
 // Where the guide does not pay, stop paying for it: training ends after
 // kUnusedIterationsToStop iterations in a row in which no spatial leaf learnt a share that
 // pays (below 1 and cutting kMinVarianceCut of its paths' variance, SDTree::learnFractions),
-// the last of them iteration kFirstUnusedStop or later (1 + 2 + 4 + 8 = 15 spp trained), and
-// the rest samples the BSDF alone: the image is unguided MIS's. Earlier iterations have too
-// few records to learn a share below 1 even where the guide pays (the narrow gap's first two
-// do not; its third does in every seed). Measured in docs/guiding.md ("Sixth session").
+// the last of them iteration kFirstUnusedStop or later (1 + 2 + 4 = 7 spp trained) and the
+// iterations so far having traced at least kMinStopPixelSamples camera samples, and the rest
+// samples the BSDF alone: the image is unguided MIS's. Fewer records do not learn a share
+// below 1 even where the guide pays: the narrow gap's first two iterations never do, its
+// third does in every seed at 64x64 (7 spp of 4096 pixels) and larger, but at 32x32 only its
+// fourth or fifth in most seeds. Measured in docs/guiding.md ("Sixth session", "Seventh
+// session").
 constexpr uint32_t kUnusedIterationsToStop = 2;
-constexpr uint32_t kFirstUnusedStop = 3;
+constexpr uint32_t kFirstUnusedStop = 2;
+constexpr uint64_t kMinStopPixelSamples = 64 * 64 * 7;
 
 class UnusedGuideStop {
 public:
-    // After each training iteration, in order: whether some leaf learnt a share that pays.
-    void endIteration(bool guidePays);
+    // After each training iteration, in order: whether some leaf learnt a share that pays,
+    // and the camera samples the iteration traced (pixels x spp).
+    void endIteration(bool guidePays, uint64_t pixelSamples);
     bool stopped() const { return stopped_; }
 
 private:
     uint32_t iterations_ = 0;
     uint32_t unusedStreak_ = 0;
+    uint64_t pixelSamples_ = 0;
     bool stopped_ = false;
 };
 
@@ -53,9 +59,11 @@ public:
     // The spp of the next training iteration, or 0: training is over. samplesDone: the
     // render's samples so far (all of them training); seconds: wall time since it began.
     uint32_t nextTrainingSpp(uint32_t samplesDone, double seconds);
-    // After each training iteration: whether some spatial leaf learnt a share that pays; see
-    // UnusedGuideStop.
-    void endIteration(bool guidePays) { unused_.endIteration(guidePays); }
+    // After each training iteration: whether some spatial leaf learnt a share that pays and
+    // the camera samples it traced; see UnusedGuideStop.
+    void endIteration(bool guidePays, uint64_t pixelSamples) {
+        unused_.endIteration(guidePays, pixelSamples);
+    }
     // Whether training ended because the guide learnt that it does not pay.
     bool stoppedUnused() const { return unused_.stopped(); }
     // After training: the spp of the next image pass (at most; a pass may take fewer), or 0 to
