@@ -54,6 +54,9 @@ const CommandSpec& viewSpec() {
                 deviceOption(),
                 traversalOption(),
                 {"--frames", "", "N", "quit after N frames (scripts, tests)"},
+                {"--until-done", "", "", "quit once the image reaches its --spp (after any "
+                                         "--resize-at), however many frames that takes "
+                                         "(scripts, tests)"},
                 {"--screenshot", "", "FILE.exr", "on quit, write the radiance (and FILE.png, as "
                                                  "shown)"},
                 {"--resize-at", "", "F:WxH", "after frame F, resize the window to W x H (tests)"},
@@ -67,8 +70,8 @@ const CommandSpec& viewSpec() {
             "WAVEFRONT_SHADER_DIR,\n"
             "WAVEFRONT_CACHE_DIR). A display is needed: on a headless machine use xvfb-run.\n"
             "\n"
-            "Exit codes: 0 quit (Esc, closing the window, SIGINT/SIGTERM or --frames), 2 bad "
-            "usage or\n"
+            "Exit codes: 0 quit (Esc, closing the window, SIGINT/SIGTERM, --frames or "
+            "--until-done), 2 bad usage or\n"
             "bad input, 1 internal or device failure, or validation messages were counted.\n"};
     return spec;
 }
@@ -120,6 +123,12 @@ int runViewCommand(const std::vector<std::string>& args) {
     options.device = contextOptionsFrom(parsed).deviceIndex;
     options.rayTracing = traversalRequest(parsed);
     options.frames = parsed.uintValue("--frames", 0, 1, 1u << 30);
+    options.untilDone = parsed.has("--until-done");
+    if (options.untilDone && settings.effectiveSppLimit() == 0)
+        throw UsageError("--until-done needs a sample limit: --spp N (or a finite-set sampler)");
+    if (options.untilDone && options.play)
+        throw UsageError("--until-done: a playing animation never finishes refining; use "
+                         "--frames with --play");
     if (auto screenshot = parsed.value("--screenshot")) {
         if (fs::path(*screenshot).extension() != ".exr")
             throw UsageError("--screenshot must end in .exr, got '" + *screenshot + "'");

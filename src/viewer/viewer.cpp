@@ -109,6 +109,7 @@ private:
     VkExtent2D framebuffer_{};
     bool overlayVisible_;
     bool paused_ = false;
+    bool resizePending_ = false; // --resize-at asked for a size the window has not reached yet
     bool screenshotRequested_ = false;
     uint64_t cameraVersion_ = 0;
     Clock::time_point lastMove_ = Clock::now() - std::chrono::hours(1);
@@ -144,8 +145,11 @@ bool Viewer::fitWindow(bool force) {
     const VkExtent2D size = window_.framebufferSize();
     if (size.width == 0 || size.height == 0)
         return false; // minimised
-    if (!force && size.width == framebuffer_.width && size.height == framebuffer_.height)
+    const bool sameSize = size.width == framebuffer_.width && size.height == framebuffer_.height;
+    if (!force && sameSize)
         return true;
+    if (!sameSize)
+        resizePending_ = false;
     framebuffer_ = size;
     presenter_.resize(size);
     rebuildTargets();
@@ -320,7 +324,7 @@ int Viewer::run() {
         overlay_.newFrame();
         const WindowEvents events = window_.takeEvents();
         applyKeys(events);
-        bool moved = input_.moveCamera(controller_, events.wheel, static_cast<float>(seconds));
+        bool moved = input_.moveCamera(controller_, events, static_cast<float>(seconds));
         if (options_.orbitDegrees != 0.0f) {
             controller_.orbit(options_.orbitDegrees * 3.14159265f / 180.0f, 0.0f);
             moved = true;
@@ -339,11 +343,17 @@ int Viewer::run() {
         // Paused or at the limit, a moved camera still gets one sample to show.
         uint32_t samples = 0;
         if (refining() || target.renderer->samplesDone() == 0)
-            samples = targets_.render(target,
-                                      target.divisor == 1 ? settings_.effectiveSppLimit() : 0);
+            samples = targets_.render(
+                target, target.divisor == 1 ? guide_.frameSppLimit(target.renderer.get(),
+                                                                   settings_.effectiveSppLimit())
+                                            : 0);
         if (target.divisor == 1) {
             fullSamples_ += samples;
             guide_.afterSamples(target.renderer.get(), settings_.effectiveSppLimit());
+            if (samples > 0 && !refining() && !options_.quiet)
+                std::fprintf(stderr, "wavefront: refined to %u spp at %ux%u\n",
+                             targets_.fullSpp(), presenter_.extent().width,
+                             presenter_.extent().height);
         } else {
             ++previewFrames_;
         }
@@ -366,9 +376,17 @@ int Viewer::run() {
             std::fprintf(stderr, "wavefront: viewing %s at %ux%u on %s (H: overlay, Esc: quit)\n",
                          options_.scenePath.c_str(), presenter_.extent().width,
                          presenter_.extent().height, context_.deviceName().c_str());
-        if (options_.resizeAt && frame == options_.resizeAt->frame)
+        if (options_.resizeAt && frame == options_.resizeAt->frame) {
+            resizePending_ = true;
             window_.setSize(options_.resizeAt->width, options_.resizeAt->height);
+        }
         if (options_.frames > 0 && frame >= options_.frames)
+            break;
+        // --until-done: the image at its limit, after any --resize-at has reached the window
+        // (the window system applies it some frames later), whatever the frames took.
+        const bool resizeAhead =
+            resizePending_ || (options_.resizeAt && frame < options_.resizeAt->frame);
+        if (options_.untilDone && !refining() && !resizeAhead)
             break;
     }
     const double wall = secondsSince(start);

@@ -61,6 +61,7 @@ struct ViewerOptions {
     bool quiet = false;
     // Automation (scripts and tests).
     uint32_t frames = 0;          // quit after this many frames; 0: when the user quits
+    bool untilDone = false;       // quit once the image reaches its sample limit (--until-done)
     std::string screenshot;       // .exr written on quit, with the shown frame as .png beside it
     std::optional<ResizeAt> resizeAt; // resize the window after a frame
     float orbitDegrees = 0.0f;    // orbit the camera this much every frame, as a drag would

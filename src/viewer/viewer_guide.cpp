@@ -1,5 +1,7 @@
 #include "viewer/viewer_guide.h"
 
+#include <algorithm>
+
 #include "render/guiding/guiding_schedule.h"
 #include "render/guiding/path_guide.h"
 #include "render/render_settings.h"
@@ -55,6 +57,17 @@ void ViewerGuide::afterSamples(WavefrontRenderer* renderer, uint32_t sppLimit) {
     }
     if (guiding::progressiveTrainingEnd(iteration_, kIterations) == 0)
         guide.setTraining(false);
+}
+
+uint32_t ViewerGuide::frameSppLimit(const WavefrontRenderer* renderer, uint32_t sppLimit) const {
+    if (!renderer_ || renderer != renderer_)
+        return sppLimit;
+    const uint32_t end = guiding::progressiveTrainingEnd(iteration_, kIterations);
+    if (end == 0)
+        return sppLimit;
+    const uint32_t start = renderer_->samplesDone() < start_ ? 0 : start_; // as afterSamples
+    const uint32_t iterationEnd = start + end;
+    return sppLimit == 0 ? iterationEnd : std::min(sppLimit, iterationEnd);
 }
 
 std::string ViewerGuide::status() const {

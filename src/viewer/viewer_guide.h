@@ -33,6 +33,10 @@ public:
     // its samples (whole samples only), rebuilding the guide and restarting the image. At the
     // viewer's --spp limit (sppLimit > 0; it counts training samples too) the image is kept.
     void afterSamples(WavefrontRenderer* renderer, uint32_t sppLimit);
+    // The samples per pixel `renderer`'s next frame must not pass: the viewer's limit
+    // (`sppLimit`, 0: none) and, while training, the end of the training iteration, so that
+    // every iteration holds exactly its samples however many a frame's budget allows.
+    uint32_t frameSppLimit(const WavefrontRenderer* renderer, uint32_t sppLimit) const;
     std::string status() const; // one line for the overlay
 
 private:

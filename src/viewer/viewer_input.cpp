@@ -9,20 +9,15 @@
 namespace wf {
 
 ViewerInput::ViewerInput(Window& window, const Overlay& overlay)
-    : window_(window), overlay_(overlay) {
-    glfwGetCursorPos(window.handle(), &lastX_, &lastY_);
-}
+    : window_(window), overlay_(overlay) {}
 
-bool ViewerInput::moveCamera(CameraController& camera, float wheel, float seconds) {
+bool ViewerInput::moveCamera(CameraController& camera, const WindowEvents& events,
+                             float seconds) {
     GLFWwindow* handle = window_.handle();
-    double x = 0.0, y = 0.0;
-    glfwGetCursorPos(handle, &x, &y);
-    const glm::vec2 delta(static_cast<float>(x - lastX_), static_cast<float>(y - lastY_));
-    lastX_ = x;
-    lastY_ = y;
+    // A drag the overlay did not want when the frame first saw its button down is the
+    // camera's until the button is released (the release may be in this very batch).
     for (int button = 0; button < 3; ++button) {
-        const bool down = glfwGetMouseButton(handle, button) == GLFW_PRESS;
-        if (!down)
+        if (!events.buttonDown[button])
             dragging_[button] = false;
         else if (!dragging_[button])
             dragging_[button] = !overlay_.wantsMouse();
@@ -34,13 +29,13 @@ bool ViewerInput::moveCamera(CameraController& camera, float wheel, float second
     CameraInput input;
     input.viewportHeight = window_.windowHeight();
     if (dragging_[GLFW_MOUSE_BUTTON_LEFT])
-        (shift ? input.pan : input.orbit) = delta;
+        (shift ? input.pan : input.orbit) = events.drag[GLFW_MOUSE_BUTTON_LEFT];
     if (dragging_[GLFW_MOUSE_BUTTON_MIDDLE])
-        input.pan = delta;
+        input.pan = events.drag[GLFW_MOUSE_BUTTON_MIDDLE];
     if (dragging_[GLFW_MOUSE_BUTTON_RIGHT])
-        input.look = delta;
+        input.look = events.drag[GLFW_MOUSE_BUTTON_RIGHT];
     if (!overlay_.wantsMouse())
-        input.dolly = wheel;
+        input.dolly = events.wheel;
     if (keys) {
         auto axis = [&](int plus, int minus) {
             return (held(plus) ? 1.0f : 0.0f) - (held(minus) ? 1.0f : 0.0f);

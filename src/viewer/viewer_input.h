@@ -8,20 +8,19 @@ namespace wf {
 class CameraController;
 class Overlay;
 class Window;
+struct WindowEvents;
 
 class ViewerInput {
 public:
     ViewerInput(Window& window, const Overlay& overlay);
 
-    // Applies this frame's drags, wheel steps (`wheel`) and held fly keys (`seconds` since
-    // the last frame) to `camera`; true when it moved.
-    bool moveCamera(CameraController& camera, float wheel, float seconds);
+    // Applies the drags and wheel steps gathered since the last frame (`events`) and the held
+    // fly keys (`seconds` since the last frame) to `camera`; true when it moved.
+    bool moveCamera(CameraController& camera, const WindowEvents& events, float seconds);
 
 private:
     Window& window_;
     const Overlay& overlay_;
-    double lastX_ = 0.0;
-    double lastY_ = 0.0;
     bool dragging_[3] = {false, false, false}; // left, right, middle (GLFW's button order)
 };
 

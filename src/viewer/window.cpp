@@ -45,6 +45,8 @@ Window::Window(const std::string& title, WindowSize size) {
     // Installed before the overlay's, which chains to these.
     glfwSetKeyCallback(window_, onKey);
     glfwSetScrollCallback(window_, onScroll);
+    glfwSetMouseButtonCallback(window_, onMouseButton);
+    glfwSetCursorPosCallback(window_, onCursor);
 }
 
 Window::~Window() {
@@ -97,6 +99,8 @@ void Window::waitEvents(double timeoutSeconds) { glfwWaitEventsTimeout(timeoutSe
 WindowEvents Window::takeEvents() {
     WindowEvents events = std::move(events_);
     events_ = {};
+    for (int button = 0; button < 3; ++button)
+        events_.buttonDown[button] = buttonHeld_[button];
     return events;
 }
 
@@ -111,6 +115,31 @@ void Window::onKey(GLFWwindow* window, int key, int, int action, int mods) {
 void Window::onScroll(GLFWwindow* window, double, double y) {
     static_cast<Window*>(glfwGetWindowUserPointer(window))->events_.wheel +=
         static_cast<float>(y);
+}
+
+void Window::onMouseButton(GLFWwindow* window, int button, int action, int) {
+    auto* self = static_cast<Window*>(glfwGetWindowUserPointer(window));
+    if (button < 0 || button >= 3)
+        return;
+    if (action == GLFW_PRESS) {
+        // The drag starts here: movement before the press is not part of it.
+        double x = 0.0, y = 0.0;
+        glfwGetCursorPos(window, &x, &y);
+        self->cursor_ = glm::vec2(static_cast<float>(x), static_cast<float>(y));
+        self->buttonHeld_[button] = true;
+        self->events_.buttonDown[button] = true;
+    } else if (action == GLFW_RELEASE) {
+        self->buttonHeld_[button] = false;
+    }
+}
+
+void Window::onCursor(GLFWwindow* window, double x, double y) {
+    auto* self = static_cast<Window*>(glfwGetWindowUserPointer(window));
+    const glm::vec2 cursor(static_cast<float>(x), static_cast<float>(y));
+    for (int button = 0; button < 3; ++button)
+        if (self->buttonHeld_[button])
+            self->events_.drag[button] += cursor - self->cursor_;
+    self->cursor_ = cursor;
 }
 
 } // namespace wf

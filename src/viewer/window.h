@@ -1,10 +1,12 @@
 // The viewer's window (GLFW, with no client API: Vulkan presents to it). Owns GLFW's
-// initialisation, turns GLFW errors into InternalError with a hint, and gathers the discrete
-// input (key presses, wheel steps) between frames; held keys and the cursor are polled.
+// initialisation, turns GLFW errors into InternalError with a hint, and gathers the input
+// between frames from GLFW's events (key presses, wheel steps, drags), so that a press, move
+// and release within one slow frame still count; held fly keys are polled.
 #pragma once
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <vulkan/vulkan.h>
 
 struct GLFWwindow;
@@ -15,6 +17,10 @@ struct WindowEvents {
     std::vector<int> keysPressed; // GLFW_KEY_*, in order (auto-repeat ignored)
     std::vector<int> keyMods;     // GLFW_MOD_* of each press
     float wheel = 0.0f;           // vertical scroll steps
+    // Per mouse button (GLFW's order: left, right, middle): whether it was down at some time
+    // since the last frame, and how far the cursor moved while it was held (screen units).
+    bool buttonDown[3] = {false, false, false};
+    glm::vec2 drag[3] = {glm::vec2(0.0f), glm::vec2(0.0f), glm::vec2(0.0f)};
 };
 
 struct WindowSize {
@@ -50,9 +56,13 @@ public:
 private:
     static void onKey(GLFWwindow* window, int key, int scancode, int action, int mods);
     static void onScroll(GLFWwindow* window, double x, double y);
+    static void onMouseButton(GLFWwindow* window, int button, int action, int mods);
+    static void onCursor(GLFWwindow* window, double x, double y);
 
     GLFWwindow* window_ = nullptr;
     WindowEvents events_;
+    bool buttonHeld_[3] = {false, false, false};
+    glm::vec2 cursor_ = glm::vec2(0.0f); // where the last cursor event left it
 };
 
 } // namespace wf
