@@ -50,7 +50,7 @@ WF_INLINE float guideMixturePdf(float bsdfPdf, float guidePdf, float bsdfFractio
 // does not match its integrand, a diffuse room's smooth indirect light, its vertices skip
 // the guide's walks outside training). None below 0.5: a sharp guide's records rarely show
 // the BSDF sample that its gaps leave to 1 / share, so a lower share learnt from them lost
-// (docs/guiding.md, fourth session).
+// (docs/guiding.md, "The learnt BSDF share").
 WF_INLINE float guideFractionCandidate(uint j) {
     return j == 0u ? 0.5f : j == 1u ? 0.6f : j == 2u ? 0.7f : j == 3u ? 0.8f
          : j == 4u ? 0.9f : 1.0f;

@@ -217,8 +217,9 @@ void shadePathVertex(inout PathVertex v) {
 #endif
     // Guided: vertices of bounce index below guide.maxDepth, and any vertex its ray reached by
     // a Dirac bounce (a caustic seen through glass); the rest sample the BSDF alone, where
-    // the mixture's doubled weights would compound (docs/guiding.md, "Levers"). maxDepth 0:
-    // no vertex (training stopped where the guide did not pay), not even the leaf's walk.
+    // the mixture's doubled weights would compound (docs/guiding.md, "Levers, one at a time",
+    // "Guided vertices"). maxDepth 0: no vertex (training stopped where the guide did not
+    // pay), not even the leaf's walk.
     guideHere = guideHere && guide.maxDepth > 0u &&
                 (v.depth < guide.maxDepth || v.previousPdf == 0.0);
     uint guideNode = guideHere ? guideLeafNode(surface.p) : 0u;

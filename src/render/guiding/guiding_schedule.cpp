@@ -101,7 +101,7 @@ GuideSceneTraits guideSceneTraits(const PreparedScene& scene) {
 
 namespace {
 
-// Measured on lavapipe (Mesa 25.0.7, 2 cores), docs/guiding.md "auto" and "Seventh session":
+// Measured on lavapipe (Mesa 25.0.7, 2 cores), docs/guiding.md "auto" and "Current figures":
 // guided over unguided MIS efficiency at equal time (training included), the least over the
 // image sizes and budgets measured, as auto must not lose. Caustic scenes (the glass
 // caustic): 0.94-1.00x at 64x64 over 0.75-8 s (converge, 5 seeds), 0.98x at the gallery's

@@ -23,8 +23,9 @@ namespace guiding {
 // samples the BSDF alone: the image is unguided MIS's. Fewer records do not learn a share
 // below 1 even where the guide pays: the narrow gap's first two iterations never do, its
 // third does in every seed at 64x64 (7 spp of 4096 pixels) and larger, but at 32x32 only its
-// fourth or fifth in most seeds. Measured in docs/guiding.md ("Sixth session", "Seventh
-// session").
+// fourth or fifth in most seeds. Measured in docs/guiding.md ("2026-12-04 17:09-18:08:
+// training stops where the guide does not pay", "2026-12-04 19:48: training may stop after
+// 7 spp; photons tried").
 constexpr uint32_t kUnusedIterationsToStop = 2;
 constexpr uint32_t kFirstUnusedStop = 2;
 constexpr uint64_t kMinStopPixelSamples = 64 * 64 * 7;

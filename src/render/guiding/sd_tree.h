@@ -70,7 +70,8 @@ struct SpatialLeaf {
 // through the leaf by at least this much: where leaves sample the guide, a sample costs
 // 1.15-1.5x an unguided one (docs/guiding.md), and 1 - 1 / 1.4 = 0.3. Measured cuts (64x64
 // and 128x128, 256 spp, seed 1): the narrow gap 0.45-36, the sphere near the floor
-// 0.005-0.22, the glass caustic at 128x128 0-0.8 (docs/guiding.md, "Sixth session").
+// 0.005-0.22, the glass caustic at 128x128 0-0.8 (docs/guiding.md, "2026-12-04 17:09-18:08:
+// training stops where the guide does not pay").
 constexpr double kMinVarianceCut = 0.3;
 
 // The candidate share with the least second moment, or -1 where no record carried light.
@@ -171,8 +172,9 @@ private:
 // The paper's spatial split threshold c * sqrt(2^k) at iteration k (0-based: after the
 // iteration that rendered 2^k spp), with the paper's c = 12000 records whatever the image's
 // size: a leaf's quadtree needs that many records to resolve a caustic's directions
-// (docs/guiding.md, "Spatial threshold c": c scaled down with the pixel count, 1000 at
-// 64x64 and 128x128, gave smaller leaves whose guides missed them).
+// (docs/guiding.md, "Levers, one at a time", "Spatial threshold c = 12000": c scaled down
+// with the pixel count, 1000 at 64x64 and 128x128, gave smaller leaves whose guides missed
+// them).
 double spatialSplitThreshold(std::uint32_t iteration);
 
 } // namespace wf::guiding
