@@ -125,7 +125,8 @@ ck="$work/ck.exr"
 "$wavefront" render "$box" -o "$work/never.exr" --spp 1000000 --width 24 --max-depth 4 \
     --checkpoint "$ck" --checkpoint-every 0.2 --quiet 2>"$work/interrupted.log" &
 pid=$!
-for _ in $(seq 1 100); do [ -s "$ck" ] && break; sleep 0.2; done
+# Until the first checkpoint is written, however long that takes.
+while [ ! -s "$ck" ] && kill -0 "$pid" 2>/dev/null; do sleep 0.2; done
 kill -TERM "$pid"
 wait "$pid"
 code=$?

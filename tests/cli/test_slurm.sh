@@ -27,6 +27,11 @@ if ! command -v slurmctld >/dev/null || ! command -v munged >/dev/null; then
         --no-install-recommends slurm-wlm munge >/dev/null || fail "apt-get install slurm-wlm munge"
 fi
 
+# The daemons below are the machine's (munge's socket, slurm's ports): one run of this test at a
+# time on a machine, whatever else runs (two checkouts' suites at once wait here in turn).
+exec 9>/tmp/wavefront-slurm-test.lock
+flock 9
+
 # munge: a key if there is none, and the daemon as the munge user unless one is running.
 if [ ! -S /run/munge/munge.socket.2 ]; then
     if [ ! -s /etc/munge/munge.key ]; then
@@ -67,16 +72,17 @@ export SLURM_CONF="$work/slurm.conf"
 started+=("$work/slurmctld.pid" "$work/slurmd.pid")
 slurmctld -f "$SLURM_CONF" || fail "slurmctld did not start"
 slurmd -f "$SLURM_CONF" || fail "slurmd did not start"
-for _ in $(seq 1 30); do
+# Generous waits and limits below: only a hang reaches them, not a busy machine.
+for _ in $(seq 1 600); do
     sinfo -h -o %T 2>/dev/null | grep -qE "idle|mixed" && break
     sleep 1
 done
 sinfo -h -o %T | grep -qE "idle|mixed" || { tail -5 "$work/slurmctld.log"; fail "no idle node"; }
 
 flags=(--width 40 --max-depth 4)
-WAVEFRONT="$wavefront" timeout 300 bash "$root/scripts/slurm_render.sh" \
+WAVEFRONT="$wavefront" timeout 3600 bash "$root/scripts/slurm_render.sh" \
     "$root/scenes/cornell_box.gltf" "$work/farm.exr" --parts 4 --spp 18 --wait "${flags[@]}" \
-    -- --time=5 || { cat "$work"/farm.exr.parts/*.log; fail "slurm_render.sh"; }
+    -- --time=60 || { cat "$work"/farm.exr.parts/*.log; fail "slurm_render.sh"; }
 [ -s "$work/farm.exr" ] || fail "no merged image"
 "$wavefront" render "$root/scenes/cornell_box.gltf" -o "$work/one.exr" --spp 18 --quiet \
     "${flags[@]}" || fail "single-machine render"
@@ -87,9 +93,9 @@ echo "4 parts on Slurm merged into one run's image"
 # A 4-frame sequence of the animated scene, each frame in 2 parts: every merged frame equals
 # that frame of one machine's render --frames.
 flags=(--width 32 --max-depth 3)
-WAVEFRONT="$wavefront" timeout 300 bash "$root/scripts/slurm_render.sh" \
+WAVEFRONT="$wavefront" timeout 3600 bash "$root/scripts/slurm_render.sh" \
     "$root/scenes/animated_arm.gltf" "$work/anim/frame_%04d.exr" --frames 0..18:6 --parts 2 \
-    --spp 6 --wait "${flags[@]}" -- --time=5 ||
+    --spp 6 --wait "${flags[@]}" -- --time=60 ||
     { cat "$work"/anim/*.parts/*.log; fail "slurm_render.sh --frames"; }
 "$wavefront" render "$root/scenes/animated_arm.gltf" -o "$work/seq_%d.exr" --frames 0..18:6 \
     --spp 6 --quiet "${flags[@]}" || fail "single-machine --frames"
