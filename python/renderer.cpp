@@ -8,10 +8,10 @@
 #include <pybind11/stl.h>
 
 #include "app/cli.h"
-#include "app/host_memory.h"
+#include "app/reports/host_memory.h"
 #include "app/render_flags.h"
 #include "app/render_options.h"
-#include "app/stats_json.h"
+#include "app/reports/stats_json.h"
 #include "errors.h"
 #include "module_support.h"
 #include "render/adaptive_sampling.h"

@@ -7,12 +7,12 @@
 #include <fstream>
 #include <memory>
 
-#include "app/bench_report.h"
-#include "app/host_memory.h"
+#include "app/reports/bench_report.h"
+#include "app/reports/host_memory.h"
 #include "app/cli.h"
 #include "app/commands.h"
 #include "app/render_options.h"
-#include "app/stats_json.h"
+#include "app/reports/stats_json.h"
 #include "errors.h"
 #include "gpu/context.h"
 #include "image/atomic_file.h"

@@ -10,7 +10,7 @@
 
 #include "app/cli.h"
 #include "app/commands.h"
-#include "app/convergence_report.h"
+#include "app/reports/convergence_report.h"
 #include "app/render_options.h"
 #include "errors.h"
 #include "gpu/context.h"

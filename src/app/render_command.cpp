@@ -7,14 +7,14 @@
 #include <optional>
 
 #include "app/cli.h"
-#include "app/host_memory.h"
+#include "app/reports/host_memory.h"
 #include "app/commands.h"
 #include "app/frame_sequence.h"
 #include "app/progress_line.h"
 #include "app/render_flags.h"
 #include "app/render_options.h"
 #include "app/signal_stop.h"
-#include "app/stats_json.h"
+#include "app/reports/stats_json.h"
 #include "errors.h"
 #include "gpu/context.h"
 #include "image/render_parts.h"

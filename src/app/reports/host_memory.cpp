@@ -1,4 +1,4 @@
-#include "app/host_memory.h"
+#include "app/reports/host_memory.h"
 
 #include <fstream>
 #include <string>

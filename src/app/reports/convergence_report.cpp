@@ -1,4 +1,4 @@
-#include "app/convergence_report.h"
+#include "app/reports/convergence_report.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "app/stats_json.h"
+#include "app/reports/stats_json.h"
 #include "errors.h"
 #include "image/atomic_file.h"
 #include "image/png_writer.h"

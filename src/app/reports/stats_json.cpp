@@ -1,4 +1,4 @@
-#include "app/stats_json.h"
+#include "app/reports/stats_json.h"
 
 #include <algorithm>
 #include <cmath>

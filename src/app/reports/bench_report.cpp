@@ -1,10 +1,10 @@
-#include "app/bench_report.h"
+#include "app/reports/bench_report.h"
 
 #include <algorithm>
 #include <cstdio>
 #include <sstream>
 
-#include "app/stats_json.h"
+#include "app/reports/stats_json.h"
 
 namespace wf {
 namespace {
