@@ -1,4 +1,4 @@
-#include "app/signal_stop.h"
+#include "app/render_loop/signal_stop.h"
 
 namespace wf {
 namespace {

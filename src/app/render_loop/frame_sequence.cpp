@@ -1,7 +1,7 @@
 // The frame loop of render --frames; one frame is the single render's plain path (load, build,
 // render, write EXR + PNG) with the device, the compiler, the renderer and its pipelines, and
 // (--frame-bvh refit) the tree kept between frames.
-#include "app/frame_sequence.h"
+#include "app/render_loop/frame_sequence.h"
 
 #include <chrono>
 #include <cstdio>
