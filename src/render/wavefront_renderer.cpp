@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 
 #include "errors.h"
 #include "gpu/compute_program.h"
@@ -11,6 +10,7 @@
 #include "render/guiding/guiding_schedule.h"
 #include "render/guiding/path_guide.h"
 #include "render/path_buffers.h"
+#include "render/render_params.h"
 #include "render/samplers/sampler_tables.h"
 #include "render/gpu_scene/scene_buffers.h"
 #include "render/wave_recorder.h"
@@ -23,40 +23,6 @@ namespace wf {
 using gpu_types::PassConstants;
 using gpu_types::QueueCounters;
 using gpu_types::RenderParams;
-
-gpu_types::vec3 cameraRight(const Camera& camera) {
-    return glm::normalize(glm::cross(camera.forward, camera.up));
-}
-
-ShaderVariant WavefrontRenderer::variantFor(const PreparedScene& scene) const {
-    const RenderSettings& settings = settings_;
-    const Context& context = context_;
-    ShaderVariant variant = chooseVariant(scene, settings);
-    variant.surface = surfaceFeatures(scene.surface, scene.materials, texelPageBytes(context));
-    variant.rayCones = variant.surface.textures && settings.textureLod;
-    variant.packedStores = settings.packedStores && context.shaderInt64();
-    variant.rayTracing = settings.traversal == Traversal::RayTracing && !settings.megakernel;
-    if (variant.rayTracing && !context.rayTracingEnabled())
-        throw UsageError("--traversal rt: ray tracing is not enabled on device '" +
-                         context.deviceName() + "'");
-    if (variant.rayTracing && variant.motion)
-        throw UsageError("--traversal rt: motion blur (--shutter) is traced by the project's "
-                         "BVH only; use --traversal bvh");
-    variant.guiding = settings.guiding;
-    const VkPhysicalDeviceLimits& limits = context.properties().limits;
-    const uint64_t pageBytes =
-        settings.tablePageBytes > 0
-            ? settings.tablePageBytes
-            : std::min<uint64_t>(limits.maxStorageBufferRange,
-                                 uint64_t(limits.maxTexelBufferElements) * 16);
-    variant.trianglePages =
-        tablePaging(scene.triangles.size(), sizeof(Triangle), pageBytes, "triangles");
-    variant.bvhPages =
-        tablePaging(scene.bvhPairs.size(), sizeof(BvhPair), pageBytes, "BVH nodes");
-    variant.instancePages =
-        tablePaging(scene.instances.size(), sizeof(Instance), pageBytes, "instances");
-    return variant;
-}
 
 WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene& scene,
                                      const RenderSettings& settings,
@@ -85,7 +51,7 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
     const bool cpu = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
     wavePaths_ = settings.submitBudgetSeconds > 0.0 && cpu ? std::min(pathCapacity_, 1u << 12)
                                                            : pathCapacity_;
-    variant_ = variantFor(scene);
+    variant_ = deviceVariant(context, scene, settings);
     defines_ = variant_.defines();
     if (sharedScene && sharedScene->defines() != defines_)
         throw InternalError("scene buffers shared between renderers of different variants");
@@ -144,7 +110,7 @@ void WavefrontRenderer::bindTables() {
 bool WavefrontRenderer::setScene(const PreparedScene& scene) {
     if (guide_) // its tree spans the old scene's bounds
         return false;
-    ShaderVariant variant = variantFor(scene);
+    ShaderVariant variant = deviceVariant(context_, scene, settings_);
     if (variant.defines() != defines_)
         return false;
     // The new tables first: the old ones stay bound until the new ones are complete.
@@ -165,38 +131,8 @@ bool WavefrontRenderer::setScene(const PreparedScene& scene) {
 }
 
 void WavefrontRenderer::uploadParams() {
-    const Camera& camera = camera_;
-    const PreparedScene& scene = *scene_;
-    RenderParams params{};
-    params.cameraPosition = camera.position;
-    params.tanHalfFovY = std::tan(0.5f * camera.yfov);
-    params.cameraForward = camera.forward;
-    params.aspect = float(settings_.width) / float(settings_.height);
-    params.cameraUp = camera.up;
-    params.seed = settings_.seed;
-    params.cameraRight = cameraRight(camera);
-    params.maxDepth = settings_.maxDepth;
-    params.width = settings_.width;
-    params.height = settings_.height;
-    params.pixelCount = pixelCount_;
-    params.rrDepth = settings_.rrDepth;
-    params.emitterCount = static_cast<uint32_t>(scene.lights.emitters.size()) +
-                          (variant_.lightTree() ? 1u : 0u); // the tree's own slot
-    params.pathCapacity = pathCapacity_;
-    params.sphereLightCount = scene.lights.sphereLights;
-    params.environmentEmitter = scene.lights.environmentEmitter;
-    params.sceneCenter = scene.bounds.center;
-    params.sceneRadius = scene.bounds.radius;
-    params.environmentWidth = scene.environment.width;
-    params.environmentHeight = scene.environment.height;
-    params.minThroughput = settings_.minThroughput;
-    params.clampRadiance = settings_.clampRadiance;
-    params.lensRadius = 0.5f * camera.aperture;
-    params.focusDistance = camera.focusDistance;
-    params.orthoHalfHeight = camera.orthoHalfHeight;
-    params.motionSegments = scene.motionSegments;
-    // A camera set since (the viewer's) has no keys: it stays where it is put.
-    params.cameraMotionKeys = camera.motion.empty() ? 0u : scene.cameraMotionKeys;
+    const RenderParams params =
+        renderParams(*scene_, camera_, settings_, variant_, pixelCount_, pathCapacity_);
     pathBuffers_->params.upload(&params, sizeof params);
 }
 

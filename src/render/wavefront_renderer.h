@@ -126,7 +126,6 @@ public:
 
 private:
     void countGuideHostTime(std::chrono::steady_clock::time_point start);
-    ShaderVariant variantFor(const PreparedScene& scene) const;
     void bindTables();
     void uploadParams();
     void clearFilm();
@@ -157,8 +156,5 @@ private:
     std::unique_ptr<Buffer> samplerTable_; // only for samplers that read it
     std::unique_ptr<PathGuide> guide_;     // --guiding only
 };
-
-// The camera looking at the scene: the file's, with the image's aspect.
-gpu_types::vec3 cameraRight(const Camera& camera);
 
 } // namespace wf
