@@ -4,7 +4,9 @@
 // with queue sizes passed from pass to pass on the GPU through indirect dispatch. A wave holds
 // whole samples of every pixel, or one sample of a range of pixels when a whole sample would
 // overrun the submit budget; its size follows the measured time of the previous waves.
-// What a wave records is wave_recorder.h's; reading the film back, film_readback.h's.
+// What a wave records is wave_recorder.h's; reading the film back, film_readback.h's; the
+// variant and parameter block, render_params.h's; the guided renders' iterations are defined
+// in guided_render.cpp.
 #pragma once
 #include <atomic>
 #include <chrono>
