@@ -12,7 +12,7 @@
 #include "render/samplers/sampler_tables.h"
 #include "render/gpu_scene/scene_buffers.h"
 #include "render/wave_recorder.h"
-#include "render/wave_size.h"
+#include "passes/workgroup.h"
 #include "shaders/types/render_types.h"
 #include "shaders/sampling/sampler_tables.h"
 
@@ -31,15 +31,24 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
         settings.maxDepth == 0)
         throw UsageError("width, height, spp and max depth must all be at least 1");
     const uint64_t pixels = uint64_t(settings.width) * settings.height;
+    const uint64_t maxPaths = uint64_t(kMaxGroupsX) * kWorkgroupSize;
     // Waves may cover part of the image, so only the film (16 bytes a pixel) bounds its size.
     const uint64_t maxPixels = context.properties().limits.maxStorageBufferRange / 16;
     if (pixels > maxPixels)
         throw UsageError("image of " + std::to_string(pixels) + " pixels is over this device's "
                          "limit of " + std::to_string(maxPixels) + " pixels");
     pixelCount_ = static_cast<uint32_t>(pixels);
-    pathCapacity_ = wavePathCapacity(settings, pixels);
+    // Guided renders keep 4 training records of 64 bytes per path: at most 2^19 paths keep
+    // them within a 128 MiB storage buffer.
+    const uint64_t guideMaxPaths = settings.guiding ? uint64_t(1) << 19 : maxPaths;
+    pathCapacity_ = static_cast<uint32_t>(std::max<uint64_t>(
+        1, std::min({uint64_t(settings.maxPathsPerWave), maxPaths, guideMaxPaths,
+                     pixels * settings.samplesPerPixel})));
+    // The first wave's size is a guess (a CPU device traces ~1e5-1e6 paths/s, a GPU far more);
+    // later waves follow the measured time.
     const bool cpu = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
-    waveSize_ = WaveSize(pathCapacity_, settings.submitBudgetSeconds, cpu);
+    wavePaths_ = settings.submitBudgetSeconds > 0.0 && cpu ? std::min(pathCapacity_, 1u << 12)
+                                                           : pathCapacity_;
     variant_ = deviceVariant(context, scene, settings);
     defines_ = variant_.defines();
     if (sharedScene && sharedScene->defines() != defines_)
@@ -152,7 +161,7 @@ void WavefrontRenderer::runWave(uint32_t pixelBase, uint32_t pixels, uint32_t fi
     ++stats_.waves;
     stats_.seconds += seconds;
     stats_.longestSubmitSeconds = std::max(stats_.longestSubmitSeconds, seconds);
-    waveSize_.adapt(paths, seconds);
+    adaptWaveSize(paths, seconds);
 }
 
 std::vector<glm::uvec4> WavefrontRenderer::intersectRays(const std::vector<glm::vec4>& origins,
@@ -177,6 +186,21 @@ std::vector<glm::uvec4> WavefrontRenderer::intersectRays(const std::vector<glm::
     return hits;
 }
 
+void WavefrontRenderer::adaptWaveSize(uint32_t paths, double seconds) {
+    // Only full-size waves say how long a full-size wave takes: the image's last pixel range
+    // may be tiny, and fixed costs would dominate it.
+    if (settings_.submitBudgetSeconds <= 0.0 || 2ull * paths < wavePaths_ || seconds <= 0.0)
+        return;
+    // The cost per path follows a slowdown at once and a speed-up slowly, as waves over other
+    // pixels (or a busier machine) may cost more; waves aim at 60% of the budget and grow at
+    // most 4x at a time.
+    secondsPerPath_ = std::max(seconds / paths, 0.75 * secondsPerPath_);
+    const double wanted = 0.6 * settings_.submitBudgetSeconds / secondsPerPath_;
+    const double grown = std::min(wanted, 4.0 * wavePaths_);
+    const uint32_t floor = std::min(pathCapacity_, 1024u);
+    wavePaths_ = static_cast<uint32_t>(std::clamp(grown, double(floor), double(pathCapacity_)));
+}
+
 // One step: several whole samples of every pixel in one wave, or, when a whole sample is over
 // the wave size, one sample in pixel ranges. Either way each pixel receives its samples in
 // order, which is what makes the film independent of the wave sizes.
@@ -188,12 +212,12 @@ uint32_t WavefrontRenderer::advance(uint32_t maxSamples) {
         return 1;
     }
     uint32_t samples = 1;
-    if (waveSize_.paths() >= pixelCount_) {
-        samples = std::min(waveSize_.paths() / pixelCount_, maxSamples);
+    if (wavePaths_ >= pixelCount_) {
+        samples = std::min(wavePaths_ / pixelCount_, maxSamples);
         runWave(0, pixelCount_, samplesDone_, samples);
     } else {
         for (uint32_t base = 0; base < pixelCount_;) {
-            const uint32_t pixels = std::min(waveSize_.paths(), pixelCount_ - base);
+            const uint32_t pixels = std::min(wavePaths_, pixelCount_ - base);
             runWave(base, pixels, samplesDone_, 1);
             base += pixels;
         }
@@ -220,7 +244,7 @@ uint32_t WavefrontRenderer::renderPixels(uint32_t paths) {
 
 void WavefrontRenderer::finishSample() {
     while (pixelCursor_ > 0)
-        renderPixels(waveSize_.paths());
+        renderPixels(wavePaths_);
 }
 
 uint32_t WavefrontRenderer::renderSamples(uint32_t samples) {
@@ -267,14 +291,14 @@ void WavefrontRenderer::renderPixelList(const std::vector<uint32_t>& pixels,
     const uint32_t count = static_cast<uint32_t>(pixels.size());
     // As advance(): whole samples of every listed pixel per wave, or one sample in ranges.
     for (uint32_t done = 0; done < samples;) {
-        if (waveSize_.paths() >= count) {
-            const uint32_t n = std::min(waveSize_.paths() / count, samples - done);
+        if (wavePaths_ >= count) {
+            const uint32_t n = std::min(wavePaths_ / count, samples - done);
             runWave(0, count, firstSample + done, n);
             done += n;
             continue;
         }
         for (uint32_t base = 0; base < count;) {
-            const uint32_t n = std::min(waveSize_.paths(), count - base);
+            const uint32_t n = std::min(wavePaths_, count - base);
             runWave(base, n, firstSample + done, 1);
             base += n;
         }

@@ -24,7 +24,6 @@
 #include "render/render_settings.h"
 #include "render/render_stats.h"
 #include "render/shader_variant.h"
-#include "render/wave_size.h"
 #include "scene/scene.h"
 
 namespace wf {
@@ -119,7 +118,7 @@ public:
     void resetLongestSubmit() { stats_.longestSubmitSeconds = 0.0; }
     uint32_t pathCapacity() const { return pathCapacity_; } // most paths in one wave
     PathGuide* guide() { return guide_.get(); }              // --guiding only, else null
-    uint32_t pathsPerWave() const { return waveSize_.paths(); }    // the current target
+    uint32_t pathsPerWave() const { return wavePaths_; }    // the current target
     std::vector<std::pair<std::string, uint64_t>> memoryReport() const;
     std::shared_ptr<const SceneBuffers> sceneBuffers() const { return sceneBuffers_; }
     // What intersect and shadow trace with, and the driver's structures where that is rt.
@@ -136,13 +135,15 @@ private:
     // Samples [firstSample, firstSample + samples) of sppOffset on, of pixels [pixelBase,
     // pixelBase + pixels) of the image or (pixelList) of the list.
     void runWave(uint32_t pixelBase, uint32_t pixels, uint32_t firstSample, uint32_t samples);
+    void adaptWaveSize(uint32_t paths, double seconds);
     uint32_t setSize() const; // of the finite-set samplers
 
     const Context& context_;
     RenderSettings settings_;
     uint32_t pixelCount_;
     uint32_t pathCapacity_;
-    WaveSize waveSize_; // the paths of a wave: the capacity, or what fits the submit budget
+    uint32_t wavePaths_;
+    double secondsPerPath_ = 0.0; // measured, for sizing waves to the submit budget
     uint32_t pixelCursor_ = 0;    // pixels of sample samplesDone_ already traced
     ShaderVariant variant_;
     const PreparedScene* scene_; // setScene moves it on
