@@ -123,6 +123,10 @@ static const unsigned char* checkedRange(const tinygltf::Model& model, const std
     const std::string viewName = "bufferView " + std::to_string(viewIndex);
     checkIndex(file, view.buffer, model.buffers.size(), "buffer", viewName);
     const size_t bufferSize = model.buffers[view.buffer].data.size();
+    if (bufferSize == 0 && view.byteLength > 0) { // gltf_buffer_streaming's buffer without uri
+        fail(file, name + " reads buffer " + std::to_string(view.buffer) +
+                       ", which has no data (no uri, and not a .glb's BIN chunk)");
+    }
     if (view.byteLength > bufferSize || view.byteOffset > bufferSize - view.byteLength) {
         fail(file, viewName + " extends past the end of buffer " + std::to_string(view.buffer) +
                        " (" + std::to_string(bufferSize) + " bytes)");

@@ -19,10 +19,32 @@ namespace {
 // tinygltf checks a data: URI's length against byteLength, so the stand-in is 4 real bytes.
 constexpr std::string_view STAND_IN_URI = "\"data:application/octet-stream;base64,AAAAAA==\"";
 constexpr std::string_view STAND_IN_LENGTH = "4";
+// A buffer without uri (and not a .glb's BIN chunk) gets the stand-in's uri after its length.
+constexpr std::string_view STAND_IN_LENGTH_AND_URI =
+    "4,\"uri\":\"data:application/octet-stream;base64,AAAAAA==\"";
 // The media types glTF gives a buffer's data URI; tinygltf takes image ones too, so those stay
 // with it.
-constexpr std::array<std::string_view, 2> BUFFER_URI_PREFIXES = {
-    "data:application/octet-stream;base64,", "data:application/gltf-buffer;base64,"};
+constexpr std::array<std::string_view, 2> BUFFER_MEDIA_TYPES = {"application/octet-stream",
+                                                                "application/gltf-buffer"};
+
+// RFC 2397: data:[<media type>][;<parameter>...][;base64],<data>. Whether the URI is a
+// buffer's (one of glTF's media types) and, if so, whether its data is base64 (else
+// percent-encoded bytes).
+std::optional<bool> bufferDataUriIsBase64(std::string_view uri) {
+    const std::size_t comma = uri.find(',');
+    if (comma == std::string_view::npos) {
+        return std::nullopt;
+    }
+    const std::string_view header = uri.substr(5, comma - 5); // after "data:"
+    const std::string_view type = header.substr(0, header.find(';'));
+    if (std::find(BUFFER_MEDIA_TYPES.begin(), BUFFER_MEDIA_TYPES.end(), type) ==
+        BUFFER_MEDIA_TYPES.end()) {
+        return std::nullopt;
+    }
+    constexpr std::string_view BASE64 = ";base64";
+    return header.size() >= BASE64.size() &&
+           header.substr(header.size() - BASE64.size()) == BASE64;
+}
 
 // Where a GLB's chunks lie, when the container passes every check tinygltf makes (else the
 // file is left to tinygltf, which refuses it in its own words).
@@ -100,20 +122,23 @@ std::optional<std::string> percentDecoded(std::string_view uri) {
     return out;
 }
 
-enum class Source { DataUri, File, BinChunk };
+// NoData: a buffer without uri that is not a .glb's BIN chunk (glTF allows one, for extensions
+// to fill); it is kept empty, so any accessor or image that reads it is refused by name.
+enum class Source { DataUri, File, BinChunk, NoData };
 
 struct Take {
     int buffer = 0;
     Source source = Source::File;
     std::size_t byteLength = 0;
     BufferMembers members;
+    bool base64 = true; // a DataUri's encoding: base64, else percent-encoded (RFC 2397)
 };
 
 // Decides for every buffer, before a byte is read; nothing when any buffer is unclear, since
 // a buffer tinygltf reads must still find the BIN chunk it may refer to.
 std::optional<std::vector<Take>> planTakes(std::string_view json,
                                            const std::vector<BufferMembers>& buffers,
-                                           bool hasBin) {
+                                           bool binary, bool hasBin) {
     std::vector<Take> takes;
     for (std::size_t b = 0; b < buffers.size(); ++b) {
         const BufferMembers& members = buffers[b];
@@ -125,10 +150,11 @@ std::optional<std::vector<Take>> planTakes(std::string_view json,
         Take take{int(b), Source::File, *byteLength, members};
         if (!members.uri.present()) {
             // Only buffer 0 may be the BIN chunk; tinygltf gives it to any buffer without uri.
-            if (!hasBin || b != 0) {
+            // A .glb without one whose buffer 0 has no uri is left to tinygltf, which refuses it.
+            if (b == 0 && binary && !hasBin) {
                 return std::nullopt;
             }
-            take.source = Source::BinChunk;
+            take.source = b == 0 && hasBin ? Source::BinChunk : Source::NoData;
         } else {
             const std::string_view uri =
                 json.substr(members.uri.begin + 1, members.uri.end - members.uri.begin - 2);
@@ -136,13 +162,12 @@ std::optional<std::vector<Take>> planTakes(std::string_view json,
                 return std::nullopt;
             }
             if (uri.rfind("data:", 0) == 0) {
-                const bool buffer = std::any_of(
-                    BUFFER_URI_PREFIXES.begin(), BUFFER_URI_PREFIXES.end(),
-                    [&](std::string_view prefix) { return uri.rfind(prefix, 0) == 0; });
-                if (!buffer) {
+                const std::optional<bool> base64 = bufferDataUriIsBase64(uri);
+                if (!base64) {
                     return std::nullopt;
                 }
                 take.source = Source::DataUri;
+                take.base64 = *base64;
             }
         }
         takes.push_back(take);
@@ -157,10 +182,20 @@ std::vector<unsigned char> readTake(const Take& take, std::string_view json, FsP
         json.substr(take.members.uri.begin + 1, take.members.uri.end - take.members.uri.begin - 2);
     std::vector<unsigned char> bytes;
     std::string what;
+    if (take.source == Source::NoData) {
+        return bytes;
+    }
     if (take.source == Source::DataUri) {
         const std::size_t comma = uri.find(',') + 1;
-        if (!decodeBase64(uri.data() + comma, uri.size() - comma, bytes)) {
+        if (take.base64 && !decodeBase64(uri.data() + comma, uri.size() - comma, bytes)) {
             fail(file, name + ": its data URI is not valid base64");
+        }
+        if (!take.base64) {
+            const std::optional<std::string> data = percentDecoded(uri.substr(comma));
+            if (!data) {
+                fail(file, name + ": its data URI has a malformed %-escape");
+            }
+            bytes.assign(data->begin(), data->end());
         }
         what = "its data URI";
     } else {
@@ -188,7 +223,9 @@ std::string standInJson(std::string_view json, const std::vector<Take>& takes) {
         if (take.members.uri.present()) {
             edits.push_back({take.members.uri, STAND_IN_URI});
         }
-        edits.push_back({take.members.byteLength, STAND_IN_LENGTH});
+        edits.push_back({take.members.byteLength, take.source == Source::NoData
+                                                      ? STAND_IN_LENGTH_AND_URI
+                                                      : STAND_IN_LENGTH});
     }
     std::sort(edits.begin(), edits.end(),
               [](const auto& a, const auto& b) { return a.first.begin < b.first.begin; });
@@ -291,7 +328,7 @@ TakenBuffers takeBuffers(std::vector<unsigned char>& document, bool binary, FsPo
         return {};
     }
     const std::optional<std::vector<Take>> takes =
-        planTakes(json, *buffers, glb && glb->binLength > 0);
+        planTakes(json, *buffers, binary, glb && glb->binLength > 0);
     if (!takes) {
         return {};
     }
@@ -327,8 +364,8 @@ void returnBuffers(tinygltf::Model& model, TakenBuffers& taken, const std::strin
         if (std::size_t(index) >= model.buffers.size() || model.buffers[index].data.size() != 4) {
             fail(file, "buffer " + std::to_string(index) + " was not parsed as it was read");
         }
-        model.buffers[index].data = std::move(bytes);
-        model.buffers[index].uri.clear(); // the stand-in's
+        model.buffers[index].data = std::move(bytes); // empty for a buffer without data
+        model.buffers[index].uri.clear();             // the stand-in's
     }
     taken.buffers.clear();
 }
