@@ -814,9 +814,16 @@ broken("skin_joint_out_of_range.gltf", "names joint 5 at vertex 2, but the skin 
        skinned(joint=5))
 
 # --- Refusals that once came in tinygltf's or its JSON parser's words. ---
+# A buffer without uri is valid glTF (extensions may fill it): unused, it costs nothing; a
+# primitive that reads it is skipped with a warning.
 g = tri()
 g.more_buffers = [{"byteLength": 16}]
-broken("buffer_without_uri.gltf", "a buffer has no uri", g)
+case("valid/unused_buffer_without_uri.gltf", "loads 1", g)
+g = tri()
+g.more_buffers = [{"byteLength": 36}]
+doc = g.finish()
+doc["bufferViews"][0]["buffer"] = 1
+case("valid/primitive_reads_buffer_without_uri.gltf", "loads 0", doc)
 g = tri()
 g.doc["nodes"][0]["translation"] = [0, 0, "HUGE"]
 case("invalid/number_overflow.gltf", "refused the number 1e309, which no double can hold",

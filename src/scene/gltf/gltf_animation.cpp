@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "errors.h"
 #include "scene/animation/keyframes.h"
 
 namespace wf::gltf {
@@ -109,7 +110,8 @@ anim::Keyframes readSampler(const tinygltf::Model& model, const std::string& fil
 
 std::vector<NodeAnimation> sampleAnimations(const tinygltf::Model& model, const std::string& file,
                                             AccessorReader& reader, double time,
-                                            const std::string& which, double* lastKey) {
+                                            const std::string& which, double* lastKey,
+                                            bool restPoseOnBadKeys) {
     std::vector<NodeAnimation> nodes(model.nodes.size());
     if (lastKey)
         *lastKey = 0.0;
@@ -119,6 +121,10 @@ std::vector<NodeAnimation> sampleAnimations(const tinygltf::Model& model, const 
         const std::string aname = "animation " + std::to_string(a);
         if (animation.channels.empty())
             fail(file, aname + " has no channels");
+        std::vector<NodeAnimation> before;
+        if (restPoseOnBadKeys)
+            before = nodes;
+        const double lastKeyBefore = lastKey ? *lastKey : 0.0;
         for (std::size_t c = 0; c < animation.channels.size(); ++c) {
             const tinygltf::AnimationChannel& channel = animation.channels[c];
             const std::string cname = aname + " channel " + std::to_string(c);
@@ -150,9 +156,23 @@ std::vector<NodeAnimation> sampleAnimations(const tinygltf::Model& model, const 
             }
             const std::string sname =
                 aname + " sampler " + std::to_string(channel.sampler) + " (" + cname + ")";
-            const anim::Keyframes keys = readSampler(model, file, reader,
-                                                     animation.samplers[channel.sampler], sname,
-                                                     path, width);
+            anim::Keyframes keys;
+            try {
+                keys = readSampler(model, file, reader, animation.samplers[channel.sampler], sname,
+                                   path, width);
+            } catch (const InputError& e) {
+                if (!restPoseOnBadKeys)
+                    throw;
+                // The rest of this animation is dropped and what it set so far is undone.
+                std::string problem = e.what();
+                problem.erase(0, std::min(problem.size(), file.size() + 2)); // "<file>: "
+                warn(file, aname + " ignored (the scene is rendered at time 0 without it; a "
+                               "--time or --animation asking for it refuses the file): " + problem);
+                nodes = std::move(before);
+                if (lastKey)
+                    *lastKey = lastKeyBefore;
+                break;
+            }
             if (!chosen[a])
                 continue;
             if (lastKey)

@@ -35,15 +35,28 @@ std::optional<bool> bufferDataUriIsBase64(std::string_view uri) {
     if (comma == std::string_view::npos) {
         return std::nullopt;
     }
-    const std::string_view header = uri.substr(5, comma - 5); // after "data:"
+    std::string_view header = uri.substr(5, comma - 5); // after "data:"
     const std::string_view type = header.substr(0, header.find(';'));
     if (std::find(BUFFER_MEDIA_TYPES.begin(), BUFFER_MEDIA_TYPES.end(), type) ==
         BUFFER_MEDIA_TYPES.end()) {
         return std::nullopt;
     }
     constexpr std::string_view BASE64 = ";base64";
-    return header.size() >= BASE64.size() &&
-           header.substr(header.size() - BASE64.size()) == BASE64;
+    const bool base64 = header.size() >= BASE64.size() &&
+                        header.substr(header.size() - BASE64.size()) == BASE64;
+    header = header.substr(type.size(),
+                           header.size() - type.size() - (base64 ? BASE64.size() : 0));
+    // What lies between is ";attribute=value" parameters, each non-empty.
+    while (!header.empty()) {
+        const std::size_t next = header.find(';', 1);
+        const std::string_view parameter =
+            header.substr(1, next == header.npos ? header.npos : next - 1);
+        if (header[0] != ';' || parameter.find('=') == parameter.npos || parameter.front() == '=') {
+            return std::nullopt;
+        }
+        header = next == header.npos ? std::string_view() : header.substr(next);
+    }
+    return base64;
 }
 
 // Where a GLB's chunks lie, when the container passes every check tinygltf makes (else the

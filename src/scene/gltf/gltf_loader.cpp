@@ -277,8 +277,10 @@ void Converter::walkNodes(gltf::PrimitiveBuilder& builder) {
 // Samples the animations at the time, then every node's world transform (joints outside the
 // scene's tree included), parents before children via the checked parent links.
 void Converter::poseNodes() {
+    const bool atRest = options_.time == 0.0 && options_.animation.empty() &&
+                        !(options_.shutterClose > options_.shutterOpen);
     animated_ = gltf::sampleAnimations(model_, file_, reader_, options_.time, options_.animation,
-                                       &scene_.animationSeconds);
+                                       &scene_.animationSeconds, atRest);
     nodeWorld_ = gltf::nodeWorldTransforms(model_, file_, parent_, animated_);
 }
 
@@ -409,27 +411,55 @@ Scene loadModel(std::vector<unsigned char> bytes, const std::string& path,
     // decoded buffers are then taken like any other buffer.
     const gltf::CompressionPlan compression = gltf::planDecompression(bytes, binary, path);
     gltf::TakenBuffers taken = gltf::takeBuffers(bytes, binary, policy, path);
-    const size_t size = bytes.size();
-    // tinygltf 2.7.0's GLB chunk check forgets the 8-byte chunk header, so it may read up to
-    // 8 bytes past the end; zero padding makes that harmless.
-    bytes.resize(size + 16, 0);
     tinygltf::TinyGLTF parser;
     gltf::restrictFileAccess(parser, policy);
     tinygltf::Model model;
     std::string err, warn;
     bool loaded = false;
-    try {
-        const std::string base = policy.folder.string();
-        loaded = binary ? parser.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(),
-                                                      unsigned(size), base)
-                        : parser.LoadASCIIFromString(&model, &err, &warn,
-                                                     reinterpret_cast<const char*>(bytes.data()),
-                                                     unsigned(size), base);
-    } catch (const std::exception& e) {
-        err += e.what();
+    size_t size = bytes.size();
+    auto parse = [&] {
+        // tinygltf 2.7.0's GLB chunk check forgets the 8-byte chunk header, so it may read up
+        // to 8 bytes past the end; zero padding makes that harmless.
+        bytes.resize(size + 16, 0);
+        model = tinygltf::Model();
+        err.clear();
+        warn.clear();
+        loaded = false;
+        try {
+            const std::string base = policy.folder.string();
+            loaded = binary ? parser.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(),
+                                                          unsigned(size), base)
+                            : parser.LoadASCIIFromString(
+                                  &model, &err, &warn,
+                                  reinterpret_cast<const char*>(bytes.data()), unsigned(size),
+                                  base);
+        } catch (const std::exception& e) {
+            err += e.what();
+        }
+        // tinygltf drops some broken objects (an animation channel without its sampler) and
+        // goes on, saying so in `err`: such a file is refused like the others.
+        return loaded && gltf::droppedByTinygltf(err).empty();
+    };
+    if (!parse()) {
+        // Valid glTF that tinygltf refuses is mended and parsed once more (gltf_parse_errors.h);
+        // the first refusal stands when that does not help.
+        const bool wasLoaded = loaded;
+        const std::string firstErr = err;
+        bool mended = false;
+        std::vector<unsigned char> copy(bytes.begin(), bytes.begin() + long(size));
+        const std::vector<std::string> mends = gltf::mendForTinygltf(copy, size, binary, mended);
+        if (mended) {
+            std::swap(bytes, copy);
+            size = bytes.size();
+            if (parse()) {
+                for (const std::string& line : mends)
+                    gltf::warn(path, line);
+            } else {
+                loaded = wasLoaded;
+                err = firstErr;
+            }
+        }
     }
-    // tinygltf drops some broken objects (an animation channel without its sampler) and goes
-    // on, saying so in `err`: such a file is refused like the others.
     const std::string kept = loaded ? gltf::keptByTinygltf(err) : std::string();
     if (loaded)
         err = gltf::droppedByTinygltf(err);

@@ -3,8 +3,15 @@
 // trailing "name = []") taken off.
 #include "scene/gltf/gltf_parse_errors.h"
 
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <regex>
 #include <sstream>
+
+#include "scene/gltf/gltf_buffer_streaming.h"
 
 namespace wf::gltf {
 
@@ -120,7 +127,160 @@ bool reportedByTheLoader(const std::string& line) {
             line.find("buffer") == std::string::npos);
 }
 
+using Json = nlohmann::json;
+
+// JSON does not tell 1 from 1.0; tinygltf wants integers for indices, counts and lengths.
+bool integralFloatsToIntegers(Json& value) {
+    if (value.is_number_float()) {
+        const double d = value.get<double>();
+        if (!std::isfinite(d) || d != std::floor(d) || std::fabs(d) > 9.0e15)
+            return false;
+        value = d >= 0.0 ? Json(std::uint64_t(d)) : Json(std::int64_t(d));
+        return true;
+    }
+    bool changed = false;
+    if (value.is_array() || value.is_object())
+        for (Json& element : value)
+            changed |= integralFloatsToIntegers(element);
+    return changed;
+}
+
+Json* arrayOf(Json& object, const char* key) {
+    if (!object.is_object())
+        return nullptr;
+    const auto found = object.find(key);
+    return found != object.end() && found->is_array() ? &*found : nullptr;
+}
+
+// Channels without a target node; an animation left without channels goes whole.
+bool dropChannelsWithoutNode(Json& doc, std::vector<std::string>& warnings) {
+    Json* animations = arrayOf(doc, "animations");
+    if (!animations)
+        return false;
+    bool changed = false;
+    for (std::size_t a = animations->size(); a-- > 0;) {
+        Json* channels = arrayOf((*animations)[a], "channels");
+        if (!channels)
+            continue;
+        std::size_t dropped = 0;
+        for (std::size_t c = channels->size(); c-- > 0;) {
+            const Json& target = (*channels)[c].is_object() && (*channels)[c].contains("target")
+                                     ? (*channels)[c]["target"]
+                                     : Json();
+            if (target.is_object() && !target.contains("node")) {
+                channels->erase(c);
+                ++dropped;
+            }
+        }
+        if (dropped == 0)
+            continue;
+        changed = true;
+        const std::string what = "animation " + std::to_string(a) + ": " +
+                                 std::to_string(dropped) +
+                                 " channel(s) target no node (KHR_animation_pointer or another "
+                                 "extension's targets, not supported)";
+        if (channels->empty()) {
+            animations->erase(a);
+            warnings.push_back(what + "; the animation is ignored");
+        } else {
+            warnings.push_back(what + "; they are ignored");
+        }
+    }
+    return changed;
+}
+
+// A primitive whose indices accessor has neither bufferView nor sparse values indexes vertex 0
+// only: every triangle degenerate, nothing to draw.
+bool dropPrimitivesWithZeroIndices(Json& doc, std::vector<std::string>& warnings) {
+    Json* meshes = arrayOf(doc, "meshes");
+    Json* accessors = arrayOf(doc, "accessors");
+    if (!meshes || !accessors)
+        return false;
+    bool changed = false;
+    for (std::size_t m = 0; m < meshes->size(); ++m) {
+        Json* primitives = arrayOf((*meshes)[m], "primitives");
+        for (std::size_t p = primitives ? primitives->size() : 0; p-- > 0;) {
+            const Json& primitive = (*primitives)[p];
+            if (!primitive.is_object() || !primitive.contains("indices") ||
+                !primitive["indices"].is_number_unsigned())
+                continue;
+            const std::uint64_t i = primitive["indices"].get<std::uint64_t>();
+            if (i >= accessors->size() || !(*accessors)[i].is_object() ||
+                (*accessors)[i].contains("bufferView") || (*accessors)[i].contains("sparse"))
+                continue;
+            primitives->erase(p);
+            changed = true;
+            warnings.push_back("mesh " + std::to_string(m) + " primitive " + std::to_string(p) +
+                               ": its indices accessor " + std::to_string(i) +
+                               " has no bufferView (every index 0, no triangle); skipped");
+        }
+    }
+    return changed;
+}
+
+// An accessor type glTF does not name (the validator warns) is harmless where nothing reads
+// accessors at all: no meshes, animations or skins. Elsewhere the refusal stands.
+bool retypeUnreadAccessors(Json& doc, std::vector<std::string>& warnings) {
+    Json* accessors = arrayOf(doc, "accessors");
+    for (const char* reader : {"meshes", "animations", "skins"})
+        if (Json* readers = arrayOf(doc, reader); readers && !readers->empty())
+            return false;
+    if (!accessors)
+        return false;
+    bool changed = false;
+    for (std::size_t a = 0; a < accessors->size(); ++a) {
+        Json& accessor = (*accessors)[a];
+        if (!accessor.is_object() || !accessor.contains("type") || !accessor["type"].is_string())
+            continue;
+        const std::string type = accessor["type"].get<std::string>();
+        if (type == "SCALAR" || type == "VEC2" || type == "VEC3" || type == "VEC4" ||
+            type == "MAT2" || type == "MAT3" || type == "MAT4")
+            continue;
+        accessor["type"] = "SCALAR";
+        changed = true;
+        warnings.push_back("accessor " + std::to_string(a) + ": type '" + type.substr(0, 40) +
+                           "' is not glTF's; nothing reads it");
+    }
+    return changed;
+}
+
 } // namespace
+
+std::vector<std::string> mendForTinygltf(std::vector<unsigned char>& document, std::size_t size,
+                                         bool binary, bool& mended) {
+    mended = false;
+    std::size_t jsonStart = 0, jsonLength = size;
+    if (binary) {
+        std::uint32_t chunkLength = 0;
+        if (size < 20 || std::memcmp(document.data() + 16, "JSON", 4) != 0)
+            return {};
+        std::memcpy(&chunkLength, document.data() + 12, 4);
+        if (chunkLength > size - 20)
+            return {};
+        jsonStart = 20;
+        jsonLength = chunkLength;
+    }
+    const unsigned char* text = document.data() + jsonStart;
+    Json doc = Json::parse(text, text + jsonLength, nullptr, false);
+    if (!doc.is_object())
+        return {};
+    std::vector<std::string> warnings;
+    mended |= integralFloatsToIntegers(doc);
+    mended |= dropChannelsWithoutNode(doc, warnings);
+    mended |= dropPrimitivesWithZeroIndices(doc, warnings);
+    mended |= retypeUnreadAccessors(doc, warnings);
+    if (!mended)
+        return {};
+    std::string json = doc.dump(-1, ' ', false, Json::error_handler_t::replace);
+    if (!binary) {
+        document.assign(json.begin(), json.end());
+    } else {
+        const std::size_t restStart = jsonStart + jsonLength;
+        document = glbContainer(document.data(), std::move(json), document.data() + restStart,
+                                size - restStart);
+    }
+    return warnings;
+}
 
 std::string parseFailureInOwnWords(const std::string& tinygltfErrors) {
     const std::vector<std::string> all = lines(tinygltfErrors);
