@@ -222,6 +222,29 @@ TEST(GltfAnimation, MorphTargetsFollowAnimatedWeights) {
     expectNear(rest.triangles[0].p0, {0, 0, 0.5f});
 }
 
+// Key times that do not increase (accessors without a bufferView give all zeros, and the
+// validator calls such files valid): at time 0 with no animation named, the animation is dropped
+// with one warning and the scene is at rest; any other time refuses the file.
+TEST(GltfAnimation, UnorderedKeyTimesAreDroppedAtRestOnly) {
+    test::TempDir dir;
+    test::MiniGltf g = morphFile();
+    const int times = addData<float>(g, {0, 0}, test::F32, 2, "SCALAR");
+    g.extra.replace(g.extra.find("\"input\":") + 8, 1, std::to_string(times));
+    const std::string path = g.write(dir);
+    std::vector<std::string> warnings;
+    const Scene rest = loadGltf(path, &warnings);
+    ASSERT_EQ(rest.triangles.size(), 1u);
+    expectNear(rest.triangles[0].p0, {0, 0, 0.5f}); // the mesh's own weights
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("animation 0 ignored"), std::string::npos) << warnings[0];
+    GltfOptions options;
+    options.time = 1.0;
+    EXPECT_THROW(loadGltf(path, nullptr, options), InputError);
+    options.time = 0.0;
+    options.animation = "0";
+    EXPECT_THROW(loadGltf(path, nullptr, options), InputError);
+}
+
 void expectRefused(const test::MiniGltf& g, const std::string& substring) {
     test::TempDir dir;
     try {

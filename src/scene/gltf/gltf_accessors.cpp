@@ -286,4 +286,25 @@ std::vector<uint32_t> AccessorReader::indices(int accessor, size_t vertexCount,
     return out;
 }
 
+int accessorWithoutData(const tinygltf::Model& model, const tinygltf::Primitive& primitive) {
+    std::vector<int> accessors{primitive.indices};
+    for (const auto& [name, index] : primitive.attributes)
+        accessors.push_back(index);
+    for (const auto& target : primitive.targets)
+        for (const auto& [name, index] : target)
+            accessors.push_back(index);
+    for (int a : accessors) {
+        if (a < 0 || std::size_t(a) >= model.accessors.size())
+            continue;
+        const int view = model.accessors[a].bufferView;
+        if (view < 0 || std::size_t(view) >= model.bufferViews.size())
+            continue;
+        const int buffer = model.bufferViews[view].buffer;
+        if (buffer >= 0 && std::size_t(buffer) < model.buffers.size() &&
+            model.buffers[buffer].data.empty() && model.buffers[buffer].uri.empty())
+            return a;
+    }
+    return -1;
+}
+
 } // namespace wf::gltf

@@ -12,6 +12,7 @@
 
 namespace tinygltf {
 class Model;
+struct Primitive;
 }
 
 namespace wf::gltf {
@@ -30,6 +31,10 @@ void checkIndex(const std::string& file, int index, std::size_t size, const std:
 // One warning line "warning: <file>: <problem>" (kind "note" for notes), collected while a
 // WarningSink is alive on this thread, else printed to stderr at once.
 void warn(const std::string& file, const std::string& problem, const char* kind = "warning");
+
+// The first of the primitive's accessors (indices, attributes, morph targets) whose bufferView
+// lies in a buffer without data (gltf_buffer_streaming keeps a buffer without uri empty), or -1.
+int accessorWithoutData(const tinygltf::Model& model, const tinygltf::Primitive& primitive);
 
 // Collects the warnings of one load, so a refused file prints its one error line and nothing
 // else, and a loaded one prints its warnings after everything else about it was checked.

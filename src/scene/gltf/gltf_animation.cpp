@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "errors.h"
 #include "scene/animation/keyframes.h"
 
 namespace wf::gltf {
@@ -52,10 +51,12 @@ unsigned outputTypes(const std::string& path) {
     return FLOAT_BIT;
 }
 
-// Reads and checks one sampler for a channel of `width` values per key.
+// Reads and checks one sampler for a channel of `width` values per key. With `unordered`, key
+// times that do not increase are said there (and no keys returned) instead of refused.
 anim::Keyframes readSampler(const tinygltf::Model& model, const std::string& file,
                             AccessorReader& reader, const tinygltf::AnimationSampler& sampler,
-                            const std::string& name, const std::string& path, std::size_t width) {
+                            const std::string& name, const std::string& path, std::size_t width,
+                            std::string* unordered) {
     anim::Keyframes keys;
     keys.width = width;
     keys.rotation = path == "rotation";
@@ -78,9 +79,15 @@ anim::Keyframes readSampler(const tinygltf::Model& model, const std::string& fil
     if (times.count == 0)
         fail(file, name + ": no key times");
     for (std::size_t k = 0; k < times.count; ++k) {
-        if (times.values[k] < 0.0f || (k > 0 && !(times.values[k] > times.values[k - 1])))
-            fail(file, name + ": key time " + std::to_string(k) +
-                           " is negative or not after the one before (times must increase)");
+        if (times.values[k] < 0.0f || (k > 0 && !(times.values[k] > times.values[k - 1]))) {
+            const std::string problem = name + ": key time " + std::to_string(k) +
+                                        " is negative or not after the one before (times must "
+                                        "increase)";
+            if (!unordered)
+                fail(file, problem);
+            *unordered = problem;
+            return keys;
+        }
     }
     const bool cubic = keys.interpolation == anim::Interpolation::CubicSpline;
     if (cubic && times.count < 2)
@@ -156,18 +163,15 @@ std::vector<NodeAnimation> sampleAnimations(const tinygltf::Model& model, const 
             }
             const std::string sname =
                 aname + " sampler " + std::to_string(channel.sampler) + " (" + cname + ")";
-            anim::Keyframes keys;
-            try {
-                keys = readSampler(model, file, reader, animation.samplers[channel.sampler], sname,
-                                   path, width);
-            } catch (const InputError& e) {
-                if (!restPoseOnBadKeys)
-                    throw;
+            std::string unordered;
+            const anim::Keyframes keys =
+                readSampler(model, file, reader, animation.samplers[channel.sampler], sname, path,
+                            width, restPoseOnBadKeys ? &unordered : nullptr);
+            if (!unordered.empty()) {
                 // The rest of this animation is dropped and what it set so far is undone.
-                std::string problem = e.what();
-                problem.erase(0, std::min(problem.size(), file.size() + 2)); // "<file>: "
                 warn(file, aname + " ignored (the scene is rendered at time 0 without it; a "
-                               "--time or --animation asking for it refuses the file): " + problem);
+                               "--time or --animation asking for it refuses the file): " +
+                               unordered);
                 nodes = std::move(before);
                 if (lastKey)
                     *lastKey = lastKeyBefore;

@@ -32,8 +32,8 @@ std::size_t morphTargetCount(const tinygltf::Model& model, int mesh);
 // (InputError listing the file's animations when none matches). Time is clamped to each
 // sampler's keys. `lastKey`, when given, receives the chosen animations' last key time (0 for
 // none): how long they play. `restPoseOnBadKeys` (a render at time 0 that names no animation):
-// an animation whose sampler is refused (key times not increasing, as accessors without a
-// bufferView give: all zero) is dropped with one warning instead, since such a render needs none.
+// an animation whose key times do not increase (as accessors without a bufferView give: all
+// zero) is dropped with one warning instead of refused, since such a render needs none.
 std::vector<NodeAnimation> sampleAnimations(const tinygltf::Model& model, const std::string& file,
                                             AccessorReader& reader, double time,
                                             const std::string& which, double* lastKey = nullptr,

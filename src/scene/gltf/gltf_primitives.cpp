@@ -176,29 +176,6 @@ std::vector<uint32_t> PrimitiveBuilder::corners(int mode, size_t vertexCount, in
     return out;
 }
 
-// The first of the primitive's accessors whose bufferView lies in a buffer without data
-// (gltf_buffer_streaming keeps a buffer without uri empty), or -1.
-int PrimitiveBuilder::accessorWithoutData(const tinygltf::Primitive& primitive) const {
-    std::vector<int> accessors{primitive.indices};
-    for (const auto& [name, index] : primitive.attributes)
-        accessors.push_back(index);
-    for (const auto& target : primitive.targets)
-        for (const auto& [name, index] : target)
-            accessors.push_back(index);
-    for (int a : accessors) {
-        if (a < 0 || std::size_t(a) >= model_.accessors.size())
-            continue;
-        const int view = model_.accessors[a].bufferView;
-        if (view < 0 || std::size_t(view) >= model_.bufferViews.size())
-            continue;
-        const int buffer = model_.bufferViews[view].buffer;
-        if (buffer >= 0 && std::size_t(buffer) < model_.buffers.size() &&
-            model_.buffers[buffer].data.empty() && model_.buffers[buffer].uri.empty())
-            return a;
-    }
-    return -1;
-}
-
 void PrimitiveBuilder::add(const tinygltf::Primitive& primitive, const std::string& where,
                            const glm::dmat4& world, uint32_t mesh,
                            const Deformation* deformation) {
@@ -215,7 +192,7 @@ void PrimitiveBuilder::add(const tinygltf::Primitive& primitive, const std::stri
         mode != TINYGLTF_MODE_TRIANGLE_FAN) {
         fail(file_, where + ": mode " + std::to_string(mode) + " is not a glTF primitive mode");
     }
-    if (const int empty = accessorWithoutData(primitive); empty != -1) {
+    if (const int empty = accessorWithoutData(model_, primitive); empty != -1) {
         gltf::warn(file_, where + " skipped: its accessor " + std::to_string(empty) +
                               " reads a buffer without data (no uri; glTF leaves such buffers to "
                               "extensions)");

@@ -74,7 +74,6 @@ public:
     bool usedDefaultMaterial() const { return usedDefault_; }
 
 private:
-    int accessorWithoutData(const tinygltf::Primitive& primitive) const;
     std::vector<uint32_t> corners(int mode, size_t vertexCount, int indices,
                                   const std::string& where);
 
