@@ -7,8 +7,8 @@
 #include <random>
 
 #include "errors.h"
-#include "scene/gltf/gltf_buffer_streaming.h"
-#include "scene/gltf/gltf_json_scan.h"
+#include "scene/gltf/io/gltf_buffer_streaming.h"
+#include "scene/gltf/io/gltf_json_scan.h"
 #include "scene/gltf/gltf_loader.h"
 #include "mini_gltf.h"
 

@@ -8,7 +8,7 @@
 
 #include "scene/gltf/gltf_accessors.h"
 #include "scene/gltf/compression/gltf_codecs.h"
-#include "scene/gltf/gltf_file_access.h"
+#include "scene/gltf/io/gltf_file_access.h"
 
 namespace wf::gltf {
 

@@ -9,7 +9,7 @@
 #include <string_view>
 
 #include "scene/gltf/gltf_accessors.h"
-#include "scene/gltf/gltf_buffer_streaming.h"
+#include "scene/gltf/io/gltf_buffer_streaming.h"
 #include "scene/gltf/compression/gltf_codecs.h"
 #include "scene/gltf/gltf_materials.h"
 

@@ -1,7 +1,7 @@
 // Known tinygltf 2.7.0 and nlohmann::json messages, each rewritten by pattern; anything else
 // is kept as the rule it states, with the library's marks (backticks, "[json.exception...]",
 // trailing "name = []") taken off.
-#include "scene/gltf/gltf_parse_errors.h"
+#include "scene/gltf/io/gltf_parse_errors.h"
 
 #include <nlohmann/json.hpp>
 
@@ -11,7 +11,7 @@
 #include <regex>
 #include <sstream>
 
-#include "scene/gltf/gltf_buffer_streaming.h"
+#include "scene/gltf/io/gltf_buffer_streaming.h"
 
 namespace wf::gltf {
 

@@ -1,4 +1,4 @@
-#include "scene/gltf/gltf_buffer_streaming.h"
+#include "scene/gltf/io/gltf_buffer_streaming.h"
 
 #include <tiny_gltf.h>
 
@@ -10,8 +10,8 @@
 #include <string_view>
 
 #include "scene/gltf/gltf_accessors.h"
-#include "scene/gltf/gltf_file_access.h"
-#include "scene/gltf/gltf_json_scan.h"
+#include "scene/gltf/io/gltf_file_access.h"
+#include "scene/gltf/io/gltf_json_scan.h"
 
 namespace wf::gltf {
 namespace {

@@ -1,6 +1,6 @@
 // tinygltf's default hooks read any path a file names, "../" and absolute ones included, and
 // hand every image to stb_image; these replacements confine it to the scene's folder.
-#include "scene/gltf/gltf_file_access.h"
+#include "scene/gltf/io/gltf_file_access.h"
 
 #include <tiny_gltf.h>
 
@@ -10,7 +10,7 @@
 #include <fstream>
 #include <optional>
 
-#include "scene/gltf/gltf_buffer_streaming.h"
+#include "scene/gltf/io/gltf_buffer_streaming.h"
 
 namespace wf::gltf {
 namespace {

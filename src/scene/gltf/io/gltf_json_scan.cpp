@@ -1,4 +1,4 @@
-#include "scene/gltf/gltf_json_scan.h"
+#include "scene/gltf/io/gltf_json_scan.h"
 
 namespace wf::gltf {
 namespace {
