@@ -18,17 +18,17 @@
 
 #include "errors.h"
 #include "scene/gltf/gltf_accessors.h"
-#include "scene/gltf/gltf_animation.h"
+#include "scene/gltf/posing/gltf_animation.h"
 #include "scene/gltf/io/gltf_buffer_streaming.h"
 #include "scene/gltf/compression/gltf_compression.h"
 #include "scene/gltf/io/gltf_file_access.h"
 #include "scene/gltf/gltf_images.h"
 #include "scene/gltf/gltf_instancing.h"
 #include "scene/gltf/gltf_lights_cameras.h"
-#include "scene/gltf/gltf_node_pose.h"
+#include "scene/gltf/posing/gltf_node_pose.h"
 #include "scene/gltf/io/gltf_parse_errors.h"
 #include "scene/gltf/gltf_materials.h"
-#include "scene/gltf/gltf_motion.h"
+#include "scene/gltf/posing/gltf_motion.h"
 #include "scene/gltf/gltf_primitives.h"
 
 namespace wf {

@@ -10,7 +10,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "scene/gltf/gltf_accessors.h"
-#include "scene/gltf/gltf_deformation.h"
+#include "scene/gltf/posing/gltf_deformation.h"
 #include "scene/gltf/gltf_materials.h"
 #include "scene/scene.h"
 

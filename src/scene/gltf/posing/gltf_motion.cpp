@@ -1,11 +1,11 @@
-#include "scene/gltf/gltf_motion.h"
+#include "scene/gltf/posing/gltf_motion.h"
 
 #include <tiny_gltf.h>
 
 #include "scene/gltf/gltf_accessors.h"
 #include "scene/gltf/gltf_instancing.h"
 #include "scene/gltf/gltf_lights_cameras.h"
-#include "scene/gltf/gltf_node_pose.h"
+#include "scene/gltf/posing/gltf_node_pose.h"
 
 namespace wf::gltf {
 

@@ -7,7 +7,7 @@
 
 #include <glm/mat4x4.hpp>
 
-#include "scene/gltf/gltf_animation.h"
+#include "scene/gltf/posing/gltf_animation.h"
 #include "scene/gltf/gltf_materials.h"
 #include "scene/scene.h"
 

@@ -1,6 +1,6 @@
 // A node's local transform: its matrix, or T x R x S with any of the three replaced by what
 // the animations set at the time (gltf_animation.h), every number checked.
-#include "scene/gltf/gltf_node_pose.h"
+#include "scene/gltf/posing/gltf_node_pose.h"
 
 #include <tiny_gltf.h>
 

@@ -1,6 +1,6 @@
 // Animation channels and samplers checked and sampled (glTF 2.0 section 3.11). tinygltf parses
 // the indices and strings; nothing else about them is trusted.
-#include "scene/gltf/gltf_animation.h"
+#include "scene/gltf/posing/gltf_animation.h"
 
 #include <tiny_gltf.h>
 

@@ -1,5 +1,5 @@
 // Morph targets and skins of one primitive (glTF 2.0 sections 3.7.2.2, 3.7.3).
-#include "scene/gltf/gltf_deformation.h"
+#include "scene/gltf/posing/gltf_deformation.h"
 
 #include <tiny_gltf.h>
 
