@@ -12,6 +12,7 @@
 #include "errors.h"
 #include "scene/gltf/gltf_loader.h"
 #include "scene/gltf/gltf_primitives.h"
+#include "scene/gltf/gltf_scene_limits.h"
 #include "scene/scene_summary.h"
 #include "mini_gltf.h"
 

@@ -4,6 +4,7 @@
 
 #include "errors.h"
 #include "scene/gltf/gltf_primitives.h"
+#include "scene/gltf/gltf_scene_limits.h"
 
 namespace wf {
 

@@ -30,6 +30,7 @@
 #include "scene/gltf/gltf_materials.h"
 #include "scene/gltf/posing/gltf_motion.h"
 #include "scene/gltf/gltf_primitives.h"
+#include "scene/gltf/gltf_scene_limits.h"
 
 namespace wf {
 namespace {
@@ -79,7 +80,6 @@ private:
     glm::dmat4 localTransform(int nodeIndex) const;
     void walkNodes(gltf::PrimitiveBuilder& builder);
     std::vector<std::size_t> countPlacements() const;
-    std::size_t checkPlacedTriangles(const std::vector<std::size_t>& placements) const;
     void addDefaultEnvironment();
     void poseNodes();
     gltf::Deformation deformationOf(int nodeIndex);
@@ -194,28 +194,6 @@ std::vector<std::size_t> Converter::countPlacements() const {
         stack.insert(stack.end(), node.children.begin(), node.children.end());
     }
     return placements;
-}
-
-// Counts the triangles the scene keeps (flattened copies, and instanced meshes once) from the
-// accessors' counts alone, before any is read, so that a small file placing a big mesh at many
-// nodes is refused at once rather than after filling memory. Returns the count.
-std::size_t Converter::checkPlacedTriangles(const std::vector<std::size_t>& placements) const {
-    double total = 0.0, instances = 0.0;
-    for (std::size_t m = 0; m < model_.meshes.size(); ++m) {
-        double triangles = 0.0;
-        for (const tinygltf::Primitive& primitive : model_.meshes[m].primitives)
-            triangles += double(gltf::estimatedTriangles(model_, primitive));
-        total += triangles * (instanced_[m] ? std::min<double>(placements[m], 1.0)
-                                            : double(placements[m]));
-        instances += instanced_[m] ? double(placements[m]) : 0.0;
-    }
-    if (total > double(gltf::maxSceneTriangles()))
-        fail("its nodes place more than " + std::to_string(gltf::maxSceneTriangles()) +
-             " triangles, " + gltf::sceneTriangleLimitReason());
-    if (instances > double(gltf::kMaxInstances))
-        fail("its nodes place more than " + std::to_string(gltf::kMaxInstances) +
-             " instances, the most the renderer keeps");
-    return std::size_t(total);
 }
 
 // Depth-first, children in file order, without recursion so deep trees cannot overflow the
@@ -346,7 +324,7 @@ Scene Converter::run() {
             (node.skin != -1 || gltf::morphTargetCount(model_, node.mesh) > 0))
             instanced_[node.mesh] = false;
     blurred_ = gltf::meshesToBlur(model_, file_, shutter_, tables, instanced_);
-    builder.reserve(checkPlacedTriangles(placements));
+    builder.reserve(gltf::checkPlacedTriangles(model_, file_, placements, instanced_));
     walkNodes(builder);
     builder.finish(scene_);
     bool moves = !scene_.lightMotionKeys.empty();

@@ -2,8 +2,6 @@
 // position, so indexed, non-indexed, strip and fan primitives share one loop.
 #include "scene/gltf/gltf_primitives.h"
 
-#include <unistd.h>
-
 #include <tiny_gltf.h>
 
 #include <algorithm>
@@ -14,43 +12,11 @@
 #include <glm/gtc/packing.hpp>
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include "scene/gltf/gltf_scene_limits.h"
 #include "scene/gltf/tangent_generation.h"
 
 namespace wf::gltf {
 
-namespace {
-
-std::size_t physicalMemoryBytes() {
-    const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGE_SIZE);
-    return pages > 0 && pageSize > 0 ? std::size_t(pages) * std::size_t(pageSize) : 0;
-}
-
-std::size_t memoryTriangleLimit() {
-    const std::size_t bytes = physicalMemoryBytes();
-    return bytes > 0 ? bytes / kHostBytesPerTriangle : kTraversalTriangleLimit;
-}
-
-} // namespace
-
-std::size_t maxSceneTriangles() {
-    return std::min(kTraversalTriangleLimit, memoryTriangleLimit());
-}
-
-std::size_t trianglesOfPrimitive(int mode, std::size_t corners) {
-    if (mode == TINYGLTF_MODE_TRIANGLES)
-        return corners / 3;
-    if (mode == TINYGLTF_MODE_TRIANGLE_STRIP || mode == TINYGLTF_MODE_TRIANGLE_FAN)
-        return corners >= 3 ? corners - 2 : 0;
-    return 0;
-}
-
-std::string sceneTriangleLimitReason() {
-    if (memoryTriangleLimit() >= kTraversalTriangleLimit)
-        return "the BVH's triangle index limit";
-    return "the most this machine's " + std::to_string(physicalMemoryBytes() >> 30) +
-           " GiB of memory holds at about " + std::to_string(kHostBytesPerTriangle) +
-           " bytes a triangle (meshes placed by several nodes are copied)";
-}
 namespace {
 
 // The GPU normalizes cross(p1 - p0, p2 - p0) in float; a triangle whose float cross product
