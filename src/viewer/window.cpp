@@ -47,6 +47,9 @@ Window::Window(const std::string& title, WindowSize size) {
     glfwSetScrollCallback(window_, onScroll);
     glfwSetMouseButtonCallback(window_, onMouseButton);
     glfwSetCursorPosCallback(window_, onCursor);
+    double x = 0.0, y = 0.0;
+    glfwGetCursorPos(window_, &x, &y);
+    cursor_ = glm::vec2(static_cast<float>(x), static_cast<float>(y));
 }
 
 Window::~Window() {
@@ -122,10 +125,9 @@ void Window::onMouseButton(GLFWwindow* window, int button, int action, int) {
     if (button < 0 || button >= 3)
         return;
     if (action == GLFW_PRESS) {
-        // The drag starts here: movement before the press is not part of it.
-        double x = 0.0, y = 0.0;
-        glfwGetCursorPos(window, &x, &y);
-        self->cursor_ = glm::vec2(static_cast<float>(x), static_cast<float>(y));
+        // The drag starts at the last cursor event, the press's place in the event order (not
+        // glfwGetCursorPos: the pointer may be further on by the time a slow frame reads its
+        // queue), so movement before the press is not part of it.
         self->buttonHeld_[button] = true;
         self->events_.buttonDown[button] = true;
     } else if (action == GLFW_RELEASE) {

@@ -216,9 +216,9 @@ check "no temporary files left" bash -c "! ls '$work' | grep -q tmp"
     step 1 "refined to 4 spp"
     xdotool key --window "$window" p
     step 1 "wavefront: wrote "
-    xdotool mousemove --window "$window" 40 48 mousedown 1
-    xdotool mousemove --window "$window" 90 40
-    xdotool mouseup 1
+    # One xdotool call: press, move and release usually reach the viewer within one frame.
+    xdotool mousemove --window "$window" 40 48 mousedown 1 mousemove --window "$window" 90 40 \
+        mouseup 1
     step 2 "refined to 4 spp"
     xdotool key --window "$window" F12
     step 2 "wavefront: wrote "
