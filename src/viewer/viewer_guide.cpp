@@ -65,8 +65,8 @@ uint32_t ViewerGuide::frameSppLimit(const WavefrontRenderer* renderer, uint32_t 
     const uint32_t end = guiding::progressiveTrainingEnd(iteration_, kIterations);
     if (end == 0)
         return sppLimit;
-    const uint32_t start = renderer_->samplesDone() < start_ ? 0 : start_; // as afterSamples
-    const uint32_t iterationEnd = start + end;
+    // A moved camera (samplesDone() below start_) began a new image; afterSamples resets start_.
+    const uint32_t iterationEnd = (renderer_->samplesDone() < start_ ? 0 : start_) + end;
     return sppLimit == 0 ? iterationEnd : std::min(sppLimit, iterationEnd);
 }
 

@@ -28,8 +28,8 @@ std::optional<fs::path> resolveUri(FsPolicy& policy, const std::string& uri) {
     };
     // tinygltf decodes the data: URIs it can and hands the rest over as file names.
     if (uri.rfind("data:", 0) == 0) {
-        return refuse("a data: uri must be 'data:<media type>;base64,<data>' with a media "
-                      "type glTF allows");
+        return refuse("a data: uri must be 'data:<media type>;base64,<data>' (a buffer's may "
+                      "also hold percent-encoded data) with a media type glTF allows");
     }
     const fs::path relative(uri);
     if (uri.empty() || relative.is_absolute() || relative.has_root_path()) {

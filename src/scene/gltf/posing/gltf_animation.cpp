@@ -128,10 +128,16 @@ std::vector<NodeAnimation> sampleAnimations(const tinygltf::Model& model, const 
         const std::string aname = "animation " + std::to_string(a);
         if (animation.channels.empty())
             fail(file, aname + " has no channels");
-        std::vector<NodeAnimation> before;
-        if (restPoseOnBadKeys)
-            before = nodes;
-        const double lastKeyBefore = lastKey ? *lastKey : 0.0;
+        // This animation's channels, applied once all of them read well: an animation dropped
+        // for its key times leaves no channel behind.
+        struct Write {
+            int node;
+            const std::string* path;
+            std::vector<double> value;
+        };
+        std::vector<Write> writes;
+        double animationLastKey = 0.0;
+        bool dropped = false;
         for (std::size_t c = 0; c < animation.channels.size(); ++c) {
             const tinygltf::AnimationChannel& channel = animation.channels[c];
             const std::string cname = aname + " channel " + std::to_string(c);
@@ -168,26 +174,29 @@ std::vector<NodeAnimation> sampleAnimations(const tinygltf::Model& model, const 
                 readSampler(model, file, reader, animation.samplers[channel.sampler], sname, path,
                             width, restPoseOnBadKeys ? &unordered : nullptr);
             if (!unordered.empty()) {
-                // The rest of this animation is dropped and what it set so far is undone.
                 warn(file, aname + " ignored (the scene is rendered at time 0 without it; a "
                                "--time or --animation asking for it refuses the file): " +
                                unordered);
-                nodes = std::move(before);
-                if (lastKey)
-                    *lastKey = lastKeyBefore;
+                dropped = true;
                 break;
             }
             if (!chosen[a])
                 continue;
-            if (lastKey)
-                *lastKey = std::max(*lastKey, double(keys.times.back()));
-            const std::vector<double> v = anim::sample(keys, time);
-            NodeAnimation& target = nodes[channel.target_node];
-            if (path == "translation")
+            animationLastKey = std::max(animationLastKey, double(keys.times.back()));
+            writes.push_back({channel.target_node, &path, anim::sample(keys, time)});
+        }
+        if (dropped)
+            continue;
+        if (lastKey)
+            *lastKey = std::max(*lastKey, animationLastKey);
+        for (const Write& write : writes) {
+            const std::vector<double>& v = write.value;
+            NodeAnimation& target = nodes[write.node];
+            if (*write.path == "translation")
                 target.translation = glm::dvec3(v[0], v[1], v[2]);
-            else if (path == "scale")
+            else if (*write.path == "scale")
                 target.scale = glm::dvec3(v[0], v[1], v[2]);
-            else if (path == "rotation")
+            else if (*write.path == "rotation")
                 target.rotation = glm::dquat(v[3], v[0], v[1], v[2]);
             else
                 target.weights = v;
