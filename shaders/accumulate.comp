@@ -7,6 +7,8 @@
 // In: radiance of the wave's paths (with --aov, their first hits too). Out: film[pixel]
 // (with --aov, aovFilm[2 pixel ..]; with WF_SECOND_MOMENT, momentFilm[pixel]: the sums of
 // squares and the largest component of any sample, which render/error_estimate.h reads),
+// with WF_ERROR_REPLICATES, replicateFilm: the sums and counts of each replicate's samples but
+// the first, from which the film's error is estimated for correlated samplers),
 // counters.nonFiniteSamples.
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = WF_WORKGROUP_SIZE) in;
@@ -37,11 +39,23 @@ void main() {
 #if WF_SECOND_MOMENT
     vec4 squares = momentFilm[pixel];
 #endif
+#if defined(WF_ERROR_REPLICATES) && WF_ERROR_REPLICATES > 1
+    const uint others = uint(WF_ERROR_REPLICATES) - 1u;
+    vec4 replicates[WF_ERROR_REPLICATES - 1];
+    for (uint r = 0u; r < others; ++r)
+        replicates[r] = replicateFilm[pixel * others + r];
+#endif
     uint dropped = 0u;
     for (uint s = 0u; s < pass.samplesPerPixel; ++s) {
         uint path = local + s * pass.wavePixels;
         vec3 value = radianceAt(path).rgb;
-        if (isFiniteBits(value)) {
+        bool finite = isFiniteBits(value);
+#if defined(WF_ERROR_REPLICATES) && WF_ERROR_REPLICATES > 1
+        uint replicate = (pass.sampleBase + s) % uint(WF_ERROR_REPLICATES);
+        if (replicate > 0u) // a dropped sample counts as zero in its replicate, as in the film
+            replicates[replicate - 1u] += vec4(finite ? value : vec3(0.0), 1.0);
+#endif
+        if (finite) {
             sum.rgb += value;
 #if WF_GUIDING
             guideSplatPath(path, value); // the path is done: credit its guided vertices
@@ -64,6 +78,10 @@ void main() {
 #endif
 #if WF_SECOND_MOMENT
     momentFilm[pixel] = squares;
+#endif
+#if defined(WF_ERROR_REPLICATES) && WF_ERROR_REPLICATES > 1
+    for (uint r = 0u; r < others; ++r)
+        replicateFilm[pixel * others + r] = replicates[r];
 #endif
     if (dropped > 0u)
         atomicAdd(counters.nonFiniteSamples, dropped);

@@ -89,6 +89,19 @@ WF_INLINE float independentSample1D(uint pixel, uint sampleIndex, uint dimension
 
 #define WF_RANDOMIZE (WF_SAMPLER_RANDOMIZE != 0)
 
+// Error replicates (--error-replicates K, WF_ERROR_REPLICATES): sample i of a pixel is sample
+// i / K of replicate i % K, and each replicate randomizes the sampler with a seed of its own.
+// Every replicate is then a whole sequence of the sampler (its power-of-two prefixes nets, for
+// sobol), independent of the others, and interleaving keeps them equally long in any prefix
+// of a pixel's samples. Replicate 0 keeps the render's seed.
+#ifndef WF_ERROR_REPLICATES
+#define WF_ERROR_REPLICATES 1
+#endif
+#define WF_REPLICATE_SALT 0x7265706cu
+WF_INLINE uint replicateSeed(uint seed, uint replicate) {
+    return replicate == 0u ? seed : pcg4d(uvec4(seed, replicate, WF_REPLICATE_SALT, WF_KEY_SALT)).x;
+}
+
 #if !defined(__cplusplus) && WF_SAMPLER == WF_SAMPLER_BLUENOISE
 // The blue-noise mask is laid over the image: it needs the pixel's coordinates.
 uvec2 samplerPixelXY(uint pixel) { return uvec2(pixel % params.width, pixel / params.width); }
@@ -98,6 +111,10 @@ uint samplerSetSize() { return samplerTable(WF_SAMPLER_TABLE_SET_SIZE); }
 #endif
 
 WF_INLINE vec2 sample2D(uint pixel, uint sampleIndex, uint dimension, uint seed) {
+#if WF_ERROR_REPLICATES > 1
+    seed = replicateSeed(seed, sampleIndex % uint(WF_ERROR_REPLICATES));
+    sampleIndex /= uint(WF_ERROR_REPLICATES);
+#endif
 #if WF_SAMPLER == WF_SAMPLER_SOBOL
     return sobolSample2D(pixel, sampleIndex, dimension, seed, WF_RANDOMIZE);
 #elif WF_SAMPLER == WF_SAMPLER_STRATIFIED
@@ -116,6 +133,10 @@ WF_INLINE vec2 sample2D(uint pixel, uint sampleIndex, uint dimension, uint seed)
 }
 
 WF_INLINE float sample1D(uint pixel, uint sampleIndex, uint dimension, uint seed) {
+#if WF_ERROR_REPLICATES > 1
+    seed = replicateSeed(seed, sampleIndex % uint(WF_ERROR_REPLICATES));
+    sampleIndex /= uint(WF_ERROR_REPLICATES);
+#endif
 #if WF_SAMPLER == WF_SAMPLER_SOBOL
     return sobolSample1D(pixel, sampleIndex, dimension, seed, WF_RANDOMIZE);
 #elif WF_SAMPLER == WF_SAMPLER_STRATIFIED || WF_SAMPLER == WF_SAMPLER_MULTIJITTER

@@ -64,6 +64,7 @@ namespace wf::gpu_types {
 #define WF_BINDING_AOV_FILM 35  // --aov: per pixel, sums of those (2 vec4)
 #define WF_BINDING_MOMENT_FILM 36   // --aov variance, --target-error: per pixel, radiance^2 sums
 #define WF_BINDING_ACTIVE_PIXELS 37 // --target-error: the pixels a wave's pixel range lists
+#define WF_BINDING_REPLICATE_FILM 26 // --error-replicates K: per pixel, replicates 1 .. K-1's sums
 #define WF_BINDING_RAY_CONES 38       // WF_RAY_CONES: per path, the ray's cone (ray_cones.glsl)
 #define WF_BINDING_RAY_CONE_TEXELS 39 // the same, read as RG32UI texels
 #define WF_BINDING_TRIANGLE_PAGE1 49 // pages 1-7 of the triangles (49 .. 55)

@@ -56,6 +56,13 @@ layout(std430, binding = WF_BINDING_MOMENT_FILM) buffer MomentFilmBuffer {
     vec4 momentFilm[]; // rgb: sum of radiance squared, beside the film's sum; a: largest sample
 };
 #endif
+#if defined(WF_ERROR_REPLICATES) && WF_ERROR_REPLICATES > 1
+// Per pixel, K - 1 entries: replicate r's rgb sum and sample count at [pixel (K - 1) + r - 1].
+// Replicate 0's are the film's less theirs (rng.h says which samples a replicate holds).
+layout(std430, binding = WF_BINDING_REPLICATE_FILM) buffer ReplicateFilmBuffer {
+    vec4 replicateFilm[];
+};
+#endif
 #if WF_ADAPTIVE
 layout(std430, binding = WF_BINDING_ACTIVE_PIXELS) readonly buffer ActivePixelBuffer {
     uint activePixels[]; // image pixel indices, in the order waves cover them

@@ -423,7 +423,7 @@ int runRenderCommand(const std::vector<std::string>& args) {
         writeCheckpoint();
     reportPeakHostMemory(verbose, statsContext);
     const ErrorEstimate estimate = finished.errorEstimate.value_or(ErrorEstimate{
-        0.0, 0.0, 0.0, 0, 0, false, "the checkpoint resumed carries no error estimate"});
+        .reliable = false, .reason = "the checkpoint resumed carries no error estimate"});
     if (auto json = parsed.value("--json")) {
         statsContext.extraFields.push_back({"errorEstimate", errorEstimateJson(estimate)});
         writeStatsJson(*json, stats, statsContext);

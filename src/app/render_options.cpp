@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "errors.h"
+#include "render/adaptive_sampling.h"
 #include "render/guiding/guiding_schedule.h"
 #include "render/samplers/samplers.h"
 #include "scene/default_camera.h"
@@ -60,6 +61,14 @@ std::vector<OptionSpec> samplingOptions() {
                                   "sample it frozen"},
         {"--sampler", "", "NAME", "sample pattern: independent, stratified, multijitter, "
                                   "halton, hammersley, sobol (default) or bluenoise"},
+        {"--error-replicates", "", "K", "split each pixel's samples into K independently "
+                                        "randomized copies of the sampler's sequence, whose "
+                                        "spread measures the image's error for any sampler "
+                                        "(calibrated, not a bound); 1 to 16 (default 1: one "
+                                        "sequence, whose estimate bounds a correlated "
+                                        "sampler's error from above; 2 with --target-error; "
+                                        "the independent sampler needs none; a guided "
+                                        "render's combined iterations keep the bound)"},
         {"--texture-filter", "", "MODE", "cone (mip levels chosen by ray cones; default) or "
                                          "none (full-resolution bilinear lookups)"},
         {"--shade-split", "", "MODE", "auto (scenes of Lambert and smooth mirror or glass "
@@ -213,6 +222,9 @@ void applyRenderFlags(const ParsedArgs& parsed, uint32_t defaultMaxDepth,
     settings.sampler = parseSampler(
         parsed.choiceValue("--sampler", samplerName(kDefaultSampler), samplerNames()));
     settings.randomizeSamples = !parsed.has("--no-randomize");
+    // A target is planned and judged by the estimate: calibrated unless told otherwise.
+    settings.errorReplicates = parsed.uintValue(
+        "--error-replicates", parsed.has("--target-error") ? kTargetErrorReplicates : 1, 1, 16);
     const guiding::GuidingMode guide =
         guiding::parseGuidingMode(parsed.choiceValue("--guiding", "auto", {"off", "on", "auto"}));
     settings.guiding = guide == guiding::GuidingMode::On;

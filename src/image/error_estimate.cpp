@@ -29,6 +29,15 @@ void judgeErrorEstimate(ErrorEstimate& e) {
                    " of it: a few bright samples carry it (heavy tails)";
         return;
     }
+    if (e.relMse > 0.0 && e.effectivePixels < kReliableEffectivePixels) {
+        char text[160];
+        std::snprintf(text, sizeof text,
+                      "about %.0f pixels carry it: one render's error scatters by about %s "
+                      "around it",
+                      e.effectivePixels, percent(std::sqrt(2.0 / std::max(e.effectivePixels, 1.0))).c_str());
+        e.reason = text;
+        return;
+    }
     if (e.relMse > 0.0 && e.singleSampleShare > kReliableSingleSampleShare * e.relMse) {
         e.reason = percent(e.singleSampleShare / e.relMse) +
                    " of it comes from pixels where one sample holds most of the light: their "
@@ -40,7 +49,7 @@ void judgeErrorEstimate(ErrorEstimate& e) {
 }
 
 ErrorEstimate mergeErrorEstimates(const std::vector<ErrorEstimate>& parts,
-                                  const std::vector<double>& samplesPerPixel) {
+                                  const std::vector<double>& samplesPerPixel, bool correlated) {
     if (parts.size() != samplesPerPixel.size() || parts.empty())
         throw InternalError("mergeErrorEstimates: one sample count per part");
     double total = 0.0;
@@ -56,7 +65,12 @@ ErrorEstimate mergeErrorEstimates(const std::vector<ErrorEstimate>& parts,
         merged.singleSampleShare += w * w * parts[k].singleSampleShare;
         merged.pixels = k == 0 ? parts[k].pixels : std::min(merged.pixels, parts[k].pixels);
         merged.pixelsTotal = std::max(merged.pixelsTotal, parts[k].pixelsTotal);
-        merged.upperBound = merged.upperBound || parts[k].upperBound;
+        merged.effectivePixels = k == 0 ? parts[k].effectivePixels
+                                        : std::min(merged.effectivePixels, parts[k].effectivePixels);
+        merged.upperBound = merged.upperBound || parts[k].upperBound ||
+                            (correlated && parts.size() > 1);
+        merged.replicates = k == 0 ? parts[k].replicates
+                                   : std::min(merged.replicates, parts[k].replicates);
         if (!parts[k].reliable && unreliable.empty())
             unreliable = "part " + std::to_string(k + 1) + "'s is not: " + parts[k].reason;
     }

@@ -32,6 +32,9 @@ struct ErrorEstimate {
     double relMse = 0.0;            // the image's estimated relMSE
     double standardError = 0.0;     // of relMse itself
     double singleSampleShare = 0.0; // of relMse, in pixels one sample dominates
+    // (sum e_i)^2 / sum e_i^2 over the pixels' estimates e_i: how many pixels carry it. One
+    // render's error scatters around its expectation by about sqrt(2 / effectivePixels).
+    double effectivePixels = 0.0;
     uint32_t pixels = 0;            // pixels with at least two samples (the estimate's base)
     uint32_t pixelsTotal = 0;
     bool reliable = false;
@@ -42,6 +45,10 @@ struct ErrorEstimate {
     // above the measured error on the laboratory's scenes (docs/architecture.md). A target
     // met by the bound is met.
     bool upperBound = false;
+    // How it was made: 1 from the samples' variance, K > 1 from the spread of K independently
+    // randomized replicates (--error-replicates), which measures correlated samplers' error
+    // without bias: then no upper bound.
+    uint32_t replicates = 1;
 };
 
 // The thresholds of `reliable`: the estimate's relative standard error (about 25 fireflies
@@ -51,14 +58,21 @@ struct ErrorEstimate {
 // factor of 2 of the measured relMSE (docs/architecture.md).
 inline constexpr double kReliableRelativeError = 0.2;
 inline constexpr double kReliableSingleSampleShare = 0.5;
+// And the pixels that carry it: where fewer do, one render's error scatters around its
+// expectation by more than sqrt(2 / 50) = 0.2 of it (Veach's plates and the sphere near the
+// floor at 32x32 rest on 2-40 pixels; docs/architecture.md).
+inline constexpr double kReliableEffectivePixels = 50.0;
 
 // Sets `reliable` and `reason` from the other fields and the thresholds above.
 void judgeErrorEstimate(ErrorEstimate& estimate);
 
-// The estimate of a sample-weighted merge of independent renders (checkpoint + rest, merge's
-// parts): sum of (n_k / N)^2 relMse_k, with N the total. Not reliable where any part is not.
+// The estimate of a sample-weighted merge of renders (checkpoint + rest, merge's parts):
+// sum of (n_k / N)^2 relMse_k, with N the total. Not reliable where any part is not. The parts
+// of one render are sample ranges of one sequence: `correlated` (every sampler but
+// independent) says their errors may partly cancel, so the sum bounds the merge's from above.
 ErrorEstimate mergeErrorEstimates(const std::vector<ErrorEstimate>& parts,
-                                  const std::vector<double>& samplesPerPixel);
+                                  const std::vector<double>& samplesPerPixel,
+                                  bool correlated);
 
 // "0.0123 (+-0.0011)", "<= 0.0123 (+-0.0011)" (an upper bound) or "0.0123 (unreliable)", for
 // progress lines and warnings.

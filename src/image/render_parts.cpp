@@ -94,6 +94,11 @@ RenderPart readRenderPart(const std::string& path) {
         estimate.reliable = readExrAttribute(path, "errorEstimateReliable") == "true";
         estimate.reason = readExrAttribute(path, "errorEstimateReason").value_or("");
         estimate.upperBound = readExrAttribute(path, "errorEstimateIsUpperBound") == "true";
+        estimate.replicates = static_cast<uint32_t>(std::max(1.0, number("errorEstimateReplicates")));
+        // Files from before it: every pixel, which the verdict they carry did not weigh.
+        estimate.effectivePixels = readExrAttribute(path, "estimatedRelMseEffectivePixels")
+                                       ? number("estimatedRelMseEffectivePixels")
+                                       : double(estimate.pixelsTotal);
         part.errorEstimate = estimate;
     }
     if (part.spp == 0)
@@ -112,17 +117,21 @@ void writeRenderPart(const std::string& path, const RenderPart& part,
         {"software", "Wavefront"}, {"scene", part.scene}, {"sampler", part.sampler},
         {"sceneHash", part.sceneHash}, {"renderSettings", part.renderSettings}};
     if (const auto& estimate = part.errorEstimate) {
-        char numbers[3][32];
+        char numbers[4][32];
         std::snprintf(numbers[0], sizeof numbers[0], "%.6g", estimate->relMse);
         std::snprintf(numbers[1], sizeof numbers[1], "%.6g", estimate->standardError);
         std::snprintf(numbers[2], sizeof numbers[2], "%.6g", estimate->singleSampleShare);
+        std::snprintf(numbers[3], sizeof numbers[3], "%.6g", estimate->effectivePixels);
         strings.insert(strings.end(), {{"estimatedRelMse", numbers[0]},
                                        {"estimatedRelMseError", numbers[1]},
                                        {"estimatedRelMseFromSingleSamples", numbers[2]},
+                                       {"estimatedRelMseEffectivePixels", numbers[3]},
                                        {"errorEstimateReliable",
                                         estimate->reliable ? "true" : "false"},
                                        {"errorEstimateIsUpperBound",
-                                        estimate->upperBound ? "true" : "false"}});
+                                        estimate->upperBound ? "true" : "false"},
+                                       {"errorEstimateReplicates",
+                                        std::to_string(estimate->replicates)}});
         if (!estimate->reliable)
             strings.push_back({"errorEstimateReason", estimate->reason});
     }
@@ -208,7 +217,8 @@ MergedRender mergeRenderParts(const std::vector<RenderPart>& parts) {
             estimates.push_back(*part->errorEstimate);
     }
     if (estimates.size() == order.size())
-        merged.image.errorEstimate = mergeErrorEstimates(estimates, weights);
+        merged.image.errorEstimate =
+            mergeErrorEstimates(estimates, weights, order.front()->sampler != "independent");
     appendRange(merged.ranges, runStart, runEnd);
     merged.image.rgb = mergeBySampleCount(images, weights);
     return merged;

@@ -25,6 +25,18 @@
 
 namespace wf {
 
+// The error replicates (--error-replicates) a --target-error render takes unless told: two
+// interleaved, independently scrambled halves of each pixel's samples, whose spread calibrates
+// the error estimate for every sampler. Two cost Sobol's image about nothing at 1,024 spp and
+// up to 10% of its relMSE at 64 (more replicates cost more: docs/architecture.md).
+inline constexpr uint32_t kTargetErrorReplicates = 2;
+
+// A target is claimed met only when the estimate stays under it by this many of its own
+// standard errors: one render's error scatters around the estimate by about 1.4 of them (the
+// estimate's own spread and the render's), so a claim then holds to within one standard error
+// beyond the target but for chances below 1e-4.
+inline constexpr double kClaimStandardErrors = 4.0;
+
 struct AdaptiveSettings {
     double targetError = 0.0; // the image relMSE to reach; 0: spend meanSpp instead
     double meanSpp = 0.0;     // the budget, samples per pixel on average (targetError 0)
@@ -32,6 +44,7 @@ struct AdaptiveSettings {
     uint32_t pilotSpp = 0;    // 0: pilotSppFor(maxSpp)
     double timeLimitSeconds = 0.0; // --time-limit with a target: no round starts past it (0: none)
     uint32_t maxRounds = 8;   // image rounds at most (with a target)
+    bool powerOfTwoLevels = false; // sampleLevels' powersOfTwo (renderAdaptive: base-2 samplers)
 };
 
 uint32_t pilotSppFor(uint32_t maxSpp); // maxSpp / 16, within 4 .. 16 (and at most maxSpp)
@@ -59,7 +72,10 @@ std::vector<double> defensiveShape(const std::vector<double>& relVariance, uint3
 
 // Sample counts come in levels, so that the image renders in few rounds (each round traces
 // the pixels whose count reaches its level): minSpp, then about 1.25x each, ending at maxSpp.
-std::vector<uint32_t> sampleLevels(uint32_t minSpp, uint32_t maxSpp);
+// With `powersOfTwo`, minSpp then the powers of two above it, ending at maxSpp: a base-2
+// (0, 2)-sequence's prefix is a net only at a power of two, and Sobol's error at counts between
+// them is measured far above its trend (the tiny light: 12 spp gave 3x the relMSE of 16).
+std::vector<uint32_t> sampleLevels(uint32_t minSpp, uint32_t maxSpp, bool powersOfTwo = false);
 
 struct SampleAllocation {
     std::vector<uint32_t> spp;    // per pixel, one of `levels`
@@ -93,11 +109,19 @@ struct AdaptiveResult {
     SampleAllocation allocation;
     uint32_t pilotSpp = 0;
     ErrorEstimate estimate;          // the image's own (image/error_estimate.h)
-    bool targetMet = false;          // a target: the estimate reliable and at most it
+    // A target: the estimate reliable and, kClaimStandardErrors of its standard errors added,
+    // at most it.
+    bool targetMet = false;
     // Why the rounds stopped: "target" (met), "spp" (every pixel at --spp, or no round could
     // add samples), "time-limit", "rounds" (maxRounds), "budget" (meanSpp mode: one round).
     std::string stoppedBy;
     uint32_t imageRounds = 0;        // images rendered; all but the last were pilots
+    // Each round's plan: the calibrated estimate of the evidence over the independent-sample
+    // one, which scales the predicted error of an allocation (1 without replicates).
+    double plannedGain = 1.0;
+    // How fast the pilot's calibrated error fell with its samples: relMSE ~ n^-errorSlope
+    // (1 for independent samples; 1 where the pilot could not tell).
+    double errorSlope = 1.0;
     double meanSpp = 0.0;            // of the image
     RenderStats stats;               // every round and the pilot: paths, rays and seconds
 };

@@ -41,6 +41,10 @@ FilmMoments readFilmMoments(const PathBuffers& buffers, uint32_t pixelCount) {
         moments.count[i] = film[4 * i + 3];
         moments.largest[i] = squares[4 * i + 3];
     }
+    if (buffers.replicateFilm) {
+        moments.replicates = buffers.replicates;
+        moments.replicateSums = buffers.replicateFilm.download<float>();
+    }
     return moments;
 }
 

@@ -14,6 +14,10 @@ struct FilmMoments {
     std::vector<float> count;   // samples per pixel
     std::vector<float> squares; // rgb per pixel
     std::vector<float> largest; // per pixel, the largest component of any one sample
+    // With --error-replicates K > 1: per pixel, K - 1 entries of rgb sum and sample count of
+    // replicates 1 .. K - 1 (replicate 0: the film's less these). Empty with one sequence.
+    uint32_t replicates = 1;
+    std::vector<float> replicateSums;
 };
 
 // Per pixel, the mean over its samples of the camera ray's first hit (zero where it found no

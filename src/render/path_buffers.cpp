@@ -18,6 +18,11 @@ PathBuffers::PathBuffers(const Context& context, uint32_t pathCapacity, uint32_t
       radiance(context, "path radiance", uint64_t(pathCapacity) * 16) {
     if (variant.secondMoment)
         momentFilm = Buffer(context, "moment film", uint64_t(pixelCount) * 16);
+    if (variant.errorReplicates > 1) {
+        replicates = variant.errorReplicates;
+        replicateFilm = Buffer(context, "replicate film",
+                               uint64_t(pixelCount) * (replicates - 1) * 16);
+    }
     if (variant.adaptive)
         activePixels = Buffer(context, "active pixels", uint64_t(pixelCount) * 4);
     if (use == PathStateUse::Megakernel)
@@ -60,6 +65,7 @@ void PathBuffers::appendBindings(DescriptorBindings& bindings) const {
         {WF_BINDING_AOV_FILM, &aovFilm},
         {WF_BINDING_MOMENT_FILM, &momentFilm},
         {WF_BINDING_ACTIVE_PIXELS, &activePixels},
+        {WF_BINDING_REPLICATE_FILM, &replicateFilm},
         {WF_BINDING_SHADOW_ORIGIN, &shadowOrigin},
         {WF_BINDING_SHADOW_DIRECTION, &shadowDirection},
         {WF_BINDING_SHADOW_RADIANCE, &shadowRadiance},
@@ -89,7 +95,7 @@ void PathBuffers::appendMemoryReport(
     for (const Buffer* buffer :
          {&params, &counters, &film, &rayOrigin, &rayDirection, &throughput, &radiance, &hits,
           &shadowOrigin, &shadowDirection, &shadowRadiance, &rayQueues, &aovPaths, &aovFilm,
-          &momentFilm, &activePixels, &rayCones, &kindQueues, &rayTime})
+          &momentFilm, &replicateFilm, &activePixels, &rayCones, &kindQueues, &rayTime})
         if (*buffer)
             report.emplace_back(buffer->name(), buffer->size());
 }

@@ -41,6 +41,10 @@ struct PathBuffers {
     Buffer aovFilm;
     Buffer momentFilm;   // WF_SECOND_MOMENT: per pixel, the sum of radiance squared
     Buffer activePixels; // WF_ADAPTIVE: the pixel list waves cover
+    // WF_ERROR_REPLICATES K: per pixel, K - 1 vec4s (the sums and counts of replicates 1 ..
+    // K - 1; replicate 0's are the film's less theirs).
+    Buffer replicateFilm;
+    uint32_t replicates = 1;
     Buffer rayCones;     // WF_RAY_CONES: per path, the ray's cone width and spread (vec2)
     Buffer rayTime;      // WF_MOTION: per path, its time within the shutter (float)
     Buffer kindQueues;   // WF_SHADE_BINS: per shade bin, pathCapacity slots of the ray queue

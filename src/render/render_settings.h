@@ -44,6 +44,12 @@ struct RenderSettings {
     float clampRadiance = 0.0f;     // --clamp: biased firefly clamp, 0 = off
     SamplerKind sampler = kDefaultSampler; // --sampler
     bool randomizeSamples = true;   // --no-randomize turns it off
+    // --error-replicates K: each pixel's samples split into K independently randomized copies
+    // of the sampler's sequence (sample i is sample i / K of replicate i % K), so that the
+    // spread of the replicates' means measures the error of any sampler, correlated or not
+    // (render/film_error.h). 1: one sequence, as without. The independent sampler ignores it:
+    // its samples are independent already.
+    uint32_t errorReplicates = 1;
     uint32_t sppOffset = 0;         // --spp-offset: index of the first sample per pixel
     // Finite-set samplers (stratified, multijitter, hammersley): samples in one set, 0 =
     // sppOffset + samplesPerPixel (--spp-total). Parts of one render must agree on it.

@@ -64,7 +64,17 @@ ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& se
     variant.motion = scene.motionSegments > 0;
     variant.sampler = settings.sampler;
     variant.randomizeSamples = settings.randomizeSamples;
+    variant.errorReplicates = errorReplicatesFor(settings);
     return variant;
+}
+
+uint32_t errorReplicatesFor(const RenderSettings& settings) {
+    // A guided render's image combines its training iterations (guide_combination.h), which
+    // replicates would have to follow one by one: it keeps the bound. Guided --target-error
+    // rounds sample a frozen guide and take them.
+    if (settings.sampler == SamplerKind::Independent || (settings.guiding && !settings.pixelList))
+        return 1;
+    return std::max(settings.errorReplicates, 1u);
 }
 
 uint32_t ShaderVariant::shadeBins() const {
@@ -115,6 +125,8 @@ ShaderDefines ShaderVariant::defines() const {
             {"WF_INSTANCE_PAGE_SHIFT", std::to_string(instancePages.shift)}};
     if (rayTracing)
         defines.emplace_back("WF_RAY_TRACING", "1");
+    if (errorReplicates > 1) // defined only then, so one sequence's shaders are as before
+        defines.emplace_back("WF_ERROR_REPLICATES", std::to_string(errorReplicates));
     if (motion) // defined only then, so still scenes' shaders are as before
         defines.emplace_back("WF_MOTION", "1");
     if (shadeKinds != 0) {

@@ -42,6 +42,7 @@ struct ShaderVariant {
     SurfaceFeatures surface;          // textures, normals, alpha: set by the renderer
     SamplerKind sampler = kDefaultSampler; // WF_SAMPLER (rng.h)
     bool randomizeSamples = true;     // WF_SAMPLER_RANDOMIZE: off for --no-randomize
+    uint32_t errorReplicates = 1;     // WF_ERROR_REPLICATES (rng.h), defined only above 1
     bool packedStores = false;        // WF_PACKED_STORES: 64-bit stores, set by the renderer
     uint32_t registerStack = 0;       // WF_BVH_REGISTER_STACK: 8 or 16 entries in vectors, or 0
     bool aov = false;                 // WF_AOV: first-hit albedo, normal, distance
@@ -69,6 +70,9 @@ struct ShaderVariant {
 };
 
 ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& settings);
+// The error replicates a render takes: settings.errorReplicates, but 1 for the independent
+// sampler (independent already) and guided renders (render() combines their iterations).
+uint32_t errorReplicatesFor(const RenderSettings& settings);
 
 LightSampling parseLightSampling(const std::string& name); // UsageError if unknown
 const char* lightSamplingName(LightSampling mode);

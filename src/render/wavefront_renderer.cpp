@@ -37,6 +37,12 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
     if (pixels > maxPixels)
         throw UsageError("image of " + std::to_string(pixels) + " pixels is over this device's "
                          "limit of " + std::to_string(maxPixels) + " pixels");
+    const uint32_t replicates = errorReplicatesFor(settings);
+    if (replicates > 1 && pixels * (replicates - 1) > maxPixels)
+        throw UsageError("--error-replicates " + std::to_string(replicates) + " at " +
+                         std::to_string(pixels) + " pixels needs a replicate film over this "
+                         "device's buffer limit (" + std::to_string(maxPixels) +
+                         " entries of 16 bytes): take fewer replicates");
     pixelCount_ = static_cast<uint32_t>(pixels);
     // Guided renders keep 4 training records of 64 bytes per path: at most 2^19 paths keep
     // them within a 128 MiB storage buffer.
@@ -311,6 +317,9 @@ void WavefrontRenderer::clearFilm() {
     pathBuffers_->film.upload(zeros);
     if (pathBuffers_->momentFilm)
         pathBuffers_->momentFilm.upload(zeros);
+    if (pathBuffers_->replicateFilm)
+        pathBuffers_->replicateFilm.upload(
+            std::vector<float>(size_t(pixelCount_) * (pathBuffers_->replicates - 1) * 4, 0.0f));
     if (pathBuffers_->aovFilm)
         pathBuffers_->aovFilm.upload(std::vector<float>(size_t(pixelCount_) * 8, 0.0f));
 }
@@ -337,8 +346,12 @@ void WavefrontRenderer::restart(uint32_t seed, uint32_t sppOffset, uint32_t samp
 }
 
 uint32_t WavefrontRenderer::setSize() const {
-    return settings_.sampleSetSize != 0 ? settings_.sampleSetSize
-                                        : settings_.sppOffset + settings_.samplesPerPixel;
+    const uint32_t total = settings_.sampleSetSize != 0
+                               ? settings_.sampleSetSize
+                               : settings_.sppOffset + settings_.samplesPerPixel;
+    // Each replicate is a set of its own, of its share of the samples (rng.h).
+    const uint32_t replicates = pathBuffers_ ? pathBuffers_->replicates : 1u;
+    return (total + replicates - 1) / replicates;
 }
 
 void WavefrontRenderer::setCamera(const Camera& camera) {

@@ -1,11 +1,13 @@
 // Every render's own error estimate (image/error_estimate.h) and --target-error's promise, on
 // the laboratory's scenes, each against a 16,384-spp reference of the same 32x32 image:
-// - calibration: at 64 and 1,024 spp, with independent samples the estimate lies within a
-//   factor of 2 of the measured relMSE, and with the default (low-discrepancy) sampler it is
-//   at least half of it (an upper bound, give or take the factor), unless it says it is
-//   unreliable;
+// - calibration: at 64 and 1,024 spp over four seeds, with two error replicates (the
+//   independent sampler needs none), the estimate lies within 0.7-1.4 of the measured relMSE
+//   for sobol, halton, bluenoise and independent samples, unless it says it is unreliable; one
+//   sequence of sobol keeps its upper bound;
 // - targets: at two targets per scene over 5 seeds, no render says targetMet with a measured
-//   error above 2x the target, and when all five say it the median is at most 1.5x;
+//   error above the target by more than the estimate's stated standard error, and where the
+//   final estimates were reliable the median delivered error is at least half the target
+//   (a target costs what it needs, not several times that);
 // - the adaptive rounds stay unbiased: each 8x8 region's mean over the ten target renders
 //   agrees with the reference within 5 standard errors.
 #include <algorithm>
@@ -55,56 +57,77 @@ TEST_P(ErrorTargets, EstimateCalibratedAndTargetsHonest) {
     referenceSettings.aov = true; // its variance layer: the reference's own noise per region
     const RenderResult reference = renderScene(scene, referenceSettings);
 
-    for (SamplerKind sampler : {SamplerKind::Independent, SamplerKind::Sobol})
+    auto measure = [&](SamplerKind sampler, uint32_t spp, uint32_t seed, uint32_t replicates) {
+        RenderSettings settings = settingsFor(spp, seed, sampler);
+        settings.errorReplicates = replicates;
+        const RenderResult result = renderScene(scene, settings);
+        const double measured = imageError(result.rgb, reference.rgb).relMse;
+        const ErrorEstimate& e = result.estimate;
+        std::printf("%s %s %u spp seed %u, %u replicates: measured %.4g, estimate %s%s "
+                    "(ratio %.2f, %.0f effective pixels)\n",
+                    test.name, samplerName(sampler), spp, seed, e.replicates, measured,
+                    describeErrorEstimate(e).c_str(), e.reliable ? "" : (": " + e.reason).c_str(),
+                    e.relMse / measured, e.effectivePixels);
+        return std::pair{e, e.relMse / measured};
+    };
+    for (SamplerKind sampler : {SamplerKind::Independent, SamplerKind::Sobol, SamplerKind::Halton,
+                                SamplerKind::BlueNoise})
         for (uint32_t spp : {64u, 1024u})
-            for (uint32_t seed : {1u, 2u}) {
-                const RenderResult result = renderScene(scene, settingsFor(spp, seed, sampler));
-                const double measured = imageError(result.rgb, reference.rgb).relMse;
-                const ErrorEstimate& e = result.estimate;
-                const double ratio = e.relMse / measured;
-                std::printf("%s %s %u spp seed %u: measured %.4g, estimate %s%s (ratio %.2f)\n",
-                            test.name, samplerName(sampler), spp, seed, measured,
-                            describeErrorEstimate(e).c_str(),
-                            e.reliable ? "" : (": " + e.reason).c_str(), ratio);
-                EXPECT_EQ(e.upperBound, sampler != SamplerKind::Independent);
+            for (uint32_t seed = 1; seed <= 4; ++seed) {
+                const auto [e, ratio] = measure(sampler, spp, seed, kTargetErrorReplicates);
+                EXPECT_FALSE(e.upperBound);
+                EXPECT_EQ(e.replicates, sampler == SamplerKind::Independent ? 1u : 2u);
                 if (!e.reliable)
                     continue;
-                EXPECT_GE(ratio, 0.5) << test.name << " " << samplerName(sampler) << " " << spp;
-                if (!e.upperBound)
-                    EXPECT_LE(ratio, 2.0) << test.name << " " << spp << " spp";
+                EXPECT_GE(ratio, 0.7) << test.name << " " << samplerName(sampler) << " " << spp;
+                EXPECT_LE(ratio, 1.4) << test.name << " " << samplerName(sampler) << " " << spp;
             }
+    // One sequence of a correlated sampler: the variance of independent samples, a bound.
+    const auto [bound, boundRatio] = measure(SamplerKind::Sobol, 64, 1, 1);
+    EXPECT_TRUE(bound.upperBound);
+    if (bound.reliable)
+        EXPECT_GE(boundRatio, 0.7) << test.name << ": sobol's bound";
 
     static ShaderCompiler compiler;
     PreparedScene prepared = prepareScene(scene);
     RenderSettings adaptiveSettings = settingsFor(kMaxSpp, 0, SamplerKind::Sobol);
     adaptiveSettings.pixelList = true;
+    adaptiveSettings.errorReplicates = kTargetErrorReplicates;
     WavefrontRenderer renderer(gpuContext(), prepared, adaptiveSettings, compiler);
     std::vector<std::vector<float>> images;
     for (double target : test.targets) {
-        std::vector<double> measured;
-        bool allMet = true;
+        std::vector<double> delivered; // where the final estimate was reliable
         for (uint32_t seed = 31; seed < 36; ++seed) {
             AdaptiveSettings adaptive;
             adaptive.targetError = target;
             adaptive.maxSpp = kMaxSpp;
             AdaptiveResult result = renderAdaptive(renderer, seed, adaptive, kSize, kSize);
             const double error = imageError(result.rgb, reference.rgb).relMse;
-            std::printf("%s target %g seed %u: measured %.4g, estimate %s, targetMet %d (%s), "
-                        "%u image rounds, %.1f spp, %.2f s\n",
-                        test.name, target, seed, error,
+            std::printf("%s target %g seed %u: measured %.4g (%.2f of it), estimate %s, "
+                        "targetMet %d (%s), %u image rounds, %.1f image spp, %.1f spp traced, "
+                        "gain %.2f, slope %.2f, %.2f s\n",
+                        test.name, target, seed, error, error / target,
                         describeErrorEstimate(result.estimate).c_str(), result.targetMet,
                         result.stoppedBy.c_str(), result.imageRounds, result.meanSpp,
+                        double(result.stats.paths) / (kSize * kSize), result.plannedGain, result.errorSlope,
                         result.stats.seconds);
             EXPECT_EQ(result.stats.nonFiniteSamples, 0u);
+            EXPECT_FALSE(result.estimate.upperBound);
             if (result.targetMet)
-                EXPECT_LE(error, 2.0 * target) << test.name << " says it met " << target;
-            allMet = allMet && result.targetMet;
-            measured.push_back(error);
+                EXPECT_LE(error, target + result.estimate.standardError)
+                    << test.name << " says it met " << target;
+            // Where every pixel has the fewest samples a round gives, no plan could spend less.
+            const bool floor = std::all_of(
+                result.sampleCounts.begin(), result.sampleCounts.end(),
+                [&](float n) { return n <= float(result.allocation.levels.front()); });
+            if (result.estimate.reliable && !floor)
+                delivered.push_back(error);
             images.push_back(std::move(result.rgb));
         }
-        std::sort(measured.begin(), measured.end());
-        if (allMet)
-            EXPECT_LE(measured[2], 1.5 * target) << test.name << ": median over 5 seeds";
+        std::sort(delivered.begin(), delivered.end());
+        if (delivered.size() >= 3)
+            EXPECT_GE(delivered[delivered.size() / 2], 0.5 * target)
+                << test.name << ": median delivered error, target " << target;
     }
 
     // Unbiased: each region's mean over the target renders against the reference's.
@@ -116,7 +139,7 @@ TEST_P(ErrorTargets, EstimateCalibratedAndTargetsHonest) {
 INSTANTIATE_TEST_SUITE_P(
     Laboratory, ErrorTargets,
     ::testing::Values(SceneCase{"cornell_box", {3e-3, 3e-4}},
-                      SceneCase{"tiny_light", {1e-4, 1e-5}},
+                      SceneCase{"tiny_light", {1e-5, 1e-6}},
                       SceneCase{"veach_mis", {1e-2, 2e-3}},
                       SceneCase{"glass_caustic", {5e-2, 1e-2}},
                       SceneCase{"many_lamps", {5e-2, 1e-2}},

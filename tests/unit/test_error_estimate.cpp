@@ -110,15 +110,16 @@ TEST(ErrorEstimate, PixelsOfOneSampleHaveNone) {
 TEST(ErrorEstimate, PartsMergeAsTheirSampleWeightedMean) {
     ErrorEstimate a, b;
     a.relMse = 0.04, a.standardError = 0.001, a.reliable = true, a.pixels = a.pixelsTotal = 4;
+    a.effectivePixels = 100.0;
     b = a;
     b.relMse = 0.02;
     // Equal halves: the mean of two means has a quarter of the sum of their errors.
-    const ErrorEstimate merged = mergeErrorEstimates({a, b}, {64.0, 64.0});
+    const ErrorEstimate merged = mergeErrorEstimates({a, b}, {64.0, 64.0}, false);
     EXPECT_DOUBLE_EQ(merged.relMse, 0.25 * 0.04 + 0.25 * 0.02);
     EXPECT_TRUE(merged.reliable);
     b.reliable = false;
     b.reason = "heavy tails";
-    EXPECT_FALSE(mergeErrorEstimates({a, b}, {64.0, 192.0}).reliable);
+    EXPECT_FALSE(mergeErrorEstimates({a, b}, {64.0, 192.0}, false).reliable);
 }
 
 } // namespace

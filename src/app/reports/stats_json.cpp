@@ -50,7 +50,9 @@ std::string errorEstimateJson(const ErrorEstimate& e) {
            jsonNumber(e.standardError) + ", \"fromSingleSamples\": " +
            jsonNumber(e.singleSampleShare) + ", \"reliable\": " +
            (e.reliable ? "true" : "false") + ", \"reason\": " + jsonQuoted(e.reason) +
-           ", \"upperBound\": " + (e.upperBound ? "true" : "false") + "}";
+           ", \"upperBound\": " + (e.upperBound ? "true" : "false") +
+           ", \"replicates\": " + std::to_string(e.replicates) +
+           ", \"effectivePixels\": " + jsonNumber(e.effectivePixels) + "}";
 }
 
 std::string statsToJson(const RenderStats& stats, const StatsContext& context) {
