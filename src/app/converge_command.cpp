@@ -51,7 +51,10 @@ const CommandSpec& convergeSpec() {
                                           "sphere-area, adaptive (each checkpoint rendered "
                                           "afresh with that mean spp, placed by a pilot whose "
                                           "time counts), guided (path guiding; each checkpoint "
-                                          "trains afresh, its training time included) (default: every sampler with mis, then "
+                                          "trains afresh, its training time included), "
+                                          "replicates (two error replicates: a calibrated "
+                                          "estimate for correlated samplers; adaptive takes "
+                                          "them anyway) (default: every sampler with mis, then "
                                           "sobol+bsdf, sobol+nee)"},
                 {"--seeds", "", "N", "seeds per method, at least 5 (default 5)"},
                 {"--max-spp", "", "N", "stop doubling here (default 65536)"},

@@ -506,6 +506,8 @@ AdaptiveResult renderAdaptive(WavefrontRenderer& renderer, uint32_t seed,
             result.stats.guideStoppedUnused = guide->stoppedUnused();
         }
         result.plannedGain = gain;
+        if (round == 1)
+            result.firstImageReliable = result.estimate.reliable;
         result.targetMet = target && result.estimate.reliable &&
                            result.estimate.relMse +
                                    kClaimStandardErrors * result.estimate.standardError <=

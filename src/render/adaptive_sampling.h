@@ -122,6 +122,9 @@ struct AdaptiveResult {
     // How fast the pilot's calibrated error fell with its samples: relMSE ~ n^-errorSlope
     // (1 for independent samples; 1 where the pilot could not tell).
     double errorSlope = 1.0;
+    // Whether the first image's estimate was reliable: where it was not, the rounds after it
+    // doubled their samples for evidence, not for the target.
+    bool firstImageReliable = false;
     double meanSpp = 0.0;            // of the image
     RenderStats stats;               // every round and the pilot: paths, rays and seconds
 };

@@ -19,6 +19,7 @@ void ConvergenceMethod::applyTo(RenderSettings& settings) const {
     settings.lightSelection = lightSelection;
     settings.pixelList = adaptive;
     settings.guiding = guided;
+    settings.errorReplicates = replicates || adaptive ? kTargetErrorReplicates : 1;
 }
 
 std::string methodWords() {
@@ -26,7 +27,7 @@ std::string methodWords() {
     for (const std::string& name : samplerNames())
         words += name + ", ";
     return words + "bsdf, nee, mis, uniform, power, tree, no-randomize, triangle-area, "
-                   "sphere-area, adaptive, guided";
+                   "sphere-area, adaptive, guided, replicates";
 }
 
 ConvergenceMethod parseMethod(const std::string& text) {
@@ -66,6 +67,8 @@ ConvergenceMethod parseMethod(const std::string& text) {
             method.adaptive = true;
         } else if (word == "guided") {
             method.guided = true;
+        } else if (word == "replicates") {
+            method.replicates = true;
         } else {
             throw UsageError("--methods: unknown word '" + word + "' in '" + text +
                              "' (words: " + methodWords() + ")");
@@ -85,7 +88,8 @@ ConvergenceMethod parseMethod(const std::string& text) {
                   (method.lightSelection == LightSelection::Auto
                        ? ""
                        : std::string("+") + lightSelectionName(method.lightSelection)) +
-                  (method.adaptive ? "+adaptive" : "") + (method.guided ? "+guided" : "");
+                  (method.adaptive ? "+adaptive" : "") + (method.guided ? "+guided" : "") +
+                  (method.replicates ? "+replicates" : "");
     return method;
 }
 

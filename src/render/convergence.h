@@ -31,13 +31,16 @@ struct ConvergenceMethod {
     // `guided`: path guiding (render/guiding/); each checkpoint is a render afresh with that
     // budget, its training iterations and host rebuilds in its time.
     bool guided = false;
+    // `replicates`: two error replicates (--error-replicates 2), so that the recorded estimate
+    // is calibrated for a correlated sampler; `adaptive` takes them anyway, as --target-error.
+    bool replicates = false;
 
     void applyTo(RenderSettings& settings) const;
 };
 
 // A method from words joined by '+', in any order: a sampler name, bsdf|nee|mis, a light
 // selection uniform|power|tree, and the switches no-randomize, triangle-area, sphere-area,
-// adaptive, guided. Unnamed parts take render's defaults.
+// adaptive, guided, replicates. Unnamed parts take render's defaults.
 // UsageError on an unknown or repeated word.
 ConvergenceMethod parseMethod(const std::string& text);
 // Comma-separated methods; UsageError if empty or if two name the same method.

@@ -25,6 +25,12 @@ TEST(AdaptiveSampling, LevelsRiseByAboutAQuarterAndEndAtTheCap) {
     EXPECT_EQ(sampleLevels(8, 8), std::vector<uint32_t>{8});
 }
 
+TEST(AdaptiveSampling, BaseTwoLevelsArePowersOfTwo) {
+    EXPECT_EQ(sampleLevels(8, 100, true), (std::vector<uint32_t>{8, 16, 32, 64, 100}));
+    EXPECT_EQ(sampleLevels(6, 64, true), (std::vector<uint32_t>{6, 8, 16, 32, 64}));
+    EXPECT_EQ(sampleLevels(8, 8, true), std::vector<uint32_t>{8});
+}
+
 TEST(AdaptiveSampling, RelativeVarianceIsTheConvergeMetricOfOneSample) {
     // One pixel, samples 0 and 2 in every channel: mean 1, sample variance 2.
     FilmMoments moments{{2, 2, 2}, {2}, {4, 4, 4}};

@@ -64,6 +64,95 @@ TEST(ErrorEstimate, CorrelatedSamplersGiveAnUpperBound) {
               std::string::npos);
 }
 
+// Stratified samples (one per stratum of [0, 1), as a low-discrepancy sequence would place
+// them) of f(u) = u: their mean's error is far below independent samples' variance over n.
+// With two replicates (each pixel's samples interleaved into two independently stratified
+// halves, as --error-replicates 2 makes them), the replicates' spread measures it.
+std::pair<FilmMoments, double> stratifiedReplicates(uint32_t pixels, uint32_t n, uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    FilmMoments film;
+    film.sum.assign(3 * pixels, 0.0f);
+    film.squares.assign(3 * pixels, 0.0f);
+    film.count.assign(pixels, float(n));
+    film.largest.assign(pixels, 0.0f);
+    film.replicates = 2;
+    film.replicateSums.assign(size_t(pixels) * 4, 0.0f);
+    double measured = 0.0;
+    for (uint32_t i = 0; i < pixels; ++i) {
+        double sum = 0.0;
+        for (uint32_t s = 0; s < n; ++s) {
+            const uint32_t replicate = s % 2, stratum = s / 2, strata = n / 2;
+            const float x = (float(stratum) + uniform(rng)) / float(strata);
+            sum += x;
+            for (int c = 0; c < 3; ++c) {
+                film.sum[3 * i + c] += x;
+                film.squares[3 * i + c] += x * x;
+                if (replicate == 1)
+                    film.replicateSums[4 * i + c] += x;
+            }
+            if (replicate == 1)
+                film.replicateSums[4 * i + 3] += 1.0f;
+            film.largest[i] = std::max(film.largest[i], x);
+        }
+        const double d = sum / n - 0.5;
+        measured += d * d / (0.25 + kRelMseEpsilon);
+    }
+    return {film, measured / pixels};
+}
+
+TEST(ErrorEstimate, ReplicatesCalibrateCorrelatedSamples) {
+    for (uint32_t n : {16u, 64u}) {
+        auto [film, measured] = stratifiedReplicates(4096, n, 12 + n);
+        const ErrorEstimate e = estimateFilmError(film, SamplerKind::Sobol);
+        EXPECT_FALSE(e.upperBound);
+        EXPECT_EQ(e.replicates, 2u);
+        EXPECT_TRUE(e.reliable) << e.reason;
+        EXPECT_NEAR(e.relMse / measured, 1.0, 0.1) << n << " samples";
+        // The variance of independent samples overstates it by about the strata's count.
+        FilmMoments plain = film;
+        plain.replicates = 1;
+        plain.replicateSums.clear();
+        const ErrorEstimate bound = estimateFilmError(plain, SamplerKind::Sobol);
+        EXPECT_TRUE(bound.upperBound);
+        EXPECT_GT(bound.relMse, 4.0 * measured) << n << " samples";
+    }
+}
+
+TEST(ErrorEstimate, ReplicatesNeedASampleEach) {
+    auto [film, measured] = stratifiedReplicates(4, 4, 3);
+    film.count[0] = 2.0f; // replicate 1 holds both: replicate 0 none
+    film.replicateSums[3] = 2.0f;
+    const ErrorEstimate e = estimateFilmError(film, SamplerKind::Sobol);
+    EXPECT_EQ(e.pixels, 3u);
+    EXPECT_FALSE(e.reliable);
+}
+
+TEST(ErrorEstimate, AFewPixelsCarryingItMakeItUnreliable) {
+    // Independent samples, all quiet but in 8 of 4,096 pixels: one render's error rests on them.
+    std::mt19937 rng(13);
+    std::normal_distribution<float> quiet(1.0f, 0.001f), loud(1.0f, 0.5f);
+    uint32_t pixel = 0;
+    auto [film, measured] = simulate(4096, 64, 1.0, [&]() {
+        const bool isLoud = (pixel++ / 64) % 512 == 0;
+        return isLoud ? loud(rng) : quiet(rng);
+    });
+    const ErrorEstimate e = estimateFilmError(film, SamplerKind::Independent);
+    EXPECT_LT(e.effectivePixels, 10.0);
+    EXPECT_FALSE(e.reliable);
+    EXPECT_NE(e.reason.find("pixels carry it"), std::string::npos) << e.reason;
+}
+
+TEST(ErrorEstimate, CorrelatedPartsMergeToABound) {
+    ErrorEstimate a;
+    a.relMse = 0.04, a.standardError = 0.001, a.reliable = true, a.pixels = a.pixelsTotal = 4;
+    a.effectivePixels = 100.0;
+    a.replicates = 2;
+    EXPECT_TRUE(mergeErrorEstimates({a, a}, {64.0, 64.0}, true).upperBound);
+    EXPECT_FALSE(mergeErrorEstimates({a, a}, {64.0, 64.0}, false).upperBound);
+    EXPECT_FALSE(mergeErrorEstimates({a}, {64.0}, true).upperBound);
+}
+
 // Mostly 0.1, and with probability p 1,000: a caustic path found now and then.
 std::pair<FilmMoments, double> fireflies(double p, uint32_t seed) {
     std::mt19937 rng(seed);

@@ -44,7 +44,7 @@ std::string jsonArray(const std::vector<double>& values) {
 void writeConvergenceCsv(const std::string& path, const std::vector<MethodRun>& runs) {
     std::ostringstream csv;
     csv << "method,sampler,light_sampling,seed_index,spp,gpu_seconds,wall_seconds,relmse,mse,"
-           "bias,estimated_relmse,estimate_reliable\n";
+           "bias,estimated_relmse,estimate_reliable,estimate_upper_bound\n";
     for (const MethodRun& run : runs) {
         for (size_t s = 0; s < run.perSeed.size(); ++s) {
             for (const Checkpoint& c : run.perSeed[s]) {
@@ -54,7 +54,8 @@ void writeConvergenceCsv(const std::string& path, const std::vector<MethodRun>& 
                     << ',' << format("%.6g", c.error.relMse) << ',' << format("%.6g", c.error.mse)
                     << ',' << format("%.6g", c.error.bias) << ','
                     << format("%.6g", c.estimate.relMse) << ','
-                    << (c.estimate.reliable ? 1 : 0) << '\n';
+                    << (c.estimate.reliable ? 1 : 0) << ',' << (c.estimate.upperBound ? 1 : 0)
+                    << '\n';
             }
         }
     }
