@@ -41,9 +41,9 @@ struct ErrorEstimate {
     std::string reason; // why not reliable (empty when it is)
     // The variance of a pixel's mean is that of independent samples. With every sampler but
     // `independent` the samples are correlated by design (stratified, low-discrepancy) and
-    // their mean's error is lower: the estimate is then an upper bound, 1.5x to over 100x
-    // above the measured error on the laboratory's scenes (docs/architecture.md). A target
-    // met by the bound is met.
+    // their mean's error is lower: with one sequence the estimate is then an upper bound, 1.5x
+    // to over 80x above the measured error on the laboratory's scenes (docs/architecture.md);
+    // with error replicates it is not (see `replicates`).
     bool upperBound = false;
     // How it was made: 1 from the samples' variance, K > 1 from the spread of K independently
     // randomized replicates (--error-replicates), which measures correlated samplers' error
