@@ -86,8 +86,11 @@ expect "adaptive json" json_has "$work/adaptive.json" \
      d['adaptive']['pilotSpp'] == 16 and d['adaptive']['predictedRelMse'] <= 0.02"
 expect "adaptive json: the estimate decides targetMet" json_has "$work/adaptive.json" \
     "d['adaptive']['targetMet'] == (d['errorEstimate']['reliable'] and \
-     d['errorEstimate']['relMse'] <= 0.02) and d['adaptive']['stoppedBy'] in \
-     ('target', 'spp', 'rounds') and d['adaptive']['imageRounds'] >= 1"
+     d['errorEstimate']['relMse'] + 4 * d['errorEstimate']['standardError'] <= 0.02) and \
+     d['adaptive']['stoppedBy'] in ('target', 'spp', 'rounds') and \
+     d['adaptive']['imageRounds'] >= 1"
+expect "adaptive json: two error replicates, calibrated" json_has "$work/adaptive.json" \
+    "d['errorEstimate']['replicates'] == 2 and d['errorEstimate']['upperBound'] is False"
 for attr in targetError targetMet stoppedBy estimatedRelMse errorEstimateReliable meanSpp \
     pilotSpp "Sample Count.Y"; do
     expect "adaptive header: $attr" grep -a -q "$attr" "$work/adaptive.exr"
@@ -110,6 +113,24 @@ check "plain render estimates its error" 0 "$wavefront" render "$box" -o "$work/
 expect "plain json: errorEstimate" json_has "$work/plain.json" \
     "d['errorEstimate']['relMse'] > 0 and d['errorEstimate']['upperBound'] is True"
 expect "plain header: estimatedRelMse" grep -a -q "estimatedRelMse" "$work/plain.exr"
+# With error replicates the estimate is calibrated; parts of one sequence merge to a bound.
+for part in 0 8; do
+    check "replicated part $part" 0 "$wavefront" render "$box" -o "$work/rep$part.exr" \
+        --spp 8 --spp-offset $part --spp-total 16 --width 16 --max-depth 4 \
+        --error-replicates 2 --json "$work/rep$part.json"
+done
+expect "replicated json: calibrated" json_has "$work/rep0.json" \
+    "d['errorEstimate']['upperBound'] is False and d['errorEstimate']['replicates'] == 2"
+expect "replicated header" grep -a -q "errorEstimateReplicates" "$work/rep0.exr"
+check "replicated parts merge" 0 "$wavefront" merge "$work/rep0.exr" "$work/rep8.exr" \
+    -o "$work/repmerged.exr"
+expect "replicated merge: an upper bound" grep -a -q -P \
+    'errorEstimateIsUpperBound\x00string\x00\x04\x00\x00\x00true' "$work/repmerged.exr"
+expect "replicated part: no bound" grep -a -q -P \
+    'errorEstimateIsUpperBound\x00string\x00\x05\x00\x00\x00false' "$work/rep0.exr"
+check "error replicates out of range" 2 "$wavefront" render "$box" -o "$work/x.exr" \
+    --error-replicates 0
+expect "error replicates out of range: one line" one_line_error
 expect "plain progress line: the estimate" grep -q "relMSE ~" "$work/stderr"
 for flag in "--spp-offset 8" "--sampler stratified" "--spp 4" \
             "--checkpoint $work/x.exr"; do

@@ -99,10 +99,12 @@ def test_adaptive_render(renderer, cornell):
                           aov="samples")
     assert out.stats["adaptive"]["targetError"] == 0.05
     assert out.aov["samples"].max() <= 16 and 1 <= out.spp <= 16
-    # targetMet comes from the image's own estimate, as the CLI's JSON says it
+    # targetMet comes from the image's own estimate, as the CLI's JSON says it: calibrated by
+    # two error replicates, and with 4 of its standard errors to spare
     estimate = out.stats["errorEstimate"]
-    assert out.stats["adaptive"]["targetMet"] == (estimate["reliable"] and
-                                                  estimate["relMse"] <= 0.05)
+    assert estimate["replicates"] == 2 and estimate["upperBound"] is False
+    assert out.stats["adaptive"]["targetMet"] == (
+        estimate["reliable"] and estimate["relMse"] + 4 * estimate["standardError"] <= 0.05)
 
 
 def test_every_render_estimates_its_error(renderer, cornell):
@@ -111,6 +113,15 @@ def test_every_render_estimates_its_error(renderer, cornell):
     assert estimate["relMse"] > 0 and estimate["upperBound"] is True
     independent = renderer.render(cornell, width=16, spp=16, max_depth=3, sampler="independent")
     assert independent.stats["errorEstimate"]["upperBound"] is False
+    # Two error replicates: calibrated, not a bound; one sequence's image is unchanged by asking
+    # for one replicate.
+    replicated = renderer.render(cornell, width=16, spp=16, max_depth=3, error_replicates=2)
+    assert replicated.stats["errorEstimate"]["upperBound"] is False
+    assert replicated.stats["errorEstimate"]["replicates"] == 2
+    one = renderer.render(cornell, width=16, spp=16, max_depth=3, error_replicates=1)
+    assert (one.image == out.image).all()
+    with pytest.raises(ValueError, match="error_replicates"):
+        renderer.render(cornell, width=16, spp=16, error_replicates=17)
 
 
 def test_target_error_with_a_time_limit(renderer, cornell):
