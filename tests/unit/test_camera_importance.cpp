@@ -282,6 +282,8 @@ TEST(CameraImportance, LightTracingSplatsReproducePixelMeans) {
                 float splat = emitted(q) * cameraImportance(c, lensPoint, w) * cosCamera *
                               cosLight / dist2 / (lightPdf * cameraLensPdf(c)) *
                               cameraSplatScale(c, float(pixels));
+                ASSERT_TRUE(raster.x >= 0.0f && raster.x < float(c.width) && raster.y >= 0.0f &&
+                            raster.y < float(c.height));
                 pass[uint(raster.y) * c.width + uint(raster.x)] += splat;
             }
             for (uint p = 0; p < pixels; ++p) {
