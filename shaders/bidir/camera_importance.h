@@ -4,14 +4,16 @@
 // in tests/unit/test_camera_importance.cpp check exactly what a light or BDPT pass would run.
 //
 // Normalisation (Veach 1997 5.4, pbrt-v4 PerspectiveCamera::We): We is the importance of the
-// whole image, integral of We(p, w) cos(theta) dw dA(p) over lens and directions = 1. The image
-// plane at distance 1 has area A = (2 tanHalfFovY aspect)(2 tanHalfFovY), a raster area dx of
-// one pixel is A / (W H) of it, and dw = cos^3(theta) dA there, so the path tracer's box-filtered
-// pixel mean, integral over pixel j of L(x) dx, equals W H times the measurement with We
-// restricted to pixel j. Hence: a light tracer that traces N light paths per sample index and
-// splats into a film divided by the samples per pixel must splat
-//   (W H / N) We(p, w) cos(theta) ... / pdfs   (cameraSplatScale),
-// which is 1 when each sample index traces one light path per pixel (pbrt-v4's light tracer).
+// whole image, integral of We(p, w) cos(theta) dw dA(p) over lens and directions = 1, with
+// A = (2 tanHalfFovY aspect)(2 tanHalfFovY) the image plane's area at distance 1. The path
+// tracer's pixel j holds the box-filtered mean, integral over the pixel of L dx (dx = 1 for a
+// pixel, A / (W H) of that plane; dw = cos^3(theta) dA on it; the lens averaged too), which is
+// W H times the measurement with We restricted to pixel j. So a light tracer that traces N
+// light paths per sample index, splatting into a film that divides by the samples per pixel,
+// adds to the pixel of cameraRasterOfPoint
+//   (W H / N) We(p, w) x (the rest of the path's contribution) / (its pdfs),
+// W H / N being cameraSplatScale: 1 when each sample index traces one light path per pixel
+// (pbrt-v4's light tracer). tests/unit/test_camera_importance.cpp checks this on a render.
 #ifndef WF_CAMERA_IMPORTANCE_H
 #define WF_CAMERA_IMPORTANCE_H
 
