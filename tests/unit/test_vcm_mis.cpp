@@ -108,7 +108,8 @@ std::vector<Strategy> explicitStrategies(const AbstractPath& p, const Mode& mode
     auto density = [&](int t, bool merge) { // camera x0..x(t-1), light x(t or t-1)..xk
         double d = 1.0;
         for (int i = 0; i < t; ++i) d *= a[i];
-        for (int i = merge ? t - 1 : t; i <= k; ++i) d *= (i == k && t == k && !merge) ? p.lightPosNee : b[i];
+        bool nee = t == k && !merge; // s = 1: the light point is next-event estimation's
+        for (int i = merge ? t - 1 : t; i <= k; ++i) d *= (i == k && nee) ? p.lightPosNee : b[i];
         return d;
     };
     std::vector<Strategy> out;
@@ -120,7 +121,8 @@ std::vector<Strategy> explicitStrategies(const AbstractPath& p, const Mode& mode
                                density(t, false) * (t == 1 ? par.lightPathCount : 1.0)});
     if (mode.merge)
         for (int i = 1; i < k; ++i)
-            if (!p.dirac[i]) out.push_back({k + 1 - i, i + 1, true, par.eta * density(i + 1, true)});
+            if (!p.dirac[i])
+                out.push_back({k + 1 - i, i + 1, true, par.eta * density(i + 1, true)});
     return out;
 }
 
@@ -152,9 +154,10 @@ struct RecursiveWeights {
         if (p.finite()) gt::vcmOnHit(cfg, v, float(p.dist2(k - 1, k)), float(p.cosAt(k, k - 1)));
         camera[k] = v;
 
-        v = gt::vcmStartLight(cfg, float(p.lightPosNee), float(emissionPdfW()),
-                              float(p.finite() ? p.cosAt(k, k - 1) : 1.0), p.finite(),
-                              isDiracLight(p.light));
+        // Infinite lights get a cosine that is not 1: the header must ignore it.
+        double cosAtLight = p.finite() ? p.cosAt(k, k - 1) : p.cosAt(k - 1, k);
+        v = gt::vcmStartLight(cfg, float(p.lightPosNee), float(emissionPdfW()), float(cosAtLight),
+                              p.finite(), isDiracLight(p.light));
         for (int i = k - 1; i >= 1; --i) {
             bool fromInfinite = i == k - 1 && !p.finite();
             gt::vcmOnHit(cfg, v, float(fromInfinite ? 1.0 : p.dist2(i, i + 1)),
