@@ -113,6 +113,7 @@ check "plain render estimates its error" 0 "$wavefront" render "$box" -o "$work/
 expect "plain json: errorEstimate" json_has "$work/plain.json" \
     "d['errorEstimate']['relMse'] > 0 and d['errorEstimate']['upperBound'] is True"
 expect "plain header: estimatedRelMse" grep -a -q "estimatedRelMse" "$work/plain.exr"
+expect "plain progress line: the estimate" grep -q "relMSE ~" "$work/stderr"
 # With error replicates the estimate is calibrated; parts of one sequence merge to a bound.
 for part in 0 8; do
     check "replicated part $part" 0 "$wavefront" render "$box" -o "$work/rep$part.exr" \
@@ -131,7 +132,6 @@ expect "replicated part: no bound" grep -a -q -P \
 check "error replicates out of range" 2 "$wavefront" render "$box" -o "$work/x.exr" \
     --error-replicates 0
 expect "error replicates out of range: one line" one_line_error
-expect "plain progress line: the estimate" grep -q "relMSE ~" "$work/stderr"
 for flag in "--spp-offset 8" "--sampler stratified" "--spp 4" \
             "--checkpoint $work/x.exr"; do
     # shellcheck disable=SC2086
