@@ -29,6 +29,9 @@ using glm::dvec3;
 using glm::uvec2;
 
 constexpr int MAX_LENGTH = 5; // segments, camera to light
+// Light subpaths per pass (one pass = one sample per pixel): fewer than the 48 pixels, so
+// cameraSplatScale is 2, not the 1 that would hide a missing or inverted splat factor.
+constexpr uint32_t LIGHT_PATHS = 24u;
 
 // ---- Shared pieces: the light, the camera's per-pixel density, one light subpath ----
 
@@ -206,7 +209,7 @@ void pathTracingPass(const Scene& s, Rng& rng, Film& film) {
             film[y * s.camera.width + x] += pathTrace(s, uvec2(x, y), rng);
 }
 
-// Light tracing: width x height light subpaths per pass, so cameraSplatScale is 1.
+// Light tracing: LIGHT_PATHS light subpaths per pass, each vertex splatted.
 void lightTracingPass(const Scene& s, Rng& rng, Film& film) {
     const CameraGeometry& c = s.camera;
     const uint32_t pixels = c.width * c.height;
@@ -218,36 +221,38 @@ void lightTracingPass(const Scene& s, Rng& rng, Film& film) {
             film[p] += lightQuad(s).emitted;
         }
     }
-    const VcmMisConfig cfg = makeVcmMisConfig(1.0f, float(pixels), 0.0f, true, false);
+    const VcmMisConfig cfg = makeVcmMisConfig(1.0f, float(LIGHT_PATHS), 0.0f, true, false);
     std::vector<LightVertex> path;
-    for (uint32_t i = 0; i < pixels; ++i) {
+    for (uint32_t i = 0; i < LIGHT_PATHS; ++i) {
         traceLightPath(s, cfg, rng, path);
         for (const LightVertex& y : path) {
             uvec2 pixel;
             vec3 value;
             float weight;
-            if (connectToCamera(s, cfg, y, float(pixels), pixel, value, weight)) {
+            if (connectToCamera(s, cfg, y, float(LIGHT_PATHS), pixel, value, weight)) {
                 film[pixel.y * c.width + pixel.x] += value;
             }
         }
     }
 }
 
-// BDPT: pixel i's camera subpath connects to light subpath i, and every light subpath also
-// splats (t = 1), so lightPathCount is the pixel count.
+// BDPT: every light subpath splats (t = 1), so lightPathCount is LIGHT_PATHS; pixel i's camera
+// subpath connects to light subpath i mod LIGHT_PATHS (pixels sharing one are correlated, which
+// the batches' standard errors do not mind).
 struct Bdpt {
     const Scene& s;
     VcmMisConfig cfg;
-    std::vector<LightVertex> lightPath;
+    std::vector<std::vector<LightVertex>> lightPaths;
 
     explicit Bdpt(const Scene& scene, float exponent)
-        : s(scene), cfg(makeVcmMisConfig(exponent, float(scene.camera.width * scene.camera.height),
-                                         0.0f, true, false)) {}
+        : s(scene), cfg(makeVcmMisConfig(exponent, float(LIGHT_PATHS), 0.0f, true, false)),
+          lightPaths(LIGHT_PATHS) {}
 
     // s >= 2, t >= 2: the camera vertex (on `q` at p, `segments` from the camera) to every
     // light vertex whose path stays within MAX_LENGTH.
-    vec3 connect(const Hit& x, const Frame& f, const BsdfParams& m, vec3 woLocal,
-                 const VcmSubpathMis& cameraMis, int segments) const {
+    vec3 connect(const std::vector<LightVertex>& lightPath, const Hit& x, const Frame& f,
+                 const BsdfParams& m, vec3 woLocal, const VcmSubpathMis& cameraMis,
+                 int segments) const {
         vec3 sum(0.0f);
         for (const LightVertex& y : lightPath) {
             if (segments + 1 + y.segments > MAX_LENGTH) {
@@ -301,7 +306,7 @@ struct Bdpt {
     }
 
     // The camera subpath of one pixel with every strategy that ends on it (s = 0, 1, >= 2).
-    vec3 cameraPath(uvec2 pixel, Rng& rng) const {
+    vec3 cameraPath(uvec2 pixel, const std::vector<LightVertex>& lightPath, Rng& rng) const {
         const CameraGeometry& c = s.camera;
         vec3 o = c.position, d = cameraRayDirection(c, pixel, rng.uniform2());
         VcmSubpathMis mis = vcmStartCamera(cfg, pixelPdfW(c, d));
@@ -334,7 +339,7 @@ struct Bdpt {
             const BsdfParams m = lambert(q.albedo);
             const vec3 woLocal = f.toLocal(-d);
             radiance += throughput * (nextEvent(h, f, m, woLocal, mis, rng) +
-                                      connect(h, f, m, woLocal, mis, segments));
+                                      connect(lightPath, h, f, m, woLocal, mis, segments));
             BsdfSample bs;
             if (!bsdfSample(m, woLocal, rng.uniform(), rng.uniform2(), bs)) {
                 break;
@@ -353,17 +358,20 @@ struct Bdpt {
     void pass(Rng& rng, Film& film) {
         const CameraGeometry& c = s.camera;
         const uint32_t pixels = c.width * c.height;
-        for (uint32_t i = 0; i < pixels; ++i) {
-            traceLightPath(s, cfg, rng, lightPath);
-            for (const LightVertex& y : lightPath) { // t = 1
+        for (std::vector<LightVertex>& path : lightPaths) {
+            traceLightPath(s, cfg, rng, path);
+            for (const LightVertex& y : path) { // t = 1
                 uvec2 pixel;
                 vec3 value;
                 float weight;
-                if (connectToCamera(s, cfg, y, float(pixels), pixel, value, weight)) {
+                if (connectToCamera(s, cfg, y, float(LIGHT_PATHS), pixel, value, weight)) {
                     film[pixel.y * c.width + pixel.x] += value * weight;
                 }
             }
-            film[i] += cameraPath(uvec2(i % c.width, i / c.width), rng);
+        }
+        for (uint32_t i = 0; i < pixels; ++i) {
+            film[i] += cameraPath(uvec2(i % c.width, i / c.width), lightPaths[i % LIGHT_PATHS],
+                                  rng);
         }
     }
 };
@@ -432,7 +440,7 @@ constexpr int BATCHES = 64;
 
 const Estimate& pathTracingReference() {
     static const Scene scene = boxScene();
-    static const Estimate e = runBatches(scene, BATCHES, 300, 1u, [&](Rng& rng, Film& film) {
+    static const Estimate e = runBatches(scene, BATCHES, 800, 1u, [&](Rng& rng, Film& film) {
         pathTracingPass(scene, rng, film);
     });
     return e;
@@ -490,7 +498,7 @@ TEST(BidirReference, SceneIsWhatTheEstimatorsAssume) {
 
 TEST(BidirReference, LightTracingAgreesWithPathTracing) {
     const Scene scene = boxScene();
-    Estimate e = runBatches(scene, BATCHES, 300, 2u, [&](Rng& rng, Film& film) {
+    Estimate e = runBatches(scene, BATCHES, 600, 2u, [&](Rng& rng, Film& film) {
         lightTracingPass(scene, rng, film);
     });
     expectAgreement(e, "light tracing");
@@ -499,7 +507,7 @@ TEST(BidirReference, LightTracingAgreesWithPathTracing) {
 TEST(BidirReference, BdptAgreesWithPathTracing) {
     const Scene scene = boxScene();
     Bdpt bdpt(scene, 2.0f);
-    Estimate e = runBatches(scene, BATCHES, 100, 3u,
+    Estimate e = runBatches(scene, BATCHES, 150, 3u,
                             [&](Rng& rng, Film& film) { bdpt.pass(rng, film); });
     expectAgreement(e, "bdpt");
 }
