@@ -77,8 +77,11 @@ WF_INLINE VcmMisConfig makeVcmMisConfig(float exponent, float lightPathCount, fl
     return cfg;
 }
 
-// cameraPdfW: solid-angle density of the camera ray per pixel (the density the light tracer's
-// camera importance uses). dVC = 0: no light subpath can hit a pinhole.
+// cameraPdfW: solid-angle density of the camera ray per pixel, W H cameraDirectionPdf
+// (camera_importance.h), the density one pixel's camera sample has against the lightPathCount
+// light subpaths that splat into it with cameraSplatScale = W H / lightPathCount. (The whole
+// image's cameraDirectionPdf alone weighs the same strategies with another n: unbiased, but far
+// from the heuristic.) dVC = 0: no light subpath can hit a pinhole.
 WF_INLINE VcmSubpathMis vcmStartCamera(VcmMisConfig cfg, float cameraPdfW) {
     VcmSubpathMis v;
     v.dVCM = cfg.connections * vcmMis(cfg, cfg.lightPathCount / cameraPdfW);
@@ -142,8 +145,10 @@ WF_INLINE float vcmSideSum(VcmMisConfig cfg, VcmSubpathMis v, float revPdfW) {
 
 // The camera subpath hit an emitter (s = 0): pdfs as in vcmStartLight for the point hit. Call
 // with the camera state after vcmOnHit for a finite light, before it (none) for an infinite
-// one. A camera ray that sees an emitter directly has weight 1 unless the renderer also splats
-// emitter points onto the image, which this strategy set leaves out.
+// one. Not for the first camera vertex: a camera ray that sees an emitter directly has weight
+// 1, because this strategy set leaves out splatting emitter points onto the image, but this
+// function counts that splat (camera.dVCM is nonzero there) and would darken the direct view;
+// the caller uses 1 (tests/unit/test_bidir_reference.cpp).
 WF_INLINE float vcmWeightEmitterHit(VcmMisConfig cfg, VcmSubpathMis camera, float directPdfA,
                                     float emissionPdfW) {
     float others = vcmMis(cfg, directPdfA) * camera.dVCM + vcmMis(cfg, emissionPdfW) * camera.dVC;
