@@ -248,8 +248,10 @@ struct Bdpt {
         : s(scene), cfg(makeVcmMisConfig(exponent, float(LIGHT_PATHS), 0.0f, true, false)),
           lightPaths(LIGHT_PATHS) {}
 
-    // s >= 2, t >= 2: the camera vertex (on `q` at p, `segments` from the camera) to every
-    // light vertex whose path stays within MAX_LENGTH.
+    // s >= 2, t >= 2: the camera vertex x (`segments` from the camera) to every vertex of its
+    // light subpath whose path stays within MAX_LENGTH. Each side's factor is f |cos| on the
+    // shading normal towards the other (the light's times the adjoint factor), so only 1 / d^2
+    // of the geometry term is left.
     vec3 connect(const std::vector<LightVertex>& lightPath, const Hit& x, const Frame& f,
                  const BsdfParams& m, vec3 woLocal, const VcmSubpathMis& cameraMis,
                  int segments) const {
