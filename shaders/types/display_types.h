@@ -14,6 +14,7 @@ using namespace glm;
 
 #define WF_TONEMAP_LINEAR 0u
 #define WF_TONEMAP_ACES 1u
+#define WF_TONEMAP_NEUTRAL 2u
 
 // Only 4-byte scalars, so std430 (push constants) and C++ agree member by member.
 struct DisplayConstants {
@@ -33,6 +34,36 @@ struct DisplayConstants {
 WF_INLINE vec3 tonemapAces(vec3 x) {
     vec3 y = (x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f);
     return clamp(y, vec3(0.0f), vec3(1.0f));
+}
+
+// Khronos PBR Neutral (the Khronos 3D Commerce group's tone mapper, 2024; what glTF viewers,
+// Blender and three.js offer): base colours up to 0.8 come out as they went in (less a small
+// offset that lifts near-black), brighter colours are compressed towards 1 along a curve that
+// keeps their hue, and very bright ones desaturate towards white, so a material looks as its
+// glTF file says it does.
+WF_INLINE vec3 tonemapNeutral(vec3 color) {
+    const float startCompression = 0.8f - 0.04f;
+    const float desaturation = 0.15f;
+    float lowest = min(color.x, min(color.y, color.z));
+    float offset = lowest < 0.08f ? lowest - 6.25f * lowest * lowest : 0.04f;
+    color -= vec3(offset);
+    float peak = max(color.x, max(color.y, color.z));
+    if (peak < startCompression)
+        return clamp(color, vec3(0.0f), vec3(1.0f));
+    const float d = 1.0f - startCompression;
+    float newPeak = 1.0f - d * d / (peak + d - startCompression);
+    color *= newPeak / peak;
+    float g = 1.0f - 1.0f / (desaturation * (peak - newPeak) + 1.0f);
+    return clamp(mix(color, vec3(newPeak), g), vec3(0.0f), vec3(1.0f));
+}
+
+// Non-negative radiance (exposure applied) to [0, 1] by the curve `tonemap` names.
+WF_INLINE vec3 tonemapRadiance(vec3 radiance, uint tonemap) {
+    if (tonemap == WF_TONEMAP_ACES)
+        return tonemapAces(radiance);
+    if (tonemap == WF_TONEMAP_NEUTRAL)
+        return tonemapNeutral(radiance);
+    return clamp(radiance, vec3(0.0f), vec3(1.0f));
 }
 
 // IEC 61966-2-1 encoding of one channel in [0, 1], as the PNG preview writes it.
@@ -55,8 +86,7 @@ WF_INLINE vec3 displayColor(vec4 filmTexel, float exposureScale, uint tonemap) {
     if (!isFiniteColor(radiance))
         return vec3(0.0f);
     radiance = max(radiance, vec3(0.0f));
-    vec3 mapped = tonemap == WF_TONEMAP_ACES ? tonemapAces(radiance)
-                                             : clamp(radiance, vec3(0.0f), vec3(1.0f));
+    vec3 mapped = tonemapRadiance(radiance, tonemap);
     return vec3(srgbEncode(mapped.x), srgbEncode(mapped.y), srgbEncode(mapped.z));
 }
 

@@ -5,6 +5,7 @@
 
 #include "app/cli.h"
 #include "app/commands.h"
+#include "app/render_options.h"
 #include "errors.h"
 #include "image/render_parts.h"
 
@@ -24,6 +25,7 @@ const CommandSpec& mergeSpec() {
         {
             {"--output", "-o", "OUT.exr", "the merged OpenEXR file (required; must end in .exr)"},
             {"--quiet", "-q", "", "no summary line on stderr"},
+            {"--tonemap", "", "MODE", tonemapHelp()},
         },
         "Exit codes: 0 done, 2 bad usage or bad input (one line naming the part), 1 internal\n"
         "failure.\n"};
@@ -51,7 +53,8 @@ int runMergeCommand(const std::vector<std::string>& args) {
     for (const std::string& path : parsed.positional)
         parts.push_back(readRenderPart(path));
     const MergedRender merged = mergeRenderParts(parts);
-    const RenderPart& image = merged.image;
+    RenderPart image = merged.image;
+    image.previewTonemap = previewTonemapFrom(parsed);
     for (const std::string& gap : merged.gaps)
         std::fprintf(stderr, "wavefront: merge: samples %s are in no part (the image is the "
                              "mean of the others, still unbiased)\n",

@@ -298,6 +298,7 @@ int runRenderCommand(const std::vector<std::string>& args) {
     run.maxDepth = static_cast<int>(settings.maxDepth);
     run.sppOffset = settings.sppOffset;
     run.sppTotal = settings.sampleSetSize;
+    run.previewTonemap = previewTonemapFrom(parsed);
 
     // --resume: the checkpoint holds samples [offset, offset + done); render the rest.
     std::optional<RenderPart> resumed;

@@ -59,6 +59,7 @@ const CommandSpec& renderSpec() {
                                       "camera ray's first hit, as denoisers want them), depth, "
                                       "variance (of each pixel's estimate), samples (each "
                                       "pixel's sample count)"},
+                {"--tonemap", "", "MODE", tonemapHelp()},
                 {"--resume", "", "FILE.exr", "continue that checkpoint of this very render "
                                              "(scene, size, settings, seed) to --spp: the image "
                                              "of an uninterrupted run"},
@@ -144,6 +145,9 @@ std::string renderSettingsKey(const RenderSettings& s, const ParsedArgs& parsed)
            (s.triangleSolidAngle ? "solid-angle" : "area") + " sphere " +
            (s.sphereSolidAngle ? "solid-angle" : "area") + " " + samplerName(s.sampler) +
            (s.randomizeSamples ? "" : " no-randomize") +
+           // Replicates are sequences of their own: parts of another count are another render.
+           (errorReplicatesFor(s) > 1 ? " replicates " + std::to_string(errorReplicatesFor(s))
+                                      : "") +
            (s.textureLod ? "" : " texture-filter none") + " camera " +
            parsed.value("--camera").value_or("default") +
            (parsed.has("--aperture") ? " aperture " + *parsed.value("--aperture") : "") +

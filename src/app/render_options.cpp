@@ -240,6 +240,10 @@ void applyRenderFlags(const ParsedArgs& parsed, uint32_t defaultMaxDepth,
                          "remove (pick another --sampler)");
 }
 
+Tonemap previewTonemapFrom(const ParsedArgs& parsed) {
+    return parseTonemap(parsed.value("--tonemap").value_or(tonemapName(kDefaultTonemap)));
+}
+
 ContextOptions contextOptionsFrom(const ParsedArgs& parsed) {
     ContextOptions options;
     if (parsed.has("--device"))

@@ -12,6 +12,7 @@
 
 #include "app/cli.h"
 #include "gpu/context.h"
+#include "image/tonemap.h"
 #include "render/guiding/guiding_schedule.h"
 #include "render/wavefront_renderer.h"
 #include "scene/scene.h"
@@ -55,6 +56,9 @@ void applyRenderFlags(const ParsedArgs& parsed, uint32_t defaultMaxDepth,
 // --guiding auto: decides settings.guiding for `scene` (guiding_schedule.h's rule) and
 // clears guidingAuto; off and on are kept. The decision's reason is for --verbose.
 guiding::GuidingDecision resolveGuiding(RenderSettings& settings, const PreparedScene& scene);
+
+// --tonemap: the PNG preview's tone curve (the default where not given).
+Tonemap previewTonemapFrom(const ParsedArgs& parsed);
 
 // --device, --quiet and --traversal.
 ContextOptions contextOptionsFrom(const ParsedArgs& parsed);

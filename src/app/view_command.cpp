@@ -44,8 +44,7 @@ const CommandSpec& viewSpec() {
             },
             {
                 {"--exposure", "", "EV", "display exposure in stops: radiance x 2^EV (default 0)"},
-                {"--tonemap", "", "MODE", "linear (clamp, as render's PNG) or aces (filmic) "
-                                          "(default linear)"},
+                {"--tonemap", "", "MODE", tonemapHelp()},
                 {"--target-ms", "", "MS", "path tracing per frame aims at MS ms (default 33)"},
                 // The viewer's cameras: the file's, then the framing one (viewer/camera_list.h).
                 {"--camera", "", "NAME|INDEX", "the file's camera, or the framing one after them "
@@ -104,9 +103,8 @@ int runViewCommand(const std::vector<std::string>& args) {
     settings.sppLimit = parsed.uintValue("--spp", 0, 1, 1u << 20);
     applyRenderFlags(parsed, kDefaultMaxDepth, settings.render);
     settings.exposure = parsed.floatValue("--exposure", 0.0f, -64.0f, 64.0f);
-    settings.tonemap = parsed.choiceValue("--tonemap", "linear", {"linear", "aces"}) == "aces"
-                           ? Tonemap::Aces
-                           : Tonemap::Linear;
+    settings.tonemap = parseTonemap(
+        parsed.choiceValue("--tonemap", tonemapName(kDefaultTonemap), {"neutral", "aces", "linear"}));
     settings.targetMs = parsed.floatValue("--target-ms", 33.0f, 1.0f, 60000.0f);
     options.camera = parsed.value("--camera");
     options.environmentPath = parsed.value("--env").value_or("");

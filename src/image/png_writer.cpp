@@ -23,7 +23,7 @@ unsigned char linearToSrgb8(float linear) {
 }
 
 void writePngPreview(const std::string& path, int width, int height,
-                     const std::vector<float>& linearRgb) {
+                     const std::vector<float>& linearRgb, Tonemap tonemap) {
     // stb takes the row stride as an int, hence the tighter limit than size_t would allow.
     if (width <= 0 || height <= 0 || width > INT_MAX / 3 ||
         linearRgb.size() != static_cast<size_t>(width) * static_cast<size_t>(height) * 3) {
@@ -32,8 +32,8 @@ void writePngPreview(const std::string& path, int width, int height,
                             std::to_string(linearRgb.size()) + " floats");
     }
     std::vector<unsigned char> bytes(linearRgb.size());
-    for (size_t i = 0; i < linearRgb.size(); ++i) {
-        bytes[i] = linearToSrgb8(linearRgb[i]);
+    for (size_t i = 0; i < linearRgb.size(); i += 3) {
+        tonemapToSrgb8(&linearRgb[i], tonemap, &bytes[i]);
     }
     writeFileAtomically(path, [&](const std::string& tmpPath) {
         if (!stbi_write_png(tmpPath.c_str(), width, height, 3, bytes.data(), width * 3)) {

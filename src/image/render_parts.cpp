@@ -145,8 +145,8 @@ void writeRenderPart(const std::string& path, const RenderPart& part,
               {"sppTotal", static_cast<int>(part.sppTotal)}},
              channels);
     if (preview)
-        writePngPreview(previewPathFor(path),
-                        part.width, part.height, part.rgb);
+        writePngPreview(previewPathFor(path), part.width, part.height, part.rgb,
+                        part.previewTonemap);
 }
 
 void checkSameRender(const std::vector<RenderPart>& parts) {

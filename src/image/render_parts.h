@@ -11,6 +11,7 @@
 
 #include "image/error_estimate.h"
 #include "image/exr_io.h"
+#include "image/tonemap.h"
 
 namespace wf {
 
@@ -38,6 +39,8 @@ struct RenderPart {
     // files of versions before it. A merge carries the parts' merged estimate when every part
     // has one.
     std::optional<ErrorEstimate> errorEstimate;
+    // The PNG preview's tone curve (--tonemap); not a property of the image, so not stored.
+    Tonemap previewTonemap = kDefaultTonemap;
 };
 
 // Reads a part; InputError naming the file and the attribute when one is missing.

@@ -38,8 +38,4 @@ void DisplayPass::record(VkCommandBuffer cmd, float exposure, Tonemap tonemap) c
     program_->dispatch(cmd, groups, &constants);
 }
 
-const char* tonemapName(Tonemap tonemap) {
-    return tonemap == Tonemap::Aces ? "aces" : "linear";
-}
-
 } // namespace wf

@@ -9,13 +9,13 @@
 
 #include "gpu/compute_program.h"
 #include "gpu/shader_compiler.h"
+#include "image/tonemap.h"
 
 namespace wf {
 
 class Buffer;
 class Context;
 
-enum class Tonemap : uint32_t { Linear = 0, Aces = 1 };
 
 struct DisplaySize {
     uint32_t width;
@@ -40,6 +40,5 @@ private:
     std::unique_ptr<ComputeProgram> program_;
 };
 
-const char* tonemapName(Tonemap tonemap);
 
 } // namespace wf

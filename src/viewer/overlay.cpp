@@ -176,7 +176,7 @@ void displaySection(ViewSettings& settings, OverlayActions& actions) {
     actions.displayChanged |= ImGui::SliderFloat("--exposure (EV)", &settings.exposure, -10.0f,
                                                  10.0f, "%.1f");
     int tonemap = int(settings.tonemap);
-    if (ImGui::Combo("--tonemap", &tonemap, "linear\0aces\0")) {
+    if (ImGui::Combo("--tonemap", &tonemap, "linear\0aces\0neutral\0")) {
         settings.tonemap = Tonemap(tonemap);
         actions.displayChanged = true;
     }

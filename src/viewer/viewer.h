@@ -28,7 +28,7 @@ struct ViewSettings {
     uint32_t effectiveSppLimit() const;
     // Display only.
     float exposure = 0.0f; // stops (EV)
-    Tonemap tonemap = Tonemap::Linear;
+    Tonemap tonemap = kDefaultTonemap;
     // Frame pacing: path tracing per frame aims at this many milliseconds.
     double targetMs = 33.0;
 };

@@ -28,6 +28,17 @@ expect "json scene and bvh build" json_has "$work/stats.json" \
     "d['triangles'] > 0 and d['bvh']['nodes'] > 0 and d['bvh']['buildSeconds'] >= 0 and \
      d['bvh']['threads'] >= 1 and d['peakHostMemoryBytes'] > 0 and d['loadSeconds'] > 0"
 expect "progress on stderr" grep -q "spp" "$work/stderr"
+# The PNG preview's tone curve: Khronos PBR Neutral unless told; the EXR stays linear radiance.
+for curve in linear aces neutral; do
+    check "render --tonemap $curve" 0 "$wavefront" render "$scenes/cornell_box.gltf" \
+        -o "$work/tone_$curve.exr" --spp 4 --width 64 --max-depth 4 --seed 9 --tonemap $curve -q
+done
+expect "neutral is the default preview" cmp "$work/cornell.png" "$work/tone_neutral.png"
+expect "tone curves differ" bash -c "! cmp -s '$work/tone_linear.png' '$work/tone_neutral.png' \
+    && ! cmp -s '$work/tone_aces.png' '$work/tone_neutral.png'"
+check "bad tonemap" 2 "$wavefront" render "$scenes/cornell_box.gltf" -o "$work/x.exr" \
+    --tonemap filmic
+expect "bad tonemap: one line" one_line_error
 expect "no temp files left" bash -c "! ls '$work' | grep -q tmp"
 
 check "thin lens" 0 "$wavefront" render "$scenes/cornell_box.gltf" -o "$work/lens.exr" --spp 2 \

@@ -1,10 +1,12 @@
 // wf_compare_images: checks a viewer screenshot against an offscreen render.
 //   wf_compare_images VIEW.exr RENDER.exr [--spp N] [--tolerance T] [--shown VIEW.png]
+//                     [--tonemap MODE]
 // The EXRs must have the same size and agree per channel within T * (1 + |render|) (samples are
 // a pure hash of pixel, sample, dimension and seed, so the same spp and seed give the same
 // samples; only the grouping of the float sums differs with the viewer's per-frame batches).
 // --spp checks VIEW.exr's spp attribute. --shown checks that the PNG of the shown frame (taken
-// with --no-overlay) is the radiance through the linear tone curve, within one 8-bit step.
+// with --no-overlay) is the radiance through the tone curve (--tonemap, default the viewer's:
+// image/tonemap.h), within one 8-bit step.
 // On failure a difference image is written beside VIEW.exr (VIEW.diff.exr). Exit 0 or 1.
 #include <cmath>
 #include <cstdio>
@@ -17,6 +19,7 @@
 
 #include "image/exr_io.h"
 #include "image/png_writer.h"
+#include "image/tonemap.h"
 
 namespace {
 
@@ -29,15 +32,19 @@ std::string size(int width, int height) {
     return std::to_string(width) + "x" + std::to_string(height);
 }
 
-int checkShown(const std::string& pngPath, const wf::ExrImage& view) {
+int checkShown(const std::string& pngPath, const wf::ExrImage& view, wf::Tonemap tonemap) {
     int width = 0, height = 0, channels = 0;
     unsigned char* pixels = stbi_load(pngPath.c_str(), &width, &height, &channels, 3);
     if (!pixels)
         return fail(pngPath + ": cannot read the PNG");
     int worst = 0;
     if (width == view.width && height == view.height)
-        for (size_t i = 0; i < size_t(width) * height * 3; ++i)
-            worst = std::max(worst, std::abs(int(pixels[i]) - int(wf::linearToSrgb8(view.rgb[i]))));
+        for (size_t i = 0; i < size_t(width) * height * 3; i += 3) {
+            unsigned char expected[3];
+            wf::tonemapToSrgb8(&view.rgb[i], tonemap, expected);
+            for (int c = 0; c < 3; ++c)
+                worst = std::max(worst, std::abs(int(pixels[i + c]) - int(expected[c])));
+        }
     stbi_image_free(pixels);
     if (width != view.width || height != view.height)
         return fail(pngPath + ": " + size(width, height) + ", the EXR is " +
@@ -45,8 +52,8 @@ int checkShown(const std::string& pngPath, const wf::ExrImage& view) {
     if (worst > 1)
         return fail(pngPath + ": the shown frame differs from the radiance by " +
                     std::to_string(worst) + " 8-bit steps");
-    std::printf("ok   %s: shown frame = radiance through the linear curve (max step %d)\n",
-                pngPath.c_str(), worst);
+    std::printf("ok   %s: shown frame = radiance through the %s curve (max step %d)\n",
+                pngPath.c_str(), wf::tonemapName(tonemap), worst);
     return 0;
 }
 
@@ -61,6 +68,7 @@ int main(int argc, char** argv) {
     const std::string viewPath = argv[1], renderPath = argv[2];
     double tolerance = 1e-4;
     std::string spp, shown;
+    wf::Tonemap tonemap = wf::kDefaultTonemap;
     for (int i = 3; i + 1 < argc; i += 2) {
         const std::string flag = argv[i];
         if (flag == "--spp")
@@ -69,6 +77,8 @@ int main(int argc, char** argv) {
             tolerance = std::atof(argv[i + 1]);
         else if (flag == "--shown")
             shown = argv[i + 1];
+        else if (flag == "--tonemap")
+            tonemap = wf::parseTonemap(argv[i + 1]);
     }
     try {
         const wf::ExrImage view = wf::readExr(viewPath);
@@ -99,7 +109,7 @@ int main(int argc, char** argv) {
         std::printf("ok   %s: %dx%d, max relative difference %.3g, mean %.3g\n",
                     viewPath.c_str(), view.width, view.height, worst,
                     sum / double(view.rgb.size()));
-        return shown.empty() ? 0 : checkShown(shown, view);
+        return shown.empty() ? 0 : checkShown(shown, view, tonemap);
     } catch (const std::exception& error) {
         return fail(error.what());
     }

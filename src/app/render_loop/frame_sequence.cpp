@@ -176,6 +176,7 @@ int runFrameSequence(const ParsedArgs& parsed, const RenderRequest& request) {
         part.maxDepth = int(settings.maxDepth);
         part.sppOffset = settings.sppOffset;
         part.sppTotal = settings.sampleSetSize;
+        part.previewTonemap = previewTonemapFrom(parsed);
         part.spp = renderer->samplesDone();
         part.rgb = renderer->readImage();
         part.renderSeconds = renderer->stats().seconds;
