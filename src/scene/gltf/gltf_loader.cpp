@@ -22,6 +22,7 @@
 #include "scene/gltf/io/gltf_buffer_streaming.h"
 #include "scene/gltf/compression/gltf_compression.h"
 #include "scene/gltf/io/gltf_file_access.h"
+#include "scene/gltf/gltf_gpu_instancing.h"
 #include "scene/gltf/gltf_images.h"
 #include "scene/gltf/gltf_instancing.h"
 #include "scene/gltf/gltf_lights_cameras.h"
@@ -190,7 +191,8 @@ std::vector<std::size_t> Converter::countPlacements() const {
         seen[index] = true;
         const tinygltf::Node& node = model_.nodes[index];
         if (node.mesh >= 0 && std::size_t(node.mesh) < model_.meshes.size())
-            ++placements[node.mesh];
+            placements[node.mesh] += std::max<std::size_t>(
+                gltf::gpuInstanceCount(model_, file_, index), 1); // EXT_mesh_gpu_instancing
         stack.insert(stack.end(), node.children.begin(), node.children.end());
     }
     return placements;
@@ -230,20 +232,36 @@ void Converter::walkNodes(gltf::PrimitiveBuilder& builder) {
             // A skinned mesh sits where its joints put it; its node's transform is ignored.
             const glm::dmat4 placed =
                 deformation.jointMatrices.empty() ? world : glm::dmat4(1.0);
-            const bool firstPlacement = instanced && meshSlot[node.mesh] == gltf::kWorldGeometry;
-            if (firstPlacement)
-                meshSlot[node.mesh] = builder.newMesh();
-            for (size_t p = 0; p < primitives.size() && (!instanced || firstPlacement); ++p) {
-                builder.add(primitives[p], "mesh " + std::to_string(node.mesh) + " primitive " +
-                            std::to_string(p), instanced ? glm::dmat4(1.0) : placed,
-                            meshSlot[node.mesh], &deformation);
+            const bool keyed =
+                shutter_.segments != 0 && blurred_[node.mesh] && shutter_.moves(index);
+            // EXT_mesh_gpu_instancing: each instance is placed as a child node with its TRS
+            // would be (a skinned mesh's instances move its posed, world-space vertices).
+            const gltf::GpuInstances gpu(model_, file_, reader_, index);
+            for (std::size_t copy = 0; copy < std::max<std::size_t>(gpu.size(), 1); ++copy) {
+                const glm::dmat4 local = gpu.empty() ? glm::dmat4(1.0) : gpu.transform(copy);
+                const glm::dmat4 at = gpu.empty() ? world : world * local;
+                const glm::dmat4 posed = gpu.empty() ? placed
+                                         : deformation.jointMatrices.empty() ? at
+                                                                             : local;
+                const bool firstPlacement =
+                    instanced && meshSlot[node.mesh] == gltf::kWorldGeometry;
+                if (firstPlacement)
+                    meshSlot[node.mesh] = builder.newMesh();
+                for (size_t p = 0; p < primitives.size() && (!instanced || firstPlacement); ++p)
+                    builder.add(primitives[p], "mesh " + std::to_string(node.mesh) +
+                                " primitive " + std::to_string(p),
+                                instanced ? glm::dmat4(1.0) : posed, meshSlot[node.mesh],
+                                &deformation);
+                if (!instanced)
+                    continue;
+                std::vector<glm::mat4> keys;
+                for (std::size_t k = 0; keyed && k < shutter_.world.size(); ++k)
+                    keys.emplace_back(gpu.empty() ? shutter_.world[k][index]
+                                                  : shutter_.world[k][index] * local);
+                builder.place(meshSlot[node.mesh], at, name, std::move(keys));
             }
-            if (instanced)
-                builder.place(meshSlot[node.mesh], world, name,
-                              shutter_.segments != 0 && blurred_[node.mesh] &&
-                                      shutter_.moves(index)
-                                  ? shutter_.keysOf(index)
-                                  : std::vector<glm::mat4>());
+        } else if (node.extensions.count("EXT_mesh_gpu_instancing")) {
+            gltf::warn(file_, name + " has EXT_mesh_gpu_instancing but no mesh: ignored");
         }
         gltf::keyNodeMotion(shutter_, index, cameras, lights, scene_);
         for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) {

@@ -20,7 +20,8 @@ const std::set<std::string> SUPPORTED_EXTENSIONS = {
     "KHR_materials_specular", "KHR_materials_clearcoat", "KHR_materials_sheen",
     "KHR_materials_volume", "KHR_texture_transform", "KHR_lights_punctual",
     "KHR_mesh_quantization", "KHR_draco_mesh_compression", "EXT_meshopt_compression",
-    "KHR_meshopt_compression", "KHR_materials_unlit", "EXT_texture_webp"};
+    "KHR_meshopt_compression", "KHR_materials_unlit", "EXT_texture_webp",
+    "EXT_mesh_gpu_instancing"};
 
 double number(const tinygltf::Value& object, const char* key, double fallback) {
     if (!object.IsObject() || !object.Has(key)) {

@@ -20,7 +20,9 @@ bool allFinite(const glm::dmat4& m) {
     return true;
 }
 
-// Row r, column c of the rotation of a unit quaternion (x, y, z, w), as glm's m[c][r].
+} // namespace
+
+// Row r, column c of the rotation, as glm's m[c][r].
 glm::dmat4 rotationMatrix(double x, double y, double z, double w) {
     glm::dmat4 m(1.0);
     m[0][0] = 1 - 2 * (y * y + z * z);
@@ -34,8 +36,6 @@ glm::dmat4 rotationMatrix(double x, double y, double z, double w) {
     m[2][2] = 1 - 2 * (x * x + y * y);
     return m;
 }
-
-} // namespace
 
 glm::dmat4 nodeLocalTransform(const tinygltf::Model& model, const std::string& file,
                               int nodeIndex, const NodeAnimation* animated) {

@@ -13,6 +13,9 @@ class Model;
 
 namespace wf::gltf {
 
+// The rotation of the unit quaternion (x, y, z, w), as a matrix (the one node rotations use).
+glm::dmat4 rotationMatrix(double x, double y, double z, double w);
+
 // The node's matrix, or its translation x rotation (renormalised) x scale with the parts that
 // `animated` (may be null) sets replaced. Fails (one line naming the node) on a matrix that is
 // not 16 numbers, TRS of the wrong sizes, a rotation that is no usable quaternion or a
