@@ -275,6 +275,15 @@ pos = g.accessor(None, F32, 3, "VEC3", sparse={
     "values": {"bufferView": g.view(struct.pack("<6f", 1, 0, 0, 0, 1, 0))}})
 g.node(mesh=g.mesh({"POSITION": pos}))
 case("valid/sparse_without_bufferview.gltf", "loads 1", g)
+# EXT_mesh_gpu_instancing: three instances (one with short-normalized rotation) of a triangle.
+g = tri()
+g.doc["extensionsUsed"] = ["EXT_mesh_gpu_instancing"]
+g.doc["nodes"][0]["extensions"] = {"EXT_mesh_gpu_instancing": {"attributes": {
+    "TRANSLATION": g.floats([0, 0, 0, 2, 0, 0, 4, 0, 0], "VEC3"),
+    "ROTATION": g.accessor(struct.pack("<12h", 0, 0, 0, 32767, 0, 0, 32767, 0, 0, 0, 0, 32767),
+                           I16, 3, "VEC4", normalized=True),
+    "_ID": g.floats([0, 1, 2], "SCALAR")}}}
+case("valid/gpu_instancing.gltf", "loads 3", g)
 g = Gltf()
 g.doc["extensionsUsed"] = g.doc["extensionsRequired"] = ["KHR_mesh_quantization"]
 pos = g.accessor(struct.pack("<12h", 0, 0, 0, 0, 32767, 0, 0, 0, 0, 32767, 0, 0), I16, 3, "VEC3",
@@ -530,8 +539,16 @@ case("invalid/text_pretending_glb.glb", "refused magic", b'{"asset":{"version":"
 case("invalid/deep_nesting.gltf", "refused nested",
      b'{"asset":{"version":"2.0"},"extras":' + b"[" * 5000 + b"]" * 5000 + b"}")
 g = tri()
-g.doc["extensionsRequired"] = g.doc["extensionsUsed"] = ["EXT_mesh_gpu_instancing"]
-broken("required_unknown_extension.gltf", "EXT_mesh_gpu_instancing", g)
+g.doc["extensionsRequired"] = g.doc["extensionsUsed"] = ["EXT_lights_image_based"]
+broken("required_unknown_extension.gltf", "EXT_lights_image_based", g)
+g = tri()
+g.doc["nodes"][0]["extensions"] = {"EXT_mesh_gpu_instancing": {"attributes": {
+    "TRANSLATION": g.floats([0, 0, 0, 2, 0, 0], "VEC3"), "SCALE": g.floats([1, 1, 1], "VEC3")}}}
+broken("gpu_instancing_counts_differ.gltf", "attributes differ in count", g)
+g = tri()
+g.doc["nodes"][0]["extensions"] = {"EXT_mesh_gpu_instancing": {"attributes": {
+    "ROTATION": g.accessor(struct.pack("<4B", 0, 0, 0, 255), U8, 1, "VEC4", normalized=True)}}}
+broken("gpu_instancing_unsigned_rotation.gltf", "must be VEC4 of FLOAT, or of normalized BYTE", g)
 # tinygltf alone would refuse this one first, for its indices accessor without bufferView.
 g = draco_quad()
 g.doc["extensionsRequired"] = g.doc["extensionsUsed"] = ["KHR_texture_basisu"]
