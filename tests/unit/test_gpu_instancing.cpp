@@ -200,7 +200,13 @@ TEST(GltfGpuInstancing, MalformedAttributesAreRefusedInOneLine) {
         test::GpuInstancingFile f = file(); // SCALE says 2 instances, the others 3
         std::string& s = f.g.accessors[f.scale];
         s.replace(s.find("\"count\":3"), 9, "\"count\":2");
-        expectRefused(f.g, "attributes differ in count");
+        expectRefused(f.g, "attributes differ in count (ROTATION has 3, SCALE 2)");
+    }
+    {
+        test::GpuInstancingFile f = file(); // the application's attributes are counted too
+        std::string& node = f.g.nodes[1];
+        node.insert(node.find("\"TRANSLATION\""), "\"_ID\":0,");
+        expectRefused(f.g, "attributes differ in count (ROTATION has 3, _ID ");
     }
     {
         test::GpuInstancingFile f = file();

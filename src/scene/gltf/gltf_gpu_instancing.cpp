@@ -141,9 +141,6 @@ GpuInstances::GpuInstances(const tinygltf::Model& model, const std::string& file
     translation_ = read(kTranslation);
     rotation_ = read(kRotation);
     scale_ = read(kScale);
-    for (const FloatArray* a : {translation_, rotation_, scale_})
-        if (a && a->count != count_) // the count was checked; a cached read must agree too
-            fail(file, name + "'s " + kExtension + " attributes differ in count");
     if (rotation_)
         for (std::size_t i = 0; i < count_; ++i) {
             const float* q = (*rotation_)[i];
