@@ -25,7 +25,7 @@ struct GpuInstancingCase {
     int rotationType = F32;
     std::string material;    // the mesh's material as JSON; empty: none
     bool animated = false;   // the node's translation animated over one second
-    bool camera = false;     // a camera at the root, looking at the instances
+    bool camera = false;     // a camera looking at the instances
 };
 
 struct GpuInstancingFile {
@@ -63,12 +63,7 @@ inline GpuInstancingFile gpuInstancingScene(const GpuInstancingCase& c, bool gpu
     const std::string root = R"({"translation":[0.5,-1,2],"rotation":[0,0.6,0,0.8],"children":[1]})";
     const std::string nodeTransform =
         R"("translation":[1,0.25,-0.5],"rotation":[0.1,0.2,0.3,0.927361849549570],"scale":[1.5,1,0.75])";
-    if (c.camera) {
-        g.cameras = {R"({"type":"perspective","perspective":{"yfov":0.9,"znear":0.05}})"};
-        g.nodes = {R"({"translation":[0,1,14],"children":[1],"camera":0})"};
-    } else {
-        g.nodes = {root};
-    }
+    g.nodes = {root};
     if (gpu) {
         std::string attributes;
         auto add = [&](const char* name, int accessor) {
@@ -123,6 +118,11 @@ inline GpuInstancingFile gpuInstancingScene(const GpuInstancingCase& c, bool gpu
                 node += ",\"scale\":" + numbers(c.scale, 3 * i, 3);
             g.nodes.push_back(node + "}");
         }
+    }
+    if (c.camera) { // a root of its own, after the others
+        g.cameras = {R"({"type":"perspective","perspective":{"yfov":0.9,"znear":0.05}})"};
+        g.nodes.push_back(R"({"translation":[0,1,14],"camera":0})");
+        g.scenes = "[{\"nodes\":[0," + std::to_string(g.nodes.size() - 1) + "]}]";
     }
     if (c.animated) {
         const std::vector<float> times = {0.0f, 1.0f}, moves = {0, 0, 0, 2, 1, -1};
