@@ -6,7 +6,9 @@
 #include <tiny_gltf.h>
 #include <webp/decode.h>
 
+#include <algorithm>
 #include <climits>
+#include <cmath>
 #include <cstring>
 
 #include "scene/gltf/gltf_accessors.h"
@@ -79,6 +81,20 @@ TextureImage fallbackChecker() {
 }
 
 } // namespace
+
+TextureImage roughnessFromGlossiness(const TextureImage& source, float glossinessFactor) {
+    TextureImage out;
+    out.width = source.width;
+    out.height = source.height;
+    out.rgba.resize(source.rgba.size());
+    for (size_t i = 0; i < source.rgba.size(); ++i) {
+        const float glossiness = glossinessFactor * float(source.rgba[i] >> 24) / 255.0f;
+        const uint32_t g = uint32_t(std::lround(255.0f * (1.0f - glossiness)));
+        out.rgba[i] = 0xff0000ffu | std::min(g, 255u) << 8; // ABGR: R 1, G roughness, B 0, A 1
+    }
+    out.name = source.name + " (roughness from glossiness)";
+    return out;
+}
 
 bool decodeImage(const unsigned char* bytes, size_t size, TextureImage& out, std::string& why) {
     if (isWebp(bytes, size))
@@ -162,13 +178,40 @@ void loadImages(const tinygltf::Model& model, const std::string& file,
         warn(file, name + " is not used: " + why + " (base colours show a magenta checker)");
     }
 
+    // KHR_materials_pbrSpecularGlossiness: roughness images made from decoded ones.
+    std::vector<uint32_t> derivedSlot(tables.derived.size(), FAILED);
+    for (size_t d = 0; d < tables.derived.size(); ++d) {
+        const uint32_t source = slot[tables.derived[d].image];
+        if (source == FAILED)
+            continue;
+        TextureImage made =
+            roughnessFromGlossiness(surface.images[source], tables.derived[d].glossinessFactor);
+        texelBytes += made.rgba.size() * 4;
+        if (texelBytes > MAX_TOTAL_TEXEL_BYTES) {
+            warn(file, made.name + " is not made: the images together exceed " +
+                           std::to_string(MAX_TOTAL_TEXEL_BYTES >> 20) +
+                           " MiB of texels (its glossiness counts as 1)");
+            continue;
+        }
+        derivedSlot[d] = uint32_t(surface.images.size());
+        surface.images.push_back(std::move(made));
+    }
+
     // Each material's broken texture uses: a base colour shows the checker, others are dropped.
     uint32_t checker = FAILED;
     std::vector<uint32_t> refImage(tables.refs.size(), FAILED);
     for (size_t r = 0; r < tables.refs.size(); ++r) {
-        refImage[r] = slot[tables.refImage[r]];
+        const int32_t d = r < tables.refDerived.size() ? tables.refDerived[r] : -1;
+        refImage[r] = d >= 0 ? derivedSlot[size_t(d)] : slot[tables.refImage[r]];
     }
     for (Material& m : tables.materials) {
+        // A missing glossiness texture reads as 1 (glTF's rule for an absent texture).
+        if (m.metallicRoughnessTexture != WF_NO_TEXTURE &&
+            refImage[m.metallicRoughnessTexture] == FAILED &&
+            tables.refDerived[m.metallicRoughnessTexture] >= 0)
+            m.roughness =
+                1.0f - tables.derived[size_t(tables.refDerived[m.metallicRoughnessTexture])]
+                           .glossinessFactor;
         for (uint32_t* field : {&m.metallicRoughnessTexture, &m.normalTexture,
                                 &m.emissiveTexture, &m.transmissionTexture,
                                 &m.specularTexture, &m.specularColorTexture}) {

@@ -24,10 +24,16 @@ constexpr size_t MAX_TOTAL_TEXEL_BYTES = size_t(1) << 30; // all decoded images 
 // oversized or corrupt data; never throws.
 bool decodeImage(const unsigned char* bytes, size_t size, TextureImage& out, std::string& why);
 
+// KHR_materials_pbrSpecularGlossiness: the metallic-roughness image (R 1, G roughness =
+// 1 - glossinessFactor x the source's A, rounded to 8 bits, B metallic 0, A 1) of a decoded
+// specularGlossinessTexture image.
+TextureImage roughnessFromGlossiness(const TextureImage& source, float glossinessFactor);
+
 // Decodes every image the materials use into surface.images and points surface.textureRefs
 // at them. `encoded` holds the bytes tinygltf read for URI images (file or data:), by image
 // index. An image that cannot be had is a warning: a base colour falls back to a magenta
 // checker (visible on purpose), other uses drop the texture. Fails only on bad indices.
+// The images made from decoded ones (MaterialTables::derived) follow them.
 void loadImages(const tinygltf::Model& model, const std::string& file,
                 const std::map<int, std::vector<unsigned char>>& encoded, MaterialTables& tables,
                 SurfaceData& surface);

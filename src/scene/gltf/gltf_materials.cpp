@@ -21,7 +21,7 @@ const std::set<std::string> SUPPORTED_EXTENSIONS = {
     "KHR_materials_volume", "KHR_texture_transform", "KHR_lights_punctual",
     "KHR_mesh_quantization", "KHR_draco_mesh_compression", "EXT_meshopt_compression",
     "KHR_meshopt_compression", "KHR_materials_unlit", "EXT_texture_webp",
-    "EXT_mesh_gpu_instancing"};
+    "EXT_mesh_gpu_instancing", "KHR_materials_pbrSpecularGlossiness"};
 
 double number(const tinygltf::Value& object, const char* key, double fallback) {
     if (!object.IsObject() || !object.Has(key)) {
@@ -52,6 +52,17 @@ const tinygltf::Value& extension(const tinygltf::ExtensionMap& map, const char* 
     static const tinygltf::Value none;
     auto found = map.find(name);
     return found == map.end() ? none : found->second;
+}
+
+// The `extensions` object of a textureInfo inside an extension, as tinygltf's map.
+tinygltf::ExtensionMap extensionsOf(const tinygltf::Value& info) {
+    tinygltf::ExtensionMap out;
+    if (info.IsObject() && info.Has("extensions") && info.Get("extensions").IsObject()) {
+        const tinygltf::Value& all = info.Get("extensions");
+        for (const std::string& key : all.Keys())
+            out[key] = all.Get(key);
+    }
+    return out;
 }
 
 uint32_t wrapMode(int gl) {
@@ -86,7 +97,10 @@ private:
         }
     }
     uint32_t extensionTexture(const tinygltf::Value& extension, const char* key, bool srgb,
-                              const std::string& name, MaterialNeeds& needs);
+                              const std::string& name, MaterialNeeds& needs,
+                              bool transform = false);
+    void convertSpecularGlossiness(const tinygltf::Value& sg, const std::string& name,
+                                   Material& out, MaterialNeeds& needs);
     void ignoreTextures(const tinygltf::Value& extension, std::initializer_list<const char*> keys,
                         const std::string& name) const;
     void convertLayers(const tinygltf::Material& m, const std::string& name, Material& out);
@@ -161,13 +175,15 @@ uint32_t MaterialConverter::textureRef(int texture, int texCoord,
     tables_.imageUsed[source] = true;
     tables_.refs.push_back(ref);
     tables_.refImage.push_back(uint32_t(source));
+    tables_.refDerived.push_back(-1);
     return uint32_t(tables_.refs.size() - 1);
 }
 
-// A textureInfo inside a material extension (tinygltf parses only the core ones).
+// A textureInfo inside a material extension (tinygltf parses only the core ones); with
+// `transform`, its own KHR_texture_transform is read too.
 uint32_t MaterialConverter::extensionTexture(const tinygltf::Value& extension, const char* key,
                                              bool srgb, const std::string& name,
-                                             MaterialNeeds& needs) {
+                                             MaterialNeeds& needs, bool transform) {
     if (!extension.IsObject() || !extension.Has(key)) {
         return WF_NO_TEXTURE;
     }
@@ -178,7 +194,65 @@ uint32_t MaterialConverter::extensionTexture(const tinygltf::Value& extension, c
     }
     const double set = number(info, "texCoord", 0.0);
     const int texCoord = std::isfinite(set) ? int(std::clamp(set, -1.0, 1e6)) : -1;
-    return textureRef(int(index), texCoord, {}, srgb, name + " " + key, needs);
+    return textureRef(int(index), texCoord, transform ? extensionsOf(info) : tinygltf::ExtensionMap{},
+                      srgb, name + " " + key, needs);
+}
+
+// KHR_materials_pbrSpecularGlossiness (archived; it takes precedence over
+// pbrMetallicRoughness, which is then only a fallback and is not read), onto the same BSDF:
+//   metallic 0, baseColor = diffuseFactor x diffuseTexture (alpha too),
+//   F0 = specularFactor x specularGlossinessTexture.rgb (sRGB), as KHR_materials_specular with
+//     specular 1, ior 1.5 and specularColor = specular / F0(1.5), so that
+//     min(F0(1.5) specularColor, 1) = the specular colour (F0(1.5) formed in float as
+//     bsdfLobes forms it),
+//   roughness = 1 - glossinessFactor x specularGlossinessTexture.a: the texture becomes a
+//     metallic-roughness one made at load (RoughnessFromGlossiness) with roughness factor 1.
+// The spec's diffuse (1 - max(specular)) weight is the BSDF's own energy-conserving coupling
+// here (docs/gltf.md).
+void MaterialConverter::convertSpecularGlossiness(const tinygltf::Value& sg,
+                                                  const std::string& name, Material& out,
+                                                  MaterialNeeds& needs) {
+    const std::vector<double> diffuse = numbers(sg, "diffuseFactor", 4, {1, 1, 1, 1});
+    const std::vector<double> specular = numbers(sg, "specularFactor", 3, {1, 1, 1});
+    const double glossiness = number(sg, "glossinessFactor", 1.0);
+    for (int c = 0; c < 4; ++c) {
+        checkRange(name, "diffuseFactor", diffuse[c], 0.0, 1.0);
+        out.baseColor[c] = float(diffuse[c]);
+    }
+    checkRange(name, "glossinessFactor", glossiness, 0.0, 1.0);
+    out.metallic = 0.0f;
+    out.roughness = float(1.0 - glossiness);
+    out.ior = 1.5f;
+    out.specular = 1.0f;
+    const float r = (out.ior - 1.0f) / (out.ior + 1.0f);
+    const float f0 = r * r; // 0.04, formed as bsdfLobes forms it
+    for (int c = 0; c < 3; ++c) {
+        checkRange(name, "specularFactor", specular[c], 0.0, 1.0);
+        out.specularColor[c] = float(specular[c] / double(f0));
+    }
+    out.baseColorTexture = extensionTexture(sg, "diffuseTexture", true, name, needs, true);
+    out.specularColorTexture =
+        extensionTexture(sg, "specularGlossinessTexture", true, name, needs, true);
+    if (out.specularColorTexture == WF_NO_TEXTURE)
+        return;
+    // The same reference, read as data from the image made at load.
+    const uint32_t source = tables_.refImage[out.specularColorTexture];
+    const float factor = float(glossiness);
+    int32_t made = -1;
+    for (size_t d = 0; d < tables_.derived.size(); ++d)
+        if (tables_.derived[d].image == source && tables_.derived[d].glossinessFactor == factor)
+            made = int32_t(d);
+    if (made < 0) {
+        made = int32_t(tables_.derived.size());
+        tables_.derived.push_back({source, factor});
+    }
+    TextureRef ref = tables_.refs[out.specularColorTexture];
+    ref.flags &= ~WF_TEXTURE_SRGB;
+    tables_.refs.push_back(ref);
+    tables_.refImage.push_back(source);
+    tables_.refDerived.push_back(made);
+    out.metallicRoughnessTexture = uint32_t(tables_.refs.size() - 1);
+    out.roughness = 1.0f;
 }
 
 void MaterialConverter::ignoreTextures(const tinygltf::Value& extension,
@@ -235,17 +309,23 @@ Material MaterialConverter::convert(const tinygltf::Material& m, const std::stri
                                     MaterialNeeds& needs) {
     const auto& pbr = m.pbrMetallicRoughness;
     Material out = defaultMaterial();
-    if (pbr.baseColorFactor.size() != 4 || m.emissiveFactor.size() != 3) {
+    const tinygltf::Value& specGloss =
+        extension(m.extensions, "KHR_materials_pbrSpecularGlossiness");
+    const bool metallicRoughness = !specGloss.IsObject(); // else only the fallback: unread
+    if (m.emissiveFactor.size() != 3 ||
+        (metallicRoughness && pbr.baseColorFactor.size() != 4)) {
         fail(file_, name + ": baseColorFactor needs 4 numbers and emissiveFactor 3");
     }
-    for (int c = 0; c < 4; ++c) {
-        checkRange(name, "baseColorFactor", pbr.baseColorFactor[c], 0.0, 1.0);
-        out.baseColor[c] = float(pbr.baseColorFactor[c]);
+    if (metallicRoughness) {
+        for (int c = 0; c < 4; ++c) {
+            checkRange(name, "baseColorFactor", pbr.baseColorFactor[c], 0.0, 1.0);
+            out.baseColor[c] = float(pbr.baseColorFactor[c]);
+        }
+        checkRange(name, "metallicFactor", pbr.metallicFactor, 0.0, 1.0);
+        checkRange(name, "roughnessFactor", pbr.roughnessFactor, 0.0, 1.0);
+        out.metallic = float(pbr.metallicFactor);
+        out.roughness = float(pbr.roughnessFactor);
     }
-    checkRange(name, "metallicFactor", pbr.metallicFactor, 0.0, 1.0);
-    checkRange(name, "roughnessFactor", pbr.roughnessFactor, 0.0, 1.0);
-    out.metallic = float(pbr.metallicFactor);
-    out.roughness = float(pbr.roughnessFactor);
     out.specular = 1.0f; // the glTF BRDF's dielectric layer, unless KHR_materials_specular
     const double strength =
         number(extension(m.extensions, "KHR_materials_emissive_strength"), "emissiveStrength", 1);
@@ -273,7 +353,14 @@ Material MaterialConverter::convert(const tinygltf::Material& m, const std::stri
     out.transmission = float(number(transmission, "transmissionFactor", 0.0));
     checkRange(name, "transmissionFactor", out.transmission, 0.0, 1.0);
     const tinygltf::Value& specular = extension(m.extensions, "KHR_materials_specular");
-    if (specular.IsObject()) {
+    if (!metallicRoughness) {
+        // The specular-glossiness model sets F0 itself; the spec forbids _ior and _specular
+        // beside it.
+        for (const char* other : {"KHR_materials_ior", "KHR_materials_specular"})
+            if (extension(m.extensions, other).IsObject())
+                warn(file_, name + ": " + other + " is ignored beside "
+                                   "KHR_materials_pbrSpecularGlossiness");
+    } else if (specular.IsObject()) {
         out.specular = float(number(specular, "specularFactor", 1.0));
         checkRange(name, "specularFactor", out.specular, 0.0, 1.0);
         const std::vector<double> color = numbers(specular, "specularColorFactor", 3, {1, 1, 1});
@@ -290,10 +377,12 @@ Material MaterialConverter::convert(const tinygltf::Material& m, const std::stri
     const auto& mr = pbr.metallicRoughnessTexture;
     const auto& normal = m.normalTexture;
     const auto& emissive = m.emissiveTexture;
-    out.baseColorTexture = textureRef(base.index, base.texCoord, base.extensions, true,
-                                      name + " baseColorTexture", needs);
-    out.metallicRoughnessTexture = textureRef(mr.index, mr.texCoord, mr.extensions, false,
-                                              name + " metallicRoughnessTexture", needs);
+    if (metallicRoughness) {
+        out.baseColorTexture = textureRef(base.index, base.texCoord, base.extensions, true,
+                                          name + " baseColorTexture", needs);
+        out.metallicRoughnessTexture = textureRef(mr.index, mr.texCoord, mr.extensions, false,
+                                                  name + " metallicRoughnessTexture", needs);
+    }
     out.normalTexture = textureRef(normal.index, normal.texCoord, normal.extensions, false,
                                    name + " normalTexture", needs);
     out.emissiveTexture = textureRef(emissive.index, emissive.texCoord, emissive.extensions,
@@ -309,7 +398,9 @@ Material MaterialConverter::convert(const tinygltf::Material& m, const std::stri
         out.transmissionTexture =
             textureRef(int(index), texCoord, {}, false, name + " transmissionTexture", needs);
     }
-    if (specular.IsObject()) {
+    if (!metallicRoughness) {
+        convertSpecularGlossiness(specGloss, name, out, needs);
+    } else if (specular.IsObject()) {
         out.specularTexture = extensionTexture(specular, "specularTexture", false, name, needs);
         out.specularColorTexture =
             extensionTexture(specular, "specularColorTexture", true, name, needs);

@@ -1,8 +1,9 @@
 // glTF materials to the GPU's Material records: metallic-roughness factors and textures,
 // emission (KHR_materials_emissive_strength), alpha modes, KHR_materials_ior, _transmission,
 // _specular (factors and textures), _clearcoat, _sheen and _volume (factors; their textures are
-// ignored with a warning), and one TextureRef per texture use (sampler wrap and filter, sRGB for colour,
-// TEXCOORD set, KHR_texture_transform). Images are decoded later (gltf_images.h).
+// ignored with a warning), the archived KHR_materials_pbrSpecularGlossiness (mapped onto the
+// same BSDF: docs/gltf.md), and one TextureRef per texture use (sampler wrap and filter, sRGB
+// for colour, TEXCOORD set, KHR_texture_transform). Images are decoded later (gltf_images.h).
 #pragma once
 #include <cstdint>
 #include <string>
@@ -27,11 +28,22 @@ struct MaterialNeeds {
     int normalMapTexCoord = -1; // UV set that tangents follow, -1 without a normal map
 };
 
+// An image made at load from a decoded glTF image (KHR_materials_pbrSpecularGlossiness): a
+// metallic-roughness texture whose G is 1 - glossinessFactor x the source's A (roughness, with
+// the material's roughness factor 1), B 0 (metallic) and R, A 1.
+struct RoughnessFromGlossiness {
+    uint32_t image;         // glTF image index of the specularGlossinessTexture
+    float glossinessFactor;
+};
+
 struct MaterialTables {
     std::vector<Material> materials;   // one per glTF material
     std::vector<MaterialNeeds> needs;  // parallel to materials
     std::vector<TextureRef> refs;      // material texture fields index this
     std::vector<uint32_t> refImage;    // glTF image index of each ref
+    std::vector<int32_t> refDerived;   // per ref: index in `derived`, which it reads instead of
+                                       // refImage (the source), or -1
+    std::vector<RoughnessFromGlossiness> derived;
     std::vector<bool> imageUsed;       // per glTF image
 };
 
