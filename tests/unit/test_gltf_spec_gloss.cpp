@@ -6,6 +6,7 @@
 #include <stb_image_write.h>
 
 #include <cmath>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -216,6 +217,53 @@ TEST(GltfSpecGloss, IorAndSpecularBesideItAreIgnored) {
     EXPECT_NE(err.find("KHR_materials_ior is ignored"), std::string::npos) << err;
     EXPECT_NE(err.find("KHR_materials_specular is ignored"), std::string::npos) << err;
     expectNear(bsdfF0(m), glm::vec3(0.04f), 1e-7f);
+}
+
+// White furnace on the CPU (the BSDF header the shade pass compiles): spec-gloss materials as
+// loaded, white diffuse with white or coloured specular at several glossinesses, reflect at
+// most what they receive at every angle.
+TEST(GltfSpecGloss, WhiteFurnaceAlbedoAtMostOne) {
+    for (const char* specular : {"[1,1,1]", "[0.5,0.5,0.5]", "[1,0.2,0]", "[0.04,0.04,0.04]"}) {
+        for (const char* glossiness : {"1", "0.8", "0.5", "0"}) {
+            TempDir dir;
+            MiniGltf g = texturedTriangle(
+                std::string(R"({"extensions":{"KHR_materials_pbrSpecularGlossiness":{
+                "diffuseFactor":[1,1,1,1],"specularFactor":)") + specular +
+                ",\"glossinessFactor\":" + glossiness + "}}}");
+            const Material m = loadGltf(g.write(dir)).materials[0];
+            gpu_types::BsdfParams p{};
+            p.baseColor = glm::vec3(m.baseColor);
+            p.metallic = m.metallic;
+            p.roughness = m.roughness;
+            p.ior = m.ior;
+            p.transmission = m.transmission;
+            p.specular = m.specular;
+            p.specularColor = m.specularColor;
+            for (float cosTheta : {1.0f, 0.7f, 0.3f, 0.05f}) {
+                const glm::vec3 wo(std::sqrt(1.0f - cosTheta * cosTheta), 0.0f, cosTheta);
+                std::mt19937 rng(7u);
+                std::uniform_real_distribution<float> u(0.0f, 1.0f);
+                glm::dvec3 sum(0.0), sum2(0.0);
+                const int n = 20000;
+                for (int i = 0; i < n; ++i) {
+                    gpu_types::BsdfSample s;
+                    const float uLobe = u(rng);
+                    const glm::vec2 uDir(u(rng), u(rng));
+                    if (gpu_types::bsdfSample(p, wo, uLobe, uDir, s)) {
+                        const glm::dvec3 w(s.weight);
+                        sum += w;
+                        sum2 += w * w;
+                    }
+                }
+                const glm::dvec3 mean = sum / double(n);
+                const glm::dvec3 err =
+                    glm::sqrt(glm::max(sum2 / double(n) - mean * mean, 0.0) / double(n));
+                for (int k = 0; k < 3; ++k)
+                    EXPECT_LE(mean[k], 1.0 + 4.0 * err[k] + 3e-3)
+                        << specular << " glossiness " << glossiness << " cos " << cosTheta;
+            }
+        }
+    }
 }
 
 // Without the extension the metallic-roughness material reads as before: its own factors and
