@@ -45,8 +45,8 @@ Scene loadCapturing(const std::string& path, std::string& err) {
     return scene;
 }
 
-// The dielectric F0 the BSDF forms from a loaded material's fields (shaders/bsdf/bsdf.h).
-glm::vec3 bsdfF0(const Material& m) {
+// The BSDF parameters a loaded material's untextured fields give (shaders/bsdf/bsdf.h).
+gpu_types::BsdfParams bsdfParamsOf(const Material& m) {
     gpu_types::BsdfParams p{};
     p.baseColor = glm::vec3(m.baseColor);
     p.metallic = m.metallic;
@@ -55,6 +55,12 @@ glm::vec3 bsdfF0(const Material& m) {
     p.transmission = m.transmission;
     p.specular = m.specular;
     p.specularColor = m.specularColor;
+    return p;
+}
+
+// The dielectric F0 the BSDF forms from them.
+glm::vec3 bsdfF0(const Material& m) {
+    const gpu_types::BsdfParams p = bsdfParamsOf(m);
     return gpu_types::bsdfLobes(gpu_types::bsdfSanitize(p), false).f0 * p.specular;
 }
 
@@ -231,14 +237,7 @@ TEST(GltfSpecGloss, WhiteFurnaceAlbedoAtMostOne) {
                 "diffuseFactor":[1,1,1,1],"specularFactor":)") + specular +
                 ",\"glossinessFactor\":" + glossiness + "}}}");
             const Material m = loadGltf(g.write(dir)).materials[0];
-            gpu_types::BsdfParams p{};
-            p.baseColor = glm::vec3(m.baseColor);
-            p.metallic = m.metallic;
-            p.roughness = m.roughness;
-            p.ior = m.ior;
-            p.transmission = m.transmission;
-            p.specular = m.specular;
-            p.specularColor = m.specularColor;
+            gpu_types::BsdfParams p = bsdfParamsOf(m);
             for (float cosTheta : {1.0f, 0.7f, 0.3f, 0.05f}) {
                 const glm::vec3 wo(std::sqrt(1.0f - cosTheta * cosTheta), 0.0f, cosTheta);
                 std::mt19937 rng(7u);
