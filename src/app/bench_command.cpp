@@ -60,6 +60,7 @@ const CommandSpec& benchSpec() {
                 cameraOption(),
                 envOption(),
                 instancingOption(),
+                variantOption(),
             },
             animationOptions(),
         }),

@@ -71,6 +71,7 @@ const CommandSpec& convergeSpec() {
                                           "half of the image)"},
                 {"--no-plot", "", "", "write CSV and JSON only, no charts"},
                 instancingOption(),
+                variantOption(),
             },
             animationOptions(false),
             {

@@ -82,6 +82,7 @@ const CommandSpec& renderSpec() {
                 cameraOption(),
                 envOption(),
                 instancingOption(),
+                variantOption(),
             },
             animationOptions(),
             {
@@ -160,6 +161,7 @@ std::string renderSettingsKey(const RenderSettings& s, const ParsedArgs& parsed)
                                         parsed.value("--fps").value_or("24")
                                   : "") +
            (parsed.has("--animation") ? " animation " + *parsed.value("--animation") : "") +
+           (parsed.has("--variant") ? " variant " + *parsed.value("--variant") : "") +
            (parsed.has("--shutter") ? " shutter " + *parsed.value("--shutter") + " fps " +
                                           parsed.value("--fps").value_or("24")
                                     : "");

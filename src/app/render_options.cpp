@@ -131,6 +131,12 @@ OptionSpec instancingOption() {
                                         "more), on (always) or off (flattened); default auto"};
 }
 
+OptionSpec variantOption() {
+    return {"--variant", "", "NAME|INDEX", "KHR_materials_variants: the primitives take this "
+                                           "variant's materials, by name or index (default: "
+                                           "their own; --verbose lists the file's variants)"};
+}
+
 std::vector<OptionSpec> animationOptions(bool withTime) {
     std::vector<OptionSpec> options = {
         {"--time", "", "SECONDS", "pose the scene's animations, skins and morph targets at this "
@@ -287,6 +293,7 @@ Scene loadSceneWithFlags(const ParsedArgs& parsed, const std::string& path,
     applyShutter(parsed, options);
     if (auto mode = parsed.value("--instancing"))
         options.instancing = parseInstancing(*mode);
+    options.variant = parsed.value("--variant").value_or("");
     const auto start = std::chrono::steady_clock::now();
     Scene scene = loadGltf(path, &warnings, options);
     const double loadSeconds =

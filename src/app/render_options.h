@@ -38,6 +38,7 @@ OptionSpec quietOption();       // --quiet, -q: no progress lines
 OptionSpec cameraOption();      // --camera: one of the file's cameras
 OptionSpec envOption();
 OptionSpec instancingOption(); // --instancing auto|on|off         // --env
+OptionSpec variantOption();    // --variant: one of the file's KHR_materials_variants
 std::vector<OptionSpec> lensOptions(); // --aperture, --focus-distance
 // --time, --frame, --fps, --animation, --shutter; without `withTime` no --time (converge's
 // --time is its render budget: its scene time is --frame N / --fps).

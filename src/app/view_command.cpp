@@ -36,6 +36,7 @@ const CommandSpec& viewSpec() {
             {
                 envOption(),
                 instancingOption(),
+                variantOption(),
             },
             animationOptions(),
             {
@@ -115,6 +116,7 @@ int runViewCommand(const std::vector<std::string>& args) {
         throw UsageError("--shutter: the viewer shows one time (render, bench and converge "
                          "blur motion)");
     options.animation = parsed.value("--animation").value_or("");
+    options.variant = parsed.value("--variant").value_or("");
     options.fps = parsed.floatValue("--fps", 24.0f, 1e-3f, 1e6f);
     options.play = parsed.has("--play");
     options.overlay = !parsed.has("--no-overlay");

@@ -92,6 +92,10 @@ struct Scene {
     bool hasCamera = false;
     std::vector<Camera> cameras;     // every valid camera of the file, in node order
     std::vector<std::string> cameraNames;
+    // KHR_materials_variants: the file's variants and the one whose materials were taken (-1:
+    // none, the primitives' own).
+    std::vector<std::string> variantNames;
+    int variant = -1;
     std::vector<PunctualLight> lights; // KHR_lights_punctual (and sphere lights)
     Environment environment;         // --env, or uniform white when the scene has no light
     SurfaceData surface;             // vertex attributes and textures, only what is used

@@ -55,6 +55,8 @@ SceneSummary summarize(const Scene& scene) {
         summary.sphereLights += light.type == WF_LIGHT_SPHERE;
     }
     summary.cameraCount = scene.cameras.size();
+    summary.variantNames = scene.variantNames;
+    summary.variant = scene.variant;
     summary.environmentWidth = scene.environment.width;
     summary.environmentHeight = scene.environment.height;
     const SurfaceData& s = scene.surface;
@@ -95,6 +97,14 @@ std::string describe(const SceneSummary& summary) {
                 std::to_string(summary.environmentHeight) + " map";
     }
     text += "; cameras: " + std::to_string(summary.cameraCount);
+    if (!summary.variantNames.empty()) { // KHR_materials_variants
+        text += "; variants:";
+        for (size_t i = 0; i < summary.variantNames.size(); ++i)
+            text += (i ? ", " : " ") + std::to_string(i) + " '" + summary.variantNames[i] + "'" +
+                    (int(i) == summary.variant ? " (chosen)" : "");
+        if (summary.variant < 0)
+            text += " (none chosen: the primitives' own materials)";
+    }
     char texels[64];
     std::snprintf(texels, sizeof texels, " (%.1f MiB of texels)",
                   double(summary.texelBytes) / (1024.0 * 1024.0));

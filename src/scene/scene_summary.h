@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "scene/scene.h"
 
@@ -21,6 +22,8 @@ struct SceneSummary {
     // Lights beyond emissive triangles, by WF_LIGHT_* type.
     size_t pointLights = 0, spotLights = 0, directionalLights = 0, sphereLights = 0;
     size_t cameraCount = 0;
+    std::vector<std::string> variantNames; // KHR_materials_variants, in file order
+    int variant = -1;                      // the one chosen (--variant); -1: none
     uint32_t environmentWidth = 0, environmentHeight = 0; // 1x1: the uniform default
     // Surface features: each switches on shader code and GPU buffers.
     size_t imageCount = 0;

@@ -55,6 +55,7 @@ struct ViewerOptions {
     double fps = 24.0;                        // --fps: playback shows frames of 1/fps
     bool play = false;                        // --play: start playing (T plays / pauses)
     std::string animation;                    // --animation
+    std::string variant;                      // --variant (KHR_materials_variants)
     std::optional<int> device;
     RayTracingRequest rayTracing = RayTracingRequest::Off; // --traversal
     bool overlay = true;

@@ -19,8 +19,9 @@ uint32_t ViewSettings::effectiveSppLimit() const {
 namespace {
 
 Scene loadAt(const ViewerOptions& options, double time, std::vector<std::string>* warnings) {
-    Scene scene = loadGltf(options.scenePath, warnings,
-                           GltfOptions{options.instancing, time, options.animation});
+    GltfOptions gltf{options.instancing, time, options.animation};
+    gltf.variant = options.variant;
+    Scene scene = loadGltf(options.scenePath, warnings, gltf);
     if (!options.environmentPath.empty())
         scene.environment = loadEnvironmentExr(options.environmentPath);
     if (!scene.hasCamera)

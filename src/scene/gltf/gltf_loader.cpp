@@ -32,6 +32,7 @@
 #include "scene/gltf/posing/gltf_motion.h"
 #include "scene/gltf/gltf_primitives.h"
 #include "scene/gltf/gltf_scene_limits.h"
+#include "scene/gltf/gltf_variants.h"
 
 namespace wf {
 namespace {
@@ -474,7 +475,11 @@ Scene loadModel(std::vector<unsigned char> bytes, const std::string& path,
     std::vector<unsigned char>().swap(bytes); // tinygltf holds no pointer into the document
     gltf::returnBuffers(model, taken, path);
     gltf::decompress(model, compression, path);
-    return Converter(model, path, policy, options).run();
+    const gltf::VariantChoice variants = gltf::applyMaterialVariant(model, path, options.variant);
+    Scene scene = Converter(model, path, policy, options).run();
+    scene.variantNames = variants.names;
+    scene.variant = variants.chosen;
+    return scene;
 }
 
 } // namespace

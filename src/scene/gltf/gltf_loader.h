@@ -24,6 +24,9 @@ struct GltfOptions {
     double shutterOpen = 0.0;
     double shutterClose = 0.0;
     uint32_t motionSegments = 8;
+    // KHR_materials_variants: the variant whose materials the primitives take, by name or
+    // index ("": their own materials; gltf_variants.h).
+    std::string variant;
 };
 
 // Loads triangle lists, strips and fans (points and lines are skipped with one warning on

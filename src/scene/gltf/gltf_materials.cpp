@@ -444,7 +444,10 @@ MaterialTables MaterialConverter::run() {
 
 } // namespace
 
-bool isSupportedExtension(const std::string& name) { return SUPPORTED_EXTENSIONS.count(name); }
+// KHR_materials_variants is read by gltf_variants, before the materials.
+bool isSupportedExtension(const std::string& name) {
+    return SUPPORTED_EXTENSIONS.count(name) || name == "KHR_materials_variants";
+}
 
 Material defaultMaterial() {
     Material m{};
