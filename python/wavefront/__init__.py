@@ -129,20 +129,25 @@ class Renderer:
         return self._core.validation_messages
 
     def load(self, path, camera=None, env=None, instancing=None, aperture=None,
-             focus_distance=None, time=None, frame=None, fps=None, animation=None):
+             focus_distance=None, time=None, frame=None, fps=None, animation=None,
+             variant=None):
         """Loads a .gltf or .glb file. camera: the file's camera by name or index; env: an
         equirectangular EXR; instancing: "auto", "on" or "off"; aperture, focus_distance: a
         thin lens; time (seconds), or frame with fps (default 24): the pose of the file's
         animations, skins and morph targets (default: their start); animation: play only this
-        one, by name or index (default: all at once). Raises SceneError with the CLI's message
+        one, by name or index (default: all at once); variant: the file's
+        KHR_materials_variants variant whose materials the primitives take, by name or index
+        (default: their own materials). Raises SceneError with the CLI's message
         for a file it cannot use (ValueError for options that contradict each other)."""
         if isinstance(camera, int) and not isinstance(camera, bool):
             camera = str(camera)
         if isinstance(animation, int) and not isinstance(animation, bool):
             animation = str(animation)
+        if isinstance(variant, int) and not isinstance(variant, bool):
+            variant = str(variant)
         values = dict(camera=camera, env=None if env is None else str(env),
                       instancing=instancing, aperture=aperture, focus_distance=focus_distance,
-                      time=time, frame=frame, fps=fps, animation=animation)
+                      time=time, frame=frame, fps=fps, animation=animation, variant=variant)
         flags = to_flags((k, values[k]) for k in LOAD_OPTIONS)
         return Scene(_options(self._core.load, str(path), flags))
 

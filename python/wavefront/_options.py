@@ -16,7 +16,7 @@ RENDER_OPTIONS = (
 )
 # load()'s options: those that change the scene rather than a render.
 LOAD_OPTIONS = ("camera", "env", "instancing", "aperture", "focus_distance", "time", "frame",
-                "fps", "animation")
+                "fps", "animation", "variant")
 SWITCHES = ("no_randomize",)
 
 

@@ -275,6 +275,18 @@ OverlayActions Overlay::build(const OverlayFacts& facts, ViewSettings& settings,
             ImGui::SameLine();
             actions.restart = ImGui::Button("Restart");
         }
+        if (!facts.variantNames.empty() &&
+            ImGui::CollapsingHeader("Material variant", ImGuiTreeNodeFlags_DefaultOpen)) {
+            int variant = facts.variant + 1; // 0: the primitives' own materials
+            std::string items = std::string("(own materials)") + '\0';
+            for (size_t i = 0; i < facts.variantNames.size(); ++i)
+                items += (facts.variantNames[i].empty() ? "variant " + std::to_string(i)
+                                                        : facts.variantNames[i]) + '\0';
+            if (ImGui::Combo("--variant", &variant, items.c_str())) {
+                actions.variantChanged = variant - 1 != facts.variant;
+                actions.variant = variant - 1;
+            }
+        }
         actions.togglePause = ImGui::Button(facts.paused ? "Resume (Space)" : "Pause (Space)");
         ImGui::SameLine();
         actions.screenshot = ImGui::Button("Screenshot (F12)");

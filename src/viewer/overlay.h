@@ -35,6 +35,8 @@ struct OverlayFacts {
     bool paused = false;
     std::vector<std::string> cameraNames;
     uint32_t camera = 0;
+    std::vector<std::string> variantNames; // KHR_materials_variants; empty: none in the file
+    int variant = -1;                      // shown; -1: the primitives' own materials
     AnimationFacts animation; // animation_overlay.h
 };
 
@@ -44,6 +46,8 @@ struct OverlayActions {
     bool displayChanged = false; // exposure or tone curve
     bool targetChanged = false;  // target-ms
     int selectCamera = -1;
+    bool variantChanged = false; // reload the scene with `variant` (-1: the own materials)
+    int variant = -1;
     bool resetView = false;
     bool restart = false;
     bool screenshot = false;

@@ -78,6 +78,7 @@ private:
     void applyOverlay(const OverlayActions& actions);
     void selectCamera(uint32_t index);
     void repose();
+    void switchVariant(int variant);
     void cameraMoved() {
         ++cameraVersion_;
         lastMove_ = Clock::now();
@@ -211,6 +212,8 @@ void Viewer::applyOverlay(const OverlayActions& actions) {
         selectCamera(cameraIndex_);
     if (actions.restart)
         targets_.full().renderer->reset();
+    if (actions.variantChanged)
+        switchVariant(actions.variant);
     screenshotRequested_ |= actions.screenshot;
     paused_ ^= actions.togglePause;
     if (actions.animation.togglePlay)
@@ -225,6 +228,21 @@ void Viewer::repose() {
     targets_.setScene(poses_.prepare(loadPosedScene(options_, clock_.time())));
     poseChanged_ = false;
     ++posesShown_;
+}
+
+// Another KHR_materials_variants variant: the file read again with it (only materials change,
+// so the view stays); a variant the file cannot give (a bad mapping) is refused on stderr and
+// the shown one kept.
+void Viewer::switchVariant(int variant) {
+    const std::string previous = options_.variant;
+    options_.variant = variant < 0 ? std::string() : std::to_string(variant);
+    try {
+        targets_.setScene(poses_.prepare(loadPosedScene(options_, clock_.time())));
+        scene_.variant = variant;
+    } catch (const InputError& e) {
+        options_.variant = previous;
+        std::fprintf(stderr, "wavefront: %s\n", e.what());
+    }
 }
 
 RenderTarget& Viewer::chooseTarget(bool forScreenshot) {
@@ -252,6 +270,8 @@ OverlayFacts Viewer::facts() const {
     for (const NamedCamera& camera : scene_.cameras.cameras)
         facts.cameraNames.push_back(camera.name);
     facts.camera = cameraIndex_;
+    facts.variantNames = scene_.variantNames;
+    facts.variant = scene_.variant;
     facts.animation = {clock_.animated(), clock_.playing(), clock_.time(), clock_.end(),
                        clock_.frame(), clock_.fps()};
     return facts;

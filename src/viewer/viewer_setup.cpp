@@ -41,6 +41,8 @@ ViewerScene loadViewerScene(const ViewerOptions& options) {
     viewer.cameras = viewerCameras(scene);
     viewer.bounds = viewBounds(scene);
     viewer.animationSeconds = scene.animationSeconds;
+    viewer.variantNames = scene.variantNames;
+    viewer.variant = scene.variant;
     viewer.prepared = prepareScene(std::move(scene));
     return viewer;
 }

@@ -3,6 +3,7 @@
 // Vulkan context that can present to that window.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "gpu/context.h"
 #include "render/gpu_scene/scene_buffers.h"
@@ -17,6 +18,8 @@ struct ViewerScene {
     CameraList cameras;
     ViewBounds bounds;
     double animationSeconds = 0.0; // the last key of the animations played (0: static)
+    std::vector<std::string> variantNames; // KHR_materials_variants, for the overlay's list
+    int variant = -1;                      // the one shown (--variant); -1: the own materials
 };
 
 // Loads options.scenePath (and --env), printing the loader's warnings unless quiet.
