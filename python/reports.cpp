@@ -75,6 +75,11 @@ pyb::dict sceneInfo(const LoadedScene& scene) {
             kinds.append(names[k]);
     info["kinds"] = kinds;
     info["cameras"] = s.cameraCount;
+    pyb::list variants; // KHR_materials_variants
+    for (const std::string& name : s.variantNames)
+        variants.append(name);
+    info["variants"] = variants;
+    info["variant"] = s.variant < 0 ? pyb::object(pyb::none()) : pyb::int_(s.variant);
     info["textures"] = s.imageCount;
     info["bounds"] = pyb::make_tuple(pyb::make_tuple(s.boundsLo.x, s.boundsLo.y, s.boundsLo.z),
                                      pyb::make_tuple(s.boundsHi.x, s.boundsHi.y, s.boundsHi.z));

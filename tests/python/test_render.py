@@ -178,3 +178,42 @@ def test_animation_time_as_the_cli(renderer, tmp_path):
         renderer.load(arm, time=1.0, frame=3)
     with pytest.raises(wf.SceneError, match="no such animation"):
         renderer.load(arm, animation="walk")
+
+
+def variants_file(path):
+    """One emissive triangle: white, red in variant "red", blue in variant "blue"."""
+    import base64
+    import struct
+    data = base64.b64encode(struct.pack("9f", 0, 0, 0, 1, 0, 0, 0, 1, 0)).decode()
+    mat = lambda c: {"pbrMetallicRoughness": {"baseColorFactor": c + [1]}, "emissiveFactor": c}
+    path.write_text(json.dumps({
+        "asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+        "materials": [mat([1, 1, 1]), mat([1, 0, 0]), mat([0, 0, 1])],
+        "extensionsUsed": ["KHR_materials_variants"],
+        "extensions": {"KHR_materials_variants": {"variants": [{"name": "red"},
+                                                               {"name": "blue"}]}},
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0,
+            "extensions": {"KHR_materials_variants": {"mappings": [
+                {"material": 1, "variants": [0]}, {"material": 2, "variants": [1]}]}}}]}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                       "min": [0, 0, 0], "max": [1, 1, 0]}],
+        "bufferViews": [{"buffer": 0, "byteLength": 36}],
+        "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64," + data}]}))
+    return path
+
+
+def test_material_variants(renderer, tmp_path):
+    path = variants_file(tmp_path / "variants.gltf")
+    flags = dict(width=8, spp=1, max_depth=1)
+    own = renderer.load(path)
+    assert own.info["variants"] == ["red", "blue"] and own.info["variant"] is None
+    blue = renderer.load(path, variant="blue")
+    assert blue.info["variant"] == 1
+    assert renderer.load(path, variant=0).info["variant"] == 0
+    sums = [renderer.render(s, **flags).image[..., :3].sum(axis=(0, 1))
+            for s in (own, blue, renderer.load(path, variant="red"))]
+    assert sums[0].min() > 0                        # white: every channel
+    assert sums[1][0] == sums[1][1] == 0 < sums[1][2]  # blue only
+    assert sums[2][1] == sums[2][2] == 0 < sums[2][0]  # red only
+    with pytest.raises(wf.SceneError, match="no such variant"):
+        renderer.load(path, variant="green")
