@@ -4,6 +4,7 @@
 
 #include <signal.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -235,7 +236,12 @@ void Viewer::repose() {
 // the shown one kept.
 void Viewer::switchVariant(int variant) {
     const std::string previous = options_.variant;
+    // By name where that name is its own (names are matched before indices), else by index.
+    const std::vector<std::string>& names = scene_.variantNames;
     options_.variant = variant < 0 ? std::string() : std::to_string(variant);
+    if (variant >= 0 && !names[variant].empty() &&
+        std::find(names.begin(), names.end(), names[variant]) - names.begin() == variant)
+        options_.variant = names[variant];
     try {
         targets_.setScene(poses_.prepare(loadPosedScene(options_, clock_.time())));
         scene_.variant = variant;

@@ -129,25 +129,7 @@ check "output folder missing" 2 "$wavefront" render "$scenes/cornell_box.gltf" \
 expect "nothing written on failure" test ! -e "$work/x.exr"
 # KHR_materials_variants: --variant picks one at load and --verbose lists them; an unknown
 # one, by name or index, or one asked of a file without variants: exit 2 in one line.
-python3 - "$work/variants.gltf" <<'PY'
-import base64, json, struct, sys
-data = base64.b64encode(struct.pack("9f", 0, 0, 0, 1, 0, 0, 0, 1, 0)).decode()
-mat = lambda c: {"pbrMetallicRoughness": {"baseColorFactor": c + [1]}, "emissiveFactor": c}
-json.dump({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
-           "nodes": [{"mesh": 0}], "materials": [mat([1, 1, 1]), mat([1, 0, 0]), mat([0, 0, 1])],
-           "extensionsUsed": ["KHR_materials_variants"],
-           "extensions": {"KHR_materials_variants": {"variants": [{"name": "red"},
-                                                                  {"name": "blue"}]}},
-           "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0,
-               "extensions": {"KHR_materials_variants": {"mappings": [
-                   {"material": 1, "variants": [0]}, {"material": 2, "variants": [1]}]}}}]}],
-           "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
-                          "min": [0, 0, 0], "max": [1, 1, 0]}],
-           "bufferViews": [{"buffer": 0, "byteLength": 36}],
-           "buffers": [{"byteLength": 36,
-                        "uri": "data:application/octet-stream;base64," + data}]},
-          open(sys.argv[1], "w"))
-PY
+python3 "$(dirname "$0")/variants_gltf.py" "$work/variants.gltf"
 check "variant by name" 0 "$wavefront" render "$work/variants.gltf" -o "$work/variant.exr" \
     --spp 1 --width 8 --max-depth 1 --variant blue --verbose --quiet
 expect "verbose lists the variants" grep -q "variants: 0 'red', 1 'blue' (chosen)" "$work/stderr"

@@ -177,6 +177,17 @@ run "render-time" 0 "$wavefront" render "$arm" "${common[@]}" --time 0.5 --width
 check "view --time matches render --time" "$compare" "$work/time.exr" "$work/render-time.exr" \
     --spp 8
 
+# 3c. KHR_materials_variants: view --variant shows render --variant's image.
+python3 "$(dirname "$0")/../cli/variants_gltf.py" "$work/variants.gltf"
+run "view-variant" 0 "$wavefront" view "$work/variants.gltf" "${common[@]}" "${slow[@]}" \
+    --variant blue --width 64 --height 64 --until-done --no-overlay \
+    --screenshot "$work/variant.exr"
+run "render-variant" 0 "$wavefront" render "$work/variants.gltf" "${common[@]}" \
+    --variant blue --width 64 --height 64 -o "$work/render-variant.exr" --quiet
+check "view --variant matches render --variant" "$compare" "$work/variant.exr" \
+    "$work/render-variant.exr" --spp 8
+run "view-bad-variant" 2 "$wavefront" view "$work/variants.gltf" --variant green --frames 1
+
 # 4. SIGTERM while refining: a clean quit that still writes the screenshot atomically.
 "$wavefront" view "$cornell" --width 128 --height 96 --screenshot "$work/term.exr" \
     >"$work/term.log" 2>&1 &
