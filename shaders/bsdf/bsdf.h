@@ -48,6 +48,18 @@
 #ifndef WF_BSDF_DELTA_ONLY
 #define WF_BSDF_DELTA_ONLY 0
 #endif
+// KHR_materials_iridescence: compiled into shaders only where some material has a thin film
+// (ShaderVariant); the C++ tests always have it (iridescence 0 leaves the plain BSDF exactly).
+#ifndef WF_HAS_IRIDESCENCE
+#ifdef __cplusplus
+#define WF_HAS_IRIDESCENCE 1
+#else
+#define WF_HAS_IRIDESCENCE 0
+#endif
+#endif
+#if WF_HAS_IRIDESCENCE
+#include "bsdf/iridescence.h"
+#endif
 
 #ifdef __cplusplus
 namespace wf::gpu_types {
@@ -62,6 +74,17 @@ struct BsdfParams {
     float transmission; // KHR_materials_transmission factor
     float specular;     // KHR_materials_specular specularFactor: 0 leaves exact Lambert
     vec3 specularColor; // specularColorFactor
+#if WF_HAS_IRIDESCENCE
+#ifdef __cplusplus
+    float iridescence = 0.0f;          // iridescenceFactor (x texture R): 0 is no film
+    float iridescenceIor = 1.3f;       // the film's ior
+    float iridescenceThickness = 0.0f; // nm, mix(minimum, maximum, thickness texture G)
+#else
+    float iridescence;
+    float iridescenceIor;
+    float iridescenceThickness;
+#endif
+#endif
 };
 
 struct BsdfSample {
@@ -95,6 +118,11 @@ WF_INLINE BsdfParams bsdfSanitize(BsdfParams m) {
     m.transmission = clamp(m.transmission, 0.0f, 1.0f);
     m.specular = clamp(m.specular, 0.0f, 1.0f);
     m.specularColor = max(m.specularColor, vec3(0.0f));
+#if WF_HAS_IRIDESCENCE
+    m.iridescence = clamp(m.iridescence, 0.0f, 1.0f);
+    m.iridescenceIor = max(m.iridescenceIor, 1.0f);
+    m.iridescenceThickness = max(m.iridescenceThickness, 0.0f);
+#endif
     return m;
 }
 
@@ -116,6 +144,16 @@ WF_INLINE BsdfLobes bsdfLobes(BsdfParams m, bool inside) {
     l.kDiffuse = (1.0f - m.metallic) * (1.0f - m.transmission);
     l.kTransmit = (1.0f - m.metallic) * m.transmission;
     l.kappa = 1.0f / (1.0f + 20.7f * pow(m.roughness, 2.32f));
+#if WF_HAS_IRIDESCENCE
+    if (m.iridescence > 0.0f) {
+        // The diffuse coupling bounds the layer's albedo by its F0 and Schlick's rise: a film
+        // reflects more at both ends, so take the film's F0 bound and a steeper rise
+        // (tests/unit/test_iridescence.cpp checks the white furnace).
+        l.f0Max = mix(l.f0Max, max(l.f0Max, iridescenceF0Bound(1.0f, m.iridescenceIor, l.f0)),
+                      m.iridescence);
+        l.kappa = mix(l.kappa, min(1.0f, 1.25f * l.kappa + 0.05f), m.iridescence);
+    }
+#endif
     float d = m.roughness - 0.44f;
     l.power = 2.84f + 5.15f * d * d;
     // 2 * integral of (1 - mu)^n mu dmu over [0, 1] = 2 / ((n + 1)(n + 2)).
@@ -139,14 +177,40 @@ WF_INLINE vec3 diffuseLobe(BsdfParams m, BsdfLobes l, float muO, float muI) {
                           specularComplement(m, l, muI) / l.diffuseNorm);
 }
 
+// Fresnel of the dielectric layer (F0 = l.f0) and of the metal (F0 = baseColor) at cosine c:
+// Schlick's, mixed by iridescenceFactor with the thin film's over the same F0.
+WF_INLINE vec3 dielectricFresnel(BsdfParams m, BsdfLobes l, float c) {
+    vec3 f = fresnelSchlick(l.f0, c);
+#if WF_HAS_IRIDESCENCE
+    if (m.iridescence > 0.0f) {
+        f = mix(f, fresnelIridescence(1.0f, m.iridescenceIor, c, m.iridescenceThickness, l.f0),
+                m.iridescence);
+    }
+#endif
+    return f;
+}
+
+WF_INLINE vec3 metalFresnel(BsdfParams m, float c) {
+    vec3 f = fresnelSchlick(m.baseColor, c);
+#if WF_HAS_IRIDESCENCE
+    if (m.iridescence > 0.0f) {
+        f = mix(f,
+                fresnelIridescence(1.0f, m.iridescenceIor, c, m.iridescenceThickness,
+                                   m.baseColor),
+                m.iridescence);
+    }
+#endif
+    return f;
+}
+
 // Colour a microfacet at cosine c = wo.h > 0 reflects: metal, plus the dielectric layer, whose
 // opaque part uses Schlick at c and whose transmissive part the interface (with TIR).
 WF_INLINE vec3 microReflectance(BsdfParams m, BsdfLobes l, float c) {
     float ct = interfaceCosine(c, l.etaRel);
-    vec3 fInterface = ct < 0.0f ? vec3(1.0f) : fresnelSchlick(l.f0, ct);
-    vec3 fOpaque = fresnelSchlick(l.f0, c);
+    vec3 fInterface = ct < 0.0f ? vec3(1.0f) : dielectricFresnel(m, l, ct);
+    vec3 fOpaque = dielectricFresnel(m, l, c);
     vec3 dielectric = m.specular * mix(fOpaque, fInterface, m.transmission);
-    return (1.0f - m.metallic) * dielectric + m.metallic * fresnelSchlick(m.baseColor, c);
+    return (1.0f - m.metallic) * dielectric + m.metallic * metalFresnel(m, c);
 }
 
 // Colour a microfacet transmits (before the 1 / eta^2 radiance scaling), given the cosine on
@@ -155,7 +219,7 @@ WF_INLINE vec3 microTransmittanceThin(BsdfParams m, BsdfLobes l, float ct) {
     if (ct < 0.0f || l.kTransmit <= 0.0f) {
         return vec3(0.0f);
     }
-    float f = m.specular * maxComponent(fresnelSchlick(l.f0, ct));
+    float f = m.specular * maxComponent(dielectricFresnel(m, l, ct));
     return m.baseColor * (l.kTransmit * (1.0f - f));
 }
 
