@@ -38,6 +38,11 @@ struct SurfaceHit {
 #if WF_HAS_VOLUME
     vec3 absorption; // sigma_a behind the surface (KHR_materials_volume); zero if thin-walled
 #endif
+#if WF_HAS_IRIDESCENCE
+    float iridescence;          // KHR_materials_iridescence factor x texture R
+    float iridescenceIor;
+    float iridescenceThickness; // nm: mix(minimum, maximum, texture G), or maximum
+#endif
 };
 
 vec3 decodeUnit(uint packed) { return octDecode(unpackSnorm2x16(packed)); }
@@ -258,6 +263,21 @@ SurfaceHit loadSurface(uint instanceIndex, uint triangleIndex, float b1, float b
 #endif
 #if WF_HAS_VOLUME
     s.absorption = material.thickness > 0.0 ? material.attenuation : vec3(0.0);
+#endif
+#if WF_HAS_IRIDESCENCE
+    s.iridescence = material.iridescence;
+    s.iridescenceIor = material.iridescenceIor;
+    s.iridescenceThickness = material.iridescenceThicknessMaximum;
+#if WF_HAS_TEXTURES
+    if (material.iridescence > 0.0 && material.iridescenceTexture != WF_NO_TEXTURE)
+        s.iridescence *= surfaceTexture(material.iridescenceTexture, triangleIndex, b1, b2,
+                                        footprint).r;
+    if (material.iridescence > 0.0 && material.iridescenceThicknessTexture != WF_NO_TEXTURE)
+        s.iridescenceThickness = mix(material.iridescenceThicknessMinimum,
+                                     material.iridescenceThicknessMaximum,
+                                     surfaceTexture(material.iridescenceThicknessTexture,
+                                                    triangleIndex, b1, b2, footprint).g);
+#endif
 #endif
     s.baseColor = base.rgb;
     s.alpha = base.a;

@@ -114,12 +114,20 @@ Material materialAt(uint index) {
 #if WF_HAS_VOLUME
     t8 = wfTexel(materialTexels, base + 8u);
 #endif
+    uvec4 t9 = uvec4(0u);
+    uvec4 t10 = uvec4(WF_NO_TEXTURE, WF_NO_TEXTURE, 0u, 0u);
+#if WF_HAS_IRIDESCENCE
+    t9 = wfTexel(materialTexels, base + 9u);
+    t10 = wfTexel(materialTexels, base + 10u);
+#endif
     return Material(uintBitsToFloat(t0), uintBitsToFloat(t1.xyz), t1.w, uintBitsToFloat(t2.x),
                     uintBitsToFloat(t2.y), uintBitsToFloat(t2.z), uintBitsToFloat(t2.w),
                     uintBitsToFloat(t3.xyz), uintBitsToFloat(t3.w), uintBitsToFloat(t4.x),
                     uintBitsToFloat(t4.y), t4.z, t4.w, t5.x, t5.y, t5.z, t5.w, t6.x,
                     uintBitsToFloat(t6.y), uintBitsToFloat(t6.z), t6.w, uintBitsToFloat(t7.xyz),
-                    uintBitsToFloat(t7.w), uintBitsToFloat(t8.xyz), uintBitsToFloat(t8.w));
+                    uintBitsToFloat(t7.w), uintBitsToFloat(t8.xyz), uintBitsToFloat(t8.w),
+                    uintBitsToFloat(t9.x), uintBitsToFloat(t9.y), uintBitsToFloat(t9.z),
+                    uintBitsToFloat(t9.w), t10.x, t10.y, t10.z, t10.w);
 }
 
 #if WF_HAS_INSTANCES

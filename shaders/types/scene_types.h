@@ -87,7 +87,7 @@ struct Instance {
 #define WF_NO_TEXTURE 0xffffffffu
 
 // glTF metallic-roughness material with KHR_materials_specular, _transmission, _ior,
-// _emissive_strength, _clearcoat, _sheen and _volume folded in. Texture fields index the
+// _emissive_strength, _clearcoat, _sheen, _volume and _iridescence folded in. Texture fields index the
 // texture-reference table, or hold WF_NO_TEXTURE.
 struct Material {
     vec4 baseColor;     // rgb: linear base colour, a: alpha
@@ -115,6 +115,15 @@ struct Material {
     float sheenRoughness;
     vec3 attenuation;          // KHR_materials_volume sigma_a = -ln(attenuationColor) / distance
     float thickness;           // thicknessFactor; 0 is thin-walled: no attenuation
+    float iridescence;         // KHR_materials_iridescence iridescenceFactor; 0: no film
+    float iridescenceIor;      // the film's ior, 1.3 by default
+    float iridescenceThicknessMinimum; // nm, 100 by default: thickness texture G = 0
+    float iridescenceThicknessMaximum; // nm, 400 by default: thickness texture G = 1 (and
+                                       // the film's thickness without a texture)
+    uint iridescenceTexture;           // its R channel multiplies iridescence
+    uint iridescenceThicknessTexture;  // its G channel mixes minimum..maximum
+    uint pad1;
+    uint pad2;
 };
 
 // Per-scene switches for the material extensions (ShaderVariant), off in shaders compiled
@@ -131,6 +140,9 @@ struct Material {
 #endif
 #ifndef WF_HAS_SPECULAR_TEXTURES
 #define WF_HAS_SPECULAR_TEXTURES 0
+#endif
+#ifndef WF_HAS_IRIDESCENCE
+#define WF_HAS_IRIDESCENCE 0
 #endif
 #endif
 
@@ -169,7 +181,7 @@ struct Emitter {
 #define WF_INSTANCE_PAGES 1
 #define WF_INSTANCE_PAGE_SHIFT 31
 #endif
-#define WF_MATERIAL_TEXELS 9u
+#define WF_MATERIAL_TEXELS 11u
 #define WF_INSTANCE_TEXELS 7u
 
 #ifdef __cplusplus
@@ -186,7 +198,7 @@ static_assert(offsetof(wf::gpu_types::Triangle, p2) == 32);
 static_assert(sizeof(wf::gpu_types::BvhNode) == 32);
 static_assert(offsetof(wf::gpu_types::BvhNode, hi) == 16);
 static_assert(offsetof(wf::gpu_types::BvhNode, count) == 28);
-static_assert(sizeof(wf::gpu_types::Material) == 144);
+static_assert(sizeof(wf::gpu_types::Material) == 176);
 static_assert(offsetof(wf::gpu_types::Material, emission) == 16);
 static_assert(offsetof(wf::gpu_types::Material, flags) == 28);
 static_assert(offsetof(wf::gpu_types::Material, specularColor) == 48);
@@ -198,6 +210,11 @@ static_assert(offsetof(wf::gpu_types::Material, sheenColor) == 112);
 static_assert(offsetof(wf::gpu_types::Material, sheenRoughness) == 124);
 static_assert(offsetof(wf::gpu_types::Material, attenuation) == 128);
 static_assert(offsetof(wf::gpu_types::Material, thickness) == 140);
+static_assert(offsetof(wf::gpu_types::Material, iridescence) == 144);
+static_assert(offsetof(wf::gpu_types::Material, iridescenceThicknessMaximum) == 156);
+static_assert(offsetof(wf::gpu_types::Material, iridescenceTexture) == 160);
+static_assert(offsetof(wf::gpu_types::Material, iridescenceThicknessTexture) == 164);
+static_assert(offsetof(wf::gpu_types::Material, pad2) == 172);
 static_assert(sizeof(wf::gpu_types::Emitter) == 16);
 static_assert(sizeof(wf::gpu_types::Instance) == 16 * WF_INSTANCE_TEXELS);
 static_assert(offsetof(wf::gpu_types::Instance, worldFromObject0) == 48);

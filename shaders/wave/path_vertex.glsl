@@ -126,6 +126,11 @@ BsdfParams bsdfAt(SurfaceHit surface) {
     bsdf.transmission = surface.transmission;
     bsdf.specular = surface.specular;
     bsdf.specularColor = surface.specularColor;
+#if WF_HAS_IRIDESCENCE
+    bsdf.iridescence = surface.iridescence;
+    bsdf.iridescenceIor = surface.iridescenceIor;
+    bsdf.iridescenceThickness = surface.iridescenceThickness;
+#endif
     return bsdf;
 }
 

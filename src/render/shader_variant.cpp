@@ -45,6 +45,7 @@ ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& se
     for (const Material& m : scene.materials) {
         variant.clearcoat |= m.clearcoat > 0.0f;
         variant.sheen |= std::max({m.sheenColor.x, m.sheenColor.y, m.sheenColor.z}) > 0.0f;
+        variant.iridescence |= m.iridescence > 0.0f;
         variant.volume |= m.transmission > 0.0f && m.thickness > 0.0f &&
                           std::max({m.attenuation.x, m.attenuation.y, m.attenuation.z}) > 0.0f;
         variant.specularTextures |=
@@ -97,6 +98,7 @@ ShaderDefines ShaderVariant::defines() const {
             {"WF_BSDF_DIFFUSE_ONLY", flag(diffuseOnly)},
             {"WF_HAS_CLEARCOAT", flag(clearcoat)},
             {"WF_HAS_SHEEN", flag(sheen)},
+            {"WF_HAS_IRIDESCENCE", flag(iridescence)},
             {"WF_HAS_VOLUME", flag(volume)},
             {"WF_HAS_SPECULAR_TEXTURES", flag(specularTextures && surface.textures)},
             {"WF_HAS_TEXTURES", flag(surface.textures)},

@@ -37,6 +37,7 @@ struct ShaderVariant {
     uint32_t shadeKinds = 0;
     bool clearcoat = false;           // WF_HAS_CLEARCOAT: some material has a clear coat
     bool sheen = false;               // WF_HAS_SHEEN: some material has a sheen
+    bool iridescence = false;         // WF_HAS_IRIDESCENCE: some material has a thin film
     bool volume = false;              // WF_HAS_VOLUME: some transmissive material absorbs
     bool specularTextures = false;    // WF_HAS_SPECULAR_TEXTURES: KHR_materials_specular maps
     SurfaceFeatures surface;          // textures, normals, alpha: set by the renderer

@@ -214,7 +214,8 @@ void loadImages(const tinygltf::Model& model, const std::string& file,
                            .glossinessFactor;
         for (uint32_t* field : {&m.metallicRoughnessTexture, &m.normalTexture,
                                 &m.emissiveTexture, &m.transmissionTexture,
-                                &m.specularTexture, &m.specularColorTexture}) {
+                                &m.specularTexture, &m.specularColorTexture,
+                                &m.iridescenceTexture, &m.iridescenceThicknessTexture}) {
             if (*field != WF_NO_TEXTURE && refImage[*field] == FAILED) {
                 *field = WF_NO_TEXTURE;
             }

@@ -366,7 +366,8 @@ Scene Converter::run() {
         for (Material& m : scene_.materials) {
             m.baseColorTexture = m.metallicRoughnessTexture = m.normalTexture =
                 m.emissiveTexture = m.transmissionTexture = m.specularTexture =
-                    m.specularColorTexture = WF_NO_TEXTURE;
+                    m.specularColorTexture = m.iridescenceTexture =
+                        m.iridescenceThicknessTexture = WF_NO_TEXTURE;
         }
     }
     addDefaultEnvironment();

@@ -18,7 +18,7 @@ namespace {
 const std::set<std::string> SUPPORTED_EXTENSIONS = {
     "KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_materials_transmission",
     "KHR_materials_specular", "KHR_materials_clearcoat", "KHR_materials_sheen",
-    "KHR_materials_volume", "KHR_texture_transform", "KHR_lights_punctual",
+    "KHR_materials_volume", "KHR_materials_iridescence", "KHR_texture_transform", "KHR_lights_punctual",
     "KHR_mesh_quantization", "KHR_draco_mesh_compression", "EXT_meshopt_compression",
     "KHR_meshopt_compression", "KHR_materials_unlit", "EXT_texture_webp",
     "EXT_mesh_gpu_instancing", "KHR_materials_pbrSpecularGlossiness"};
@@ -104,6 +104,8 @@ private:
     void ignoreTextures(const tinygltf::Value& extension, std::initializer_list<const char*> keys,
                         const std::string& name) const;
     void convertLayers(const tinygltf::Material& m, const std::string& name, Material& out);
+    void convertIridescence(const tinygltf::Material& m, const std::string& name, Material& out,
+                            MaterialNeeds& needs);
     Material convert(const tinygltf::Material& m, const std::string& name, MaterialNeeds& needs);
     void makeUnlit(Material& out) const;
 
@@ -305,6 +307,33 @@ void MaterialConverter::convertLayers(const tinygltf::Material& m, const std::st
     ignoreTextures(volume, {"thicknessTexture"}, name);
 }
 
+// KHR_materials_iridescence: a thin film over the dielectric and metal Fresnel (iridescence.h).
+void MaterialConverter::convertIridescence(const tinygltf::Material& m, const std::string& name,
+                                           Material& out, MaterialNeeds& needs) {
+    const tinygltf::Value& film = extension(m.extensions, "KHR_materials_iridescence");
+    if (!film.IsObject()) {
+        return;
+    }
+    const double factor = number(film, "iridescenceFactor", 0.0);
+    const double ior = number(film, "iridescenceIor", 1.3);
+    const double minimum = number(film, "iridescenceThicknessMinimum", 100.0);
+    const double maximum = number(film, "iridescenceThicknessMaximum", 400.0);
+    checkRange(name, "iridescenceFactor", factor, 0.0, 1.0);
+    if (!(ior >= 1.0 && ior <= 10.0)) { // NaN fails too
+        fail(file_, name + ": iridescenceIor must lie in [1, 10]");
+    }
+    checkRange(name, "iridescenceThicknessMinimum", minimum, 0.0, 1e6);
+    checkRange(name, "iridescenceThicknessMaximum", maximum, 0.0, 1e6);
+    out.iridescence = float(factor);
+    out.iridescenceIor = float(ior);
+    out.iridescenceThicknessMinimum = float(minimum);
+    out.iridescenceThicknessMaximum = float(maximum);
+    out.iridescenceTexture =
+        extensionTexture(film, "iridescenceTexture", false, name, needs, true);
+    out.iridescenceThicknessTexture =
+        extensionTexture(film, "iridescenceThicknessTexture", false, name, needs, true);
+}
+
 Material MaterialConverter::convert(const tinygltf::Material& m, const std::string& name,
                                     MaterialNeeds& needs) {
     const auto& pbr = m.pbrMetallicRoughness;
@@ -405,6 +434,7 @@ Material MaterialConverter::convert(const tinygltf::Material& m, const std::stri
         out.specularColorTexture =
             extensionTexture(specular, "specularColorTexture", true, name, needs);
     }
+    convertIridescence(m, name, out, needs);
     if (out.normalTexture != WF_NO_TEXTURE) {
         const TextureRef& ref = tables_.refs[out.normalTexture];
         needs.normalMapTexCoord = (ref.flags & WF_TEXTURE_TEXCOORD1) ? 1 : 0;
@@ -429,6 +459,8 @@ void MaterialConverter::makeUnlit(Material& out) const {
         out.metallicRoughnessTexture = out.normalTexture = WF_NO_TEXTURE;
     out.clearcoat = 0.0f;
     out.sheenColor = glm::vec3(0.0f);
+    out.iridescence = 0.0f;
+    out.iridescenceTexture = out.iridescenceThicknessTexture = WF_NO_TEXTURE;
 }
 
 MaterialTables MaterialConverter::run() {
@@ -462,6 +494,11 @@ Material defaultMaterial() {
     m.baseColorTexture = m.metallicRoughnessTexture = m.normalTexture = m.emissiveTexture =
         m.transmissionTexture = m.specularTexture = m.specularColorTexture = WF_NO_TEXTURE;
     m.attenuation = glm::vec3(0.0f); // no clearcoat, sheen or absorption: all zero
+    m.iridescence = 0.0f; // no thin film; the extension's defaults otherwise
+    m.iridescenceIor = 1.3f;
+    m.iridescenceThicknessMinimum = 100.0f;
+    m.iridescenceThicknessMaximum = 400.0f;
+    m.iridescenceTexture = m.iridescenceThicknessTexture = WF_NO_TEXTURE;
     return m;
 }
 
