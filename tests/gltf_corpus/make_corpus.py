@@ -478,7 +478,7 @@ g.node(camera=0, translation=[0, 0, 3])
 g.doc["scenes"][0]["nodes"] = [0, 1]
 case("valid/camera_orthographic.gltf", "loads 1 cameras=1", g)
 g = tri()
-g.doc["extensionsUsed"] = ["EXT_unknown_thing", "KHR_materials_iridescence"]
+g.doc["extensionsUsed"] = ["EXT_unknown_thing", "KHR_materials_unknown_future"]
 case("valid/unknown_extensions_warn.gltf", "loads 1", g)
 g = Gltf()
 m = g.material(pbrMetallicRoughness={"baseColorFactor": [0.9, 0.9, 0.9, 1],
@@ -502,6 +502,15 @@ m = g.material(extensions={
     "KHR_materials_specular": {"specularFactor": 0.9, "specularTexture": {"index": tex},
                                "specularColorTexture": {"index": tex}}})
 case("valid/material_layers.gltf", "loads 2 images=1", quad(g, m))
+g = Gltf()
+tex = g.texture(g.image(checker_png()))
+m = g.material(extensions={
+    "KHR_materials_iridescence": {
+        "iridescenceFactor": 0.7, "iridescenceIor": 1.8, "iridescenceThicknessMinimum": 150,
+        "iridescenceThicknessMaximum": 500, "iridescenceTexture": {"index": tex},
+        "iridescenceThicknessTexture": {"index": tex, "extensions": {"KHR_texture_transform": {
+            "scale": [2, 2]}}}}})
+case("valid/material_iridescence.gltf", "loads 2 images=1", quad(g, m))
 g = tri()
 g.doc["nodes"][0]["children"] = [1]
 g.doc["nodes"].append({"mesh": 0, "translation": [0, 0, 1]})
@@ -764,6 +773,15 @@ broken("attenuation_distance_zero.gltf", "attenuationDistance", quad(g, m, uv=Fa
 g = Gltf()
 m = g.material(extensions={"KHR_materials_sheen": {"sheenColorFactor": [0.5, -1, 0.5]}})
 broken("sheen_color_negative.gltf", "sheenColorFactor", quad(g, m, uv=False))
+for name, key, film in [
+        ("iridescence_above_one.gltf", "iridescenceFactor", {"iridescenceFactor": 1.5}),
+        ("iridescence_ior_below_one.gltf", "iridescenceIor", {"iridescenceFactor": 1,
+                                                              "iridescenceIor": 0.5}),
+        ("iridescence_thickness_negative.gltf", "iridescenceThicknessMinimum",
+         {"iridescenceFactor": 1, "iridescenceThicknessMinimum": -10})]:
+    g = Gltf()
+    m = g.material(extensions={"KHR_materials_iridescence": film})
+    broken(name, key, quad(g, m, uv=False))
 
 
 # --- Time: animations, skins and morph targets (issue 35). ---
