@@ -22,6 +22,16 @@ Material makeMaterial(float metallic, float roughness, float transmission, float
     return m;
 }
 
+// A KHR_materials_iridescence film (WF_HAS_IRIDESCENCE) over the material.
+Material iridescent(Material m) {
+    m.iridescence = 1.0f;
+    m.iridescenceIor = 1.8f;
+    m.iridescenceThicknessMinimum = 100.0f;
+    m.iridescenceThicknessMaximum = 400.0f;
+    m.iridescenceTexture = m.iridescenceThicknessTexture = WF_NO_TEXTURE;
+    return m;
+}
+
 MeanAndError furnace(const Material& material, LightSampling sampling) {
     RenderSettings settings;
     settings.width = 24;
@@ -51,6 +61,9 @@ TEST(MaterialFurnace, NoMaterialCreatesEnergyAndLosslessOnesVanish) {
         {"rough metal 0.6", makeMaterial(1, 0.6f, 0, 1), false},
         {"mirror", makeMaterial(1, 0, 0, 1), true},
         {"half metal 0.3", makeMaterial(0.5f, 0.3f, 0, 1), false},
+        {"iridescent dielectric 0.3", iridescent(makeMaterial(0, 0.3f, 0, 1)), false},
+        {"iridescent metal 0.4", iridescent(makeMaterial(1, 0.4f, 0, 1)), false},
+        {"iridescent rough glass", iridescent(makeMaterial(0, 0.3f, 1, 1)), false},
     };
     for (const Case& c : cases) {
         for (LightSampling sampling : {LightSampling::Bsdf, LightSampling::Mis}) {

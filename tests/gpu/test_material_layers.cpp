@@ -96,10 +96,11 @@ TEST(MaterialLayers, SceneWithoutThemCompilesNoneOfTheirCode) {
     WavefrontRenderer renderer(gpuContext(), prepared, settings(8, 1, 2), compiler);
     const ShaderDefines& defines = renderer.shaderDefines();
     for (const char* name :
-         {"WF_HAS_CLEARCOAT", "WF_HAS_SHEEN", "WF_HAS_VOLUME", "WF_HAS_SPECULAR_TEXTURES"})
+         {"WF_HAS_CLEARCOAT", "WF_HAS_SHEEN", "WF_HAS_VOLUME", "WF_HAS_SPECULAR_TEXTURES",
+          "WF_HAS_IRIDESCENCE"})
         EXPECT_EQ(defineValue(defines, name), "0") << name;
     const char* layerCode[] = {"layeredSample", "coatReflection", "sheenLobe", "sheenAlbedoNode",
-                               "absorption"};
+                               "absorption", "fresnelIridescence"};
     for (const char* pass : {"shade.comp", "megakernel.comp"}) {
         const std::vector<uint32_t> spirv = compiler.compile(pass, defines).spirv;
         for (const char* name : layerCode)
@@ -114,18 +115,22 @@ TEST(MaterialLayers, SceneWithoutThemCompilesNoneOfTheirCode) {
         return compiler.compile("shade.comp", on).spirv;
     };
     const std::vector<uint32_t> coat = with("WF_HAS_CLEARCOAT"), sheen = with("WF_HAS_SHEEN"),
-                                volume = with("WF_HAS_VOLUME");
+                                volume = with("WF_HAS_VOLUME"),
+                                film = with("WF_HAS_IRIDESCENCE");
     EXPECT_TRUE(spirvMentions(coat, "coatReflection"));
     EXPECT_FALSE(spirvMentions(coat, "sheenLobe"));
     EXPECT_TRUE(spirvMentions(sheen, "sheenLobe"));
     EXPECT_FALSE(spirvMentions(sheen, "coatReflection"));
     EXPECT_TRUE(spirvMentions(volume, "absorption"));
     EXPECT_FALSE(spirvMentions(volume, "layeredSample"));
+    EXPECT_TRUE(spirvMentions(film, "fresnelIridescence"));
+    EXPECT_FALSE(spirvMentions(film, "layeredSample"));
     // Every switch at once, in both shading passes (the host builds such variants too).
     ShaderDefines all = defines;
     for (auto& [key, value] : all)
         if (key == "WF_HAS_CLEARCOAT" || key == "WF_HAS_SHEEN" || key == "WF_HAS_VOLUME" ||
-            key == "WF_HAS_SPECULAR_TEXTURES" || key == "WF_HAS_TEXTURES")
+            key == "WF_HAS_SPECULAR_TEXTURES" || key == "WF_HAS_TEXTURES" ||
+            key == "WF_HAS_IRIDESCENCE")
             value = "1";
     for (const char* pass : {"shade.comp", "megakernel.comp"})
         EXPECT_TRUE(spirvMentions(compiler.compile(pass, all).spirv, "layeredSample")) << pass;
