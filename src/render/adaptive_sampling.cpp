@@ -49,14 +49,11 @@ void addMoments(FilmMoments& into, const FilmMoments& more) {
 // verdict's other tests do not matter to a ratio of two estimates from the same samples); 1
 // otherwise (a prediction that errs towards more samples). Low-discrepancy samples gain more
 // at higher counts, so the gain at the evidence's count still errs that way.
-double calibrationGain(const FilmMoments& evidence, SamplerKind sampler) {
-    if (evidence.replicates <= 1)
+// `calibrated` is the film's own estimate (estimateFilmError).
+double calibrationGain(const FilmMoments& film, const ErrorEstimate& calibrated) {
+    if (calibrated.replicates <= 1)
         return 1.0;
-    const ErrorEstimate calibrated = estimateFilmError(evidence, sampler);
-    FilmMoments plain = evidence;
-    plain.replicates = 1;
-    plain.replicateSums.clear();
-    const ErrorEstimate independent = estimateFilmError(plain, SamplerKind::Independent);
+    const ErrorEstimate independent = estimateIndependentFilmError(film);
     if (!(calibrated.relMse > 0.0) || !(independent.relMse > 0.0) ||
         calibrated.standardError > kReliableRelativeError * calibrated.relMse)
         return 1.0;
@@ -66,8 +63,7 @@ double calibrationGain(const FilmMoments& evidence, SamplerKind sampler) {
 // What an allocation aims at for a target: below it by the claim's margin, with the relative
 // standard error the evidence's estimate had (about what the image's will have: it depends on
 // how many pixels carry the error, not on their counts), and a tenth to spare.
-double aimFor(double target, const FilmMoments& evidence, SamplerKind sampler) {
-    const ErrorEstimate e = estimateFilmError(evidence, sampler);
+double aimFor(double target, const ErrorEstimate& e) {
     const double relative = e.relMse > 0.0
                                 ? std::min(e.standardError / e.relMse, kReliableRelativeError)
                                 : kReliableRelativeError;
@@ -236,9 +232,10 @@ AdaptiveResult renderAdaptive(WavefrontRenderer& renderer, uint32_t seed,
     // faster at first (the tiny light's pilot: 4.8x from 8 to 16 spp), but its gain over
     // independent samples went from 0.04 at 16 spp to 0.015 at 128, as n^-1.5 says. Later rounds
     // take the last reliable image's gain at its own mean.
+    ErrorEstimate evidenceEstimate = estimateFilmError(evidence, sampler); // once a round
     double slope = 1.0;
     if (halfPilot) {
-        const ErrorEstimate whole = estimateFilmError(evidence, sampler);
+        const ErrorEstimate& whole = evidenceEstimate;
         const double precise = kReliableRelativeError;
         if (halfPilot->relMse > 0.0 && whole.relMse > 0.0 &&
             halfPilot->standardError <= precise * halfPilot->relMse &&
@@ -248,7 +245,7 @@ AdaptiveResult renderAdaptive(WavefrontRenderer& renderer, uint32_t seed,
                                1.0, 1.5);
     }
     result.errorSlope = slope;
-    double gainBase = calibrationGain(evidence, sampler);
+    double gainBase = calibrationGain(evidence, evidenceEstimate);
     double gainBaseSpp = result.pilotSpp;
     auto gainAt = [&](double meanSpp) {
         return std::clamp(gainBase * std::pow(std::max(meanSpp, 1.0) / gainBaseSpp, 1.0 - slope),
@@ -271,7 +268,7 @@ AdaptiveResult renderAdaptive(WavefrontRenderer& renderer, uint32_t seed,
         double gain = gainAt(gainBaseSpp);
         SampleAllocation allocation;
         // The gain depends on the count the plan picks: a few fixed-point steps settle it.
-        const double aim = target ? aimFor(settings.targetError, evidence, sampler) : 0.0;
+        const double aim = target ? aimFor(settings.targetError, evidenceEstimate) : 0.0;
         for (int step = 0; step < (target ? 4 : 1); ++step) {
             if (target)
                 planned.targetError = aim / gain;
@@ -340,7 +337,7 @@ AdaptiveResult renderAdaptive(WavefrontRenderer& renderer, uint32_t seed,
         const FilmMoments film = renderer.readMoments();
         result.allocation = std::move(allocation);
         result.imageRounds = round;
-        result.estimate = estimateFilmError(film, renderer.variant().sampler);
+        result.estimate = estimateFilmError(film, sampler);
         result.rgb = renderer.readImage();
         result.sampleCounts = film.count;
         result.meanSpp = 0.0;
@@ -367,7 +364,7 @@ AdaptiveResult renderAdaptive(WavefrontRenderer& renderer, uint32_t seed,
         // independent-sample one, from the same samples (the pilot's prediction may have missed
         // rare light that the image found; the evidence the next plan reads now holds it).
         measuredGain = result.estimate.reliable && result.estimate.replicates > 1
-                           ? calibrationGain(film, sampler)
+                           ? calibrationGain(film, result.estimate)
                            : 0.0;
         if (result.targetMet) {
             result.stoppedBy = "target";
@@ -390,6 +387,7 @@ AdaptiveResult renderAdaptive(WavefrontRenderer& renderer, uint32_t seed,
         }
         previousMean = result.meanSpp;
         addMoments(evidence, film); // independent of the next round's samples
+        evidenceEstimate = estimateFilmError(evidence, sampler);
     }
     return result;
 }

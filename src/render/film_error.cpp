@@ -46,12 +46,14 @@ bool replicateVarianceOfMean(const FilmMoments& film, size_t pixel, std::array<d
     return true;
 }
 
-ErrorEstimate estimateFilmError(const FilmMoments& film, SamplerKind sampler) {
+namespace {
+
+// `replicates` > 1 reads the film's replicate sums; 1 takes the samples' variance alone.
+ErrorEstimate estimate(const FilmMoments& film, SamplerKind sampler, uint32_t replicates) {
     const size_t pixels = film.count.size();
-    const uint32_t replicates = std::max(film.replicates, 1u);
     if (film.sum.size() != 3 * pixels || film.squares.size() != 3 * pixels ||
         film.largest.size() != pixels ||
-        film.replicateSums.size() != (replicates - 1) * 4 * pixels)
+        film.replicateSums.size() != (std::max(film.replicates, 1u) - 1) * 4 * pixels)
         throw InternalError("estimateError: film moments of mismatched sizes");
     ErrorEstimate e;
     e.replicates = replicates;
@@ -108,6 +110,16 @@ ErrorEstimate estimateFilmError(const FilmMoments& film, SamplerKind sampler) {
     }
     judgeErrorEstimate(e);
     return e;
+}
+
+} // namespace
+
+ErrorEstimate estimateFilmError(const FilmMoments& film, SamplerKind sampler) {
+    return estimate(film, sampler, std::max(film.replicates, 1u));
+}
+
+ErrorEstimate estimateIndependentFilmError(const FilmMoments& film) {
+    return estimate(film, SamplerKind::Independent, 1);
 }
 
 } // namespace wf

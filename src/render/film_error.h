@@ -15,6 +15,10 @@ namespace wf {
 // means measures the error whatever the sampler.
 ErrorEstimate estimateFilmError(const FilmMoments& film, SamplerKind sampler);
 
+// The same film's estimate as if its samples were independent (replicates ignored): what the
+// variance of the samples alone says, against which --target-error measures a sampler's gain.
+ErrorEstimate estimateIndependentFilmError(const FilmMoments& film);
+
 // Per channel, the variance of pixel `pixel`'s mean estimated from the spread of its
 // replicates' means (film.replicates > 1): sum over r of (n_r / n)^2 (m_r - m)^2 K / (K - 1),
 // without bias when the replicates are independent and equally long, as interleaving keeps

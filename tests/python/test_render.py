@@ -1,6 +1,9 @@
 """Renders: arrays as promised, the CLI's image bit for bit, seeds, the 1/spp rate,
 progressive passes."""
 import json
+import subprocess
+import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -181,24 +184,10 @@ def test_animation_time_as_the_cli(renderer, tmp_path):
 
 
 def variants_file(path):
-    """One emissive triangle: white, red in variant "red", blue in variant "blue"."""
-    import base64
-    import struct
-    data = base64.b64encode(struct.pack("9f", 0, 0, 0, 1, 0, 0, 0, 1, 0)).decode()
-    mat = lambda c: {"pbrMetallicRoughness": {"baseColorFactor": c + [1]}, "emissiveFactor": c}
-    path.write_text(json.dumps({
-        "asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
-        "materials": [mat([1, 1, 1]), mat([1, 0, 0]), mat([0, 0, 1])],
-        "extensionsUsed": ["KHR_materials_variants"],
-        "extensions": {"KHR_materials_variants": {"variants": [{"name": "red"},
-                                                               {"name": "blue"}]}},
-        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0,
-            "extensions": {"KHR_materials_variants": {"mappings": [
-                {"material": 1, "variants": [0]}, {"material": 2, "variants": [1]}]}}}]}],
-        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
-                       "min": [0, 0, 0], "max": [1, 1, 0]}],
-        "bufferViews": [{"buffer": 0, "byteLength": 36}],
-        "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64," + data}]}))
+    """One emissive triangle: white, red in variant "red", blue in variant "blue" (the file
+    tests/cli/variants_gltf.py writes for the CLI and viewer checks)."""
+    script = Path(__file__).resolve().parents[1] / "cli" / "variants_gltf.py"
+    subprocess.run([sys.executable, str(script), str(path)], check=True)
     return path
 
 
