@@ -10,6 +10,8 @@
 // with WF_ERROR_REPLICATES, replicateFilm: the sums and counts of each replicate's samples but
 // the first, from which the film's error is estimated for correlated samplers),
 // counters.nonFiniteSamples.
+// --integrator light: a sample is the camera's value plus its light film entry (the splats of
+// every light subpath of its sample index into this pixel), which is read and zeroed here.
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "wave/bindings.glsl"
@@ -17,6 +19,9 @@ layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #if WF_GUIDING
 #include "guiding/guide_bindings.glsl"
 #include "guiding/guide_path.glsl"
+#endif
+#if WF_INTEGRATOR == WF_INTEGRATOR_LIGHT
+#include "bidir/light_film.glsl"
 #endif
 
 layout(push_constant) uniform Push { PassConstants pass; };
@@ -49,6 +54,9 @@ void main() {
     for (uint s = 0u; s < pass.samplesPerPixel; ++s) {
         uint path = local + s * pass.wavePixels;
         vec3 value = radianceAt(path).rgb;
+#if WF_INTEGRATOR == WF_INTEGRATOR_LIGHT
+        value += lightFilmTake(path); // waves of light tracing cover the image: path = entry
+#endif
         bool finite = isFiniteBits(value);
 #if defined(WF_ERROR_REPLICATES) && WF_ERROR_REPLICATES > 1
         uint replicate = (pass.sampleBase + s) % uint(WF_ERROR_REPLICATES);

@@ -15,6 +15,11 @@
 //   shadow      reads the shadow queue (count in shadowArgs.count); adds unoccluded NEE to
 //               radiance
 //   accumulate  adds each pixel's paths into the film, zeroing NaN/Inf samples
+// With --integrator light (WF_INTEGRATOR 1) the camera's passes run to depth 0 only (emitters
+// seen directly), then light subpaths: light_raygen appends to rayQueue[0]; queue; then per
+// light bounce intersect, light_shade (appends the continuation, and camera connections to
+// the shadow queue), queue, light_splat (visible connections into the light film); and
+// accumulate adds radiance + light film per pixel sample.
 #ifndef WF_RENDER_TYPES_H
 #define WF_RENDER_TYPES_H
 
@@ -35,6 +40,14 @@ namespace wf::gpu_types {
 
 #ifndef WF_RAY_CONES
 #define WF_RAY_CONES 0
+#endif
+
+// The integrator (--integrator): defined by the host only for those other than the path
+// tracer, whose shaders stay as they were.
+#define WF_INTEGRATOR_PATH 0
+#define WF_INTEGRATOR_LIGHT 1
+#ifndef WF_INTEGRATOR
+#define WF_INTEGRATOR WF_INTEGRATOR_PATH
 #endif
 
 // Scene data
@@ -77,6 +90,9 @@ namespace wf::gpu_types {
 // WF_MOTION (motion.glsl): the moving things' keys over the shutter, and each path's time.
 #define WF_BINDING_MOTION_KEYS 102 // vec4[]
 #define WF_BINDING_RAY_TIME 103    // float per path: its time within the shutter, in [0, 1)
+// --integrator light: per (pixel, sample slot) of a wave, the light subpaths' splats as 64-bit
+// fixed point, two words (low, high) per channel (bidir/light_film.glsl).
+#define WF_BINDING_LIGHT_FILM 104
 // WF_GUIDING (shaders/guiding/guide_bindings.glsl): the path guide's SD-tree and records.
 #define WF_BINDING_GUIDE_PARAMS 120   // GuideParams
 #define WF_BINDING_GUIDE_SPATIAL 121  // GuideSpatialNode[]

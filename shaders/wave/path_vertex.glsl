@@ -195,6 +195,9 @@ void shadePathVertex(inout PathVertex v) {
         v.radiance += clampContribution(v.beta * surface.emission *
                                         emissionWeight(v.previousPdf, lightPdf));
     }
+#if WF_INTEGRATOR == WF_INTEGRATOR_LIGHT
+    return; // light tracing: the camera finds emitters seen directly, light subpaths the rest
+#endif
 
     BsdfParams bsdf = bsdfAt(surface);
 #if WF_BSDF_LAYERS

@@ -35,6 +35,13 @@ std::vector<OptionSpec> depthOptions(uint32_t defaultMaxDepth) {
 
 std::vector<OptionSpec> samplingOptions() {
     return {
+        {"--integrator", "", "NAME", "path (the path tracer with next-event estimation; "
+                                     "default) or light (light tracing: light subpaths "
+                                     "connect each vertex to the camera, camera rays add the "
+                                     "emitters they see; unbiased, leaves black what only "
+                                     "Dirac surfaces seen directly show; whole samples of the "
+                                     "image per wave; not with --target-error, guiding, "
+                                     "motion blur, --traversal rt or an orthographic camera)"},
         {"--light-sampling", "", "MODE", "bsdf (emission found by BSDF rays), nee (light "
                                          "sampling only) or mis (default)"},
         {"--light-selection", "", "MODE", "how NEE picks a light: uniform, power or tree (the "
@@ -214,6 +221,8 @@ void applyRenderFlags(const ParsedArgs& parsed, uint32_t defaultMaxDepth,
     settings.maxDepth = parsed.uintValue("--max-depth", defaultMaxDepth, 1, 1024);
     settings.rrDepth = parsed.uintValue("--rr-depth", 3, 0, 1024);
     settings.seed = parsed.uintValue("--seed", 0, 0, 0xffffffffu);
+    settings.integrator =
+        parseIntegrator(parsed.choiceValue("--integrator", "path", {"path", "light"}));
     settings.lightSampling =
         parseLightSampling(parsed.choiceValue("--light-sampling", "mis", {"bsdf", "nee", "mis"}));
     if (parsed.has("--light-selection"))
@@ -341,7 +350,10 @@ guiding::GuidingDecision resolveGuiding(RenderSettings& settings, const Prepared
                                       {}, settings.samplesPerPixel);
     settings.guidingAuto = false;
     guiding::GuidingDecision decision;
-    if (settings.pixelList) {
+    if (settings.integrator != Integrator::Path) {
+        decision.reason = std::string("auto: off with --integrator ") +
+                          integratorName(settings.integrator) + " (the guide guides camera paths)";
+    } else if (settings.pixelList) {
         // auto never refuses: where `on` would be refused, it stays off.
         decision.reason = "auto: off with --target-error (its budget is unknown until the pilot; "
                           "--guiding on trains the guide as the pilot)";

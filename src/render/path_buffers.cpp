@@ -43,6 +43,10 @@ PathBuffers::PathBuffers(const Context& context, uint32_t pathCapacity, uint32_t
     if (variant.shadeKinds != 0) // at most 3 x 4 bytes x 4 M paths: within 128 MiB
         kindQueues =
             Buffer(context, "shade bins", uint64_t(pathCapacity) * variant.shadeBins() * 4);
+    if (variant.lightSubpaths()) {
+        lightFilm = Buffer(context, "light film", uint64_t(pathCapacity) * 24);
+        lightFilm.upload(std::vector<uint32_t>(size_t(pathCapacity) * 6, 0u));
+    }
     if (use != PathStateUse::WavefrontWithShadowRays)
         return;
     shadowOrigin = Buffer(context, "shadow origins", uint64_t(pathCapacity) * 16);
@@ -84,6 +88,7 @@ void PathBuffers::appendBindings(DescriptorBindings& bindings) const {
         {WF_BINDING_KIND_QUEUES, &kindQueues},
         {WF_BINDING_KIND_QUEUE_TEXELS, &kindQueues, BufferAccess::Uint1Texels},
         {WF_BINDING_RAY_TIME, &rayTime},
+        {WF_BINDING_LIGHT_FILM, &lightFilm},
     };
     for (const DescriptorBinding& binding : all)
         if (*binding.buffer)
@@ -95,7 +100,7 @@ void PathBuffers::appendMemoryReport(
     for (const Buffer* buffer :
          {&params, &counters, &film, &rayOrigin, &rayDirection, &throughput, &radiance, &hits,
           &shadowOrigin, &shadowDirection, &shadowRadiance, &rayQueues, &aovPaths, &aovFilm,
-          &momentFilm, &replicateFilm, &activePixels, &rayCones, &kindQueues, &rayTime})
+          &momentFilm, &replicateFilm, &activePixels, &rayCones, &kindQueues, &rayTime, &lightFilm})
         if (*buffer)
             report.emplace_back(buffer->name(), buffer->size());
 }

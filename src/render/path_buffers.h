@@ -48,6 +48,10 @@ struct PathBuffers {
     Buffer rayCones;     // WF_RAY_CONES: per path, the ray's cone width and spread (vec2)
     Buffer rayTime;      // WF_MOTION: per path, its time within the shutter (float)
     Buffer kindQueues;   // WF_SHADE_BINS: per shade bin, pathCapacity slots of the ray queue
+    // Light tracing: per path slot (a pixel in a sample slot of a whole-image wave), the light
+    // subpaths' splats in 64-bit fixed point, 24 bytes (bidir/light_film.glsl); zeroed here
+    // and by accumulate as it reads them.
+    Buffer lightFilm;
 };
 
 } // namespace wf

@@ -36,6 +36,10 @@ struct RenderSettings {
     // through ray-tracing pipelines (needs a context with ray tracing enabled; the megakernel
     // always walks the BVH). The same image up to the intersectors' rounding.
     Traversal traversal = Traversal::Bvh;
+    // --integrator: light tracing renders whole samples of the image per wave (its splats
+    // land anywhere), and is refused with the megakernel, --traversal rt, guiding, pixel lists
+    // (--target-error), motion blur and cameras without a lens (WavefrontRenderer).
+    Integrator integrator = Integrator::Path;
     LightSampling lightSampling = LightSampling::Mis;
     LightSelection lightSelection = LightSelection::Auto; // --light-selection
     bool triangleSolidAngle = true; // --triangle-sampling solid-angle (else area)

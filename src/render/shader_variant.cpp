@@ -15,9 +15,14 @@ namespace wf {
 ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& settings) {
     const LightTable& lights = scene.lights;
     ShaderVariant variant;
+    variant.integrator = settings.integrator;
     variant.lightSampling = settings.lightSampling;
+    // Light tracing reads the emitter table for its emission, whatever --light-sampling says
+    // (its camera rays only add the emission they find).
     variant.nextEventEstimation =
-        settings.lightSampling != LightSampling::Bsdf && !lights.emitters.empty();
+        (settings.lightSampling != LightSampling::Bsdf ||
+         settings.integrator == Integrator::Light) &&
+        !lights.emitters.empty();
     variant.triangleEmitters = variant.nextEventEstimation && lights.triangleEmitters > 0;
     variant.sphereLights = lights.sphereLights > 0;
     variant.deltaLights = variant.nextEventEstimation && lights.deltaLights > 0;
@@ -29,6 +34,10 @@ ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& se
                                      : LightSelection::Power;
     if (variant.lightSelection == LightSelection::Tree && scene.lightTree.nodes.empty())
         variant.lightSelection = LightSelection::Power; // only lights beside a tree
+    // Light subpaths start from a light chosen by the table's pmf alone (the tree's choice
+    // needs a receiving point), so light tracing takes power where NEE would take the tree.
+    if (variant.integrator == Integrator::Light && variant.lightSelection == LightSelection::Tree)
+        variant.lightSelection = LightSelection::Power;
     variant.triangleSolidAngle = settings.triangleSolidAngle;
     variant.sphereSolidAngle = settings.sphereSolidAngle;
     // Texture factors multiply these, so zero factors stay zero whatever the textures hold.
@@ -39,7 +48,11 @@ ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& se
     // One shade pass per kind only where the scene holds two kinds or more: a scene of one kind
     // keeps its single shade pass and shaders. Set for the megakernel too, which ignores it, so
     // that bench's two renderers share one set of scene buffers (the bins ride in them).
-    variant.shadeKinds = shadeKindsFor(shadeKindsPresent(scene.materials), settings.shadeSplit);
+    // Light tracing shades its camera rays at depth 0 only and its light vertices in one pass.
+    variant.shadeKinds = settings.integrator == Integrator::Light
+                             ? 0u
+                             : shadeKindsFor(shadeKindsPresent(scene.materials),
+                                             settings.shadeSplit);
     // Material extensions compile in only where some material uses them (zero factors stay
     // zero whatever their textures hold; absorption acts only inside transmissive meshes).
     for (const Material& m : scene.materials) {
@@ -131,6 +144,8 @@ ShaderDefines ShaderVariant::defines() const {
         defines.emplace_back("WF_ERROR_REPLICATES", std::to_string(errorReplicates));
     if (motion) // defined only then, so still scenes' shaders are as before
         defines.emplace_back("WF_MOTION", "1");
+    if (integrator != Integrator::Path)
+        defines.emplace_back("WF_INTEGRATOR", std::to_string(static_cast<int>(integrator)));
     if (shadeKinds != 0) {
         defines.push_back({"WF_SHADE_BINS", std::to_string(shadeBins())});
         defines.push_back({"WF_LIGHT_HIT_BIN", std::to_string(lightHitBin(shadeKinds))});
@@ -176,6 +191,18 @@ std::string describeLightSelection(const PreparedScene& scene, const ShaderVaria
         text += detail;
     }
     return text;
+}
+
+Integrator parseIntegrator(const std::string& name) {
+    if (name == "path")
+        return Integrator::Path;
+    if (name == "light")
+        return Integrator::Light;
+    throw UsageError("--integrator expects path or light, got '" + name + "'");
+}
+
+const char* integratorName(Integrator integrator) {
+    return integrator == Integrator::Light ? "light" : "path";
 }
 
 LightSelection parseLightSelection(const std::string& name) {

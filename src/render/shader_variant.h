@@ -15,6 +15,11 @@ struct RenderSettings;
 
 enum class LightSampling { Bsdf = 0, Nee = 1, Mis = 2 };
 
+// --integrator: the path tracer, or light tracing (camera rays find the emitters they see,
+// light subpaths connect to the camera for the rest; shaders/light_*.comp). Values are
+// WF_INTEGRATOR's.
+enum class Integrator { Path = 0, Light = 1 };
+
 // How next-event estimation picks a light (--light-selection): uniformly, by power from one
 // alias table, or by the light tree's importance at the shading point. Auto: the tree where
 // the scene has kLightTreeMinLights or more lights for it, else power.
@@ -22,6 +27,7 @@ enum class LightSelection { Auto, Uniform, Power, Tree };
 constexpr uint32_t kLightTreeMinLights = 4;
 
 struct ShaderVariant {
+    Integrator integrator = Integrator::Path; // WF_INTEGRATOR, defined only for light tracing
     LightSampling lightSampling = LightSampling::Mis;
     bool nextEventEstimation = false; // a light table to sample, and shadow rays
     bool triangleEmitters = false;
@@ -63,6 +69,8 @@ struct ShaderVariant {
 
     uint32_t shadeBins() const; // passes shading by kind: 0 (none) or 2-3
     bool lightsBuffer() const { return sphereLights || deltaLights; }
+    // Light tracing's passes exist: there is a light to trace from.
+    bool lightSubpaths() const { return integrator == Integrator::Light && nextEventEstimation; }
     bool lightTree() const {
         return nextEventEstimation && lightSelection == LightSelection::Tree;
     }
@@ -81,6 +89,8 @@ const char* lightSamplingName(LightSampling mode);
 // and the bench.
 std::string describeLightSelection(const PreparedScene& scene, const ShaderVariant& variant);
 LightSelection parseLightSelection(const std::string& name); // UsageError if unknown
+Integrator parseIntegrator(const std::string& name); // UsageError if unknown
+const char* integratorName(Integrator integrator);
 const char* lightSelectionName(LightSelection selection);
 
 } // namespace wf

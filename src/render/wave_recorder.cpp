@@ -8,6 +8,9 @@
 #include "gpu/timestamp_timer.h"
 #include "passes/accumulate_pass.h"
 #include "passes/intersect_pass.h"
+#include "passes/light_raygen_pass.h"
+#include "passes/light_shade_pass.h"
+#include "passes/light_splat_pass.h"
 #include "passes/megakernel_pass.h"
 #include "passes/queue_pass.h"
 #include "passes/raygen_pass.h"
@@ -29,8 +32,12 @@ WaveRecorder::WaveRecorder(const Context& context, const ShaderCompiler& compile
                            bool megakernel, uint32_t maxDepth, bool timePasses)
     : counters_(counters), maxDepth_(maxDepth) {
     // Four passes per depth (with shade bins, a shade pass per bin), plus raygen and accumulate.
-    const uint32_t passesPerDepth = 3 + std::max(variant.shadeBins(), 1u);
-    timer_ = std::make_unique<TimestampTimer>(context, passesPerDepth * maxDepth + 2, timePasses);
+    // Light tracing: four more per light bounce (intersect, light_shade, queue, light_splat)
+    // and two to start its subpaths.
+    const uint32_t passesPerDepth = 3 + std::max(variant.shadeBins(), 1u) +
+                                    (variant.lightSubpaths() ? 4 : 0);
+    timer_ = std::make_unique<TimestampTimer>(context, passesPerDepth * maxDepth + 4, timePasses);
+    lightTracing_ = variant.integrator == Integrator::Light;
 
     PassResources resources{context, compiler, defines, table, counters, *timer_,
                             variant.rayTracing && !megakernel};
@@ -48,8 +55,13 @@ WaveRecorder::WaveRecorder(const Context& context, const ShaderCompiler& compile
                         resources, static_cast<uint32_t>(shades_.size()), ShadeKind(k)));
         }
         queue_ = std::make_unique<QueuePass>(resources);
-        if (variant.nextEventEstimation)
+        if (variant.nextEventEstimation && !lightTracing_)
             shadow_ = std::make_unique<ShadowPass>(resources);
+        if (variant.lightSubpaths()) {
+            lightRaygen_ = std::make_unique<LightRaygenPass>(resources);
+            lightShade_ = std::make_unique<LightShadePass>(resources);
+            lightSplat_ = std::make_unique<LightSplatPass>(resources);
+        }
     }
     accumulate_ = std::make_unique<AccumulatePass>(resources);
 }
@@ -71,19 +83,41 @@ void WaveRecorder::record(VkCommandBuffer cmd, const PassConstants& wave) const 
         megakernel_->record(cmd, wave);
     } else {
         raygen_->record(cmd, wave);
-        for (uint32_t depth = 0; depth < maxDepth_; ++depth) {
+        // Light tracing's camera rays find the emitters they see and end.
+        const uint32_t cameraDepth = lightTracing_ ? 1 : maxDepth_;
+        for (uint32_t depth = 0; depth < cameraDepth; ++depth) {
             intersect_->record(cmd, depth);
             for (const auto& shade : shades_)
                 shade->record(cmd, depth, wave);
-            if (depth + 1 == maxDepth_)
+            if (depth + 1 == cameraDepth)
                 break; // the last bounce queues nothing
             queue_->record(cmd, depth);
             if (shadow_)
                 shadow_->record(cmd, depth);
         }
+        if (lightRaygen_)
+            recordLightSubpaths(cmd, wave);
     }
     accumulate_->record(cmd, wave);
     timer_->finish(cmd);
+}
+
+// The light subpaths of the wave's paths, after the camera's pass (which queued nothing):
+// their vertex at light bounce d connects to the camera as a path of d + 2 segments, so
+// bounces 0 .. maxDepth - 2 are traced.
+void WaveRecorder::recordLightSubpaths(VkCommandBuffer cmd, const PassConstants& wave) const {
+    if (maxDepth_ < 2)
+        return;
+    lightRaygen_->record(cmd, wave);
+    // Its appends become light bounce 0's arguments; their statistics count with the camera
+    // rays' (depthRays[0]).
+    queue_->record(cmd, ~0u);
+    for (uint32_t depth = 0; depth + 2 <= maxDepth_; ++depth) {
+        intersect_->record(cmd, depth);
+        lightShade_->record(cmd, depth, wave);
+        queue_->record(cmd, depth);
+        lightSplat_->record(cmd, depth);
+    }
 }
 
 void WaveRecorder::recordIntersect(VkCommandBuffer cmd, uint32_t count) const {

@@ -1,6 +1,8 @@
 // One wave as commands: the queue counters' reset, raygen, then for each depth intersect,
 // shade (one pass per shade bin), queue and shadow, and accumulate; or the megakernel in place
-// of the passes between raygen's and accumulate's places. Owns the passes and the timestamp
+// of the passes between raygen's and accumulate's places. Light tracing: raygen, intersect
+// and shade at depth 0 (emitters seen directly), then light_raygen, queue and per light bounce
+// intersect, light_shade, queue and light_splat, then accumulate. Owns the passes and the timestamp
 // queries that time them; the renderer owns the buffers and decides what each wave covers.
 #pragma once
 #include <cstdint>
@@ -26,6 +28,9 @@ class QueuePass;
 class ShadowPass;
 class AccumulatePass;
 class MegakernelPass;
+class LightRaygenPass;
+class LightShadePass;
+class LightSplatPass;
 struct ShaderVariant;
 namespace gpu_types {
 struct PassConstants;
@@ -58,6 +63,12 @@ private:
     std::unique_ptr<ShadowPass> shadow_;
     std::unique_ptr<AccumulatePass> accumulate_;
     std::unique_ptr<MegakernelPass> megakernel_;
+    bool lightTracing_ = false; // the camera's passes at depth 0 only
+    std::unique_ptr<LightRaygenPass> lightRaygen_; // light tracing in scenes with emitters
+    std::unique_ptr<LightShadePass> lightShade_;
+    std::unique_ptr<LightSplatPass> lightSplat_;
+
+    void recordLightSubpaths(VkCommandBuffer cmd, const gpu_types::PassConstants& wave) const;
 };
 
 } // namespace wf

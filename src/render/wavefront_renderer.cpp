@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 #include "errors.h"
 #include "gpu/compute_program.h"
@@ -12,6 +13,7 @@
 #include "render/samplers/sampler_tables.h"
 #include "render/gpu_scene/scene_buffers.h"
 #include "render/wave_recorder.h"
+#include "shaders/bidir/camera_importance.h"
 #include "passes/workgroup.h"
 #include "shaders/types/render_types.h"
 #include "shaders/sampling/sampler_tables.h"
@@ -21,6 +23,33 @@ namespace wf {
 using gpu_types::PassConstants;
 using gpu_types::QueueCounters;
 using gpu_types::RenderParams;
+
+namespace {
+
+// What light tracing (--integrator light) does not take yet, or cannot: one line each.
+void requireLightTracingSupport(const RenderSettings& settings, const PreparedScene& scene) {
+    const auto refuse = [](const std::string& what) {
+        throw UsageError("--integrator light: " + what);
+    };
+    if (settings.megakernel)
+        refuse("no megakernel of light tracing exists; bench it without --compare-megakernel");
+    if (settings.traversal == Traversal::RayTracing)
+        refuse("its passes trace by the project's BVH only; use --traversal bvh");
+    if (settings.guiding)
+        refuse("path guiding guides camera paths; use --guiding off");
+    if (settings.pixelList)
+        refuse("--target-error and adaptive sampling need per-pixel sample counts, which light "
+               "splats do not keep; render a fixed --spp");
+    if (scene.motionSegments > 0)
+        refuse("motion blur (--shutter) is not traced by light subpaths yet");
+    gpu_types::CameraGeometry camera{};
+    camera.tanHalfFovY = std::tan(0.5f * scene.camera.yfov);
+    camera.orthoHalfHeight = scene.camera.orthoHalfHeight;
+    if (!gpu_types::cameraConnectable(camera))
+        refuse("an orthographic camera has no lens that light paths can connect to");
+}
+
+} // namespace
 
 WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene& scene,
                                      const RenderSettings& settings,
@@ -44,17 +73,29 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
                          "device's buffer limit (" + std::to_string(maxPixels) +
                          " entries of 16 bytes): take fewer replicates");
     pixelCount_ = static_cast<uint32_t>(pixels);
+    const bool lightTracing = settings.integrator == Integrator::Light;
+    if (lightTracing) {
+        requireLightTracingSupport(settings, scene);
+        if (pixels > maxPaths)
+            throw UsageError("--integrator light traces a whole sample of the image per wave: "
+                             "at most " + std::to_string(maxPaths) + " pixels");
+    }
     // Guided renders keep 4 training records of 64 bytes per path: at most 2^19 paths keep
     // them within a 128 MiB storage buffer.
     const uint64_t guideMaxPaths = settings.guiding ? uint64_t(1) << 19 : maxPaths;
     pathCapacity_ = static_cast<uint32_t>(std::max<uint64_t>(
         1, std::min({uint64_t(settings.maxPathsPerWave), maxPaths, guideMaxPaths,
                      pixels * settings.samplesPerPixel})));
+    // Light tracing's splats land anywhere in the image, so each wave holds whole samples.
+    if (lightTracing)
+        pathCapacity_ = std::max(pathCapacity_, pixelCount_);
     // The first wave's size is a guess (a CPU device traces ~1e5-1e6 paths/s, a GPU far more);
     // later waves follow the measured time.
     const bool cpu = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
     wavePaths_ = settings.submitBudgetSeconds > 0.0 && cpu ? std::min(pathCapacity_, 1u << 12)
                                                            : pathCapacity_;
+    if (lightTracing)
+        wavePaths_ = std::max(wavePaths_, pixelCount_);
     variant_ = deviceVariant(context, scene, settings);
     defines_ = variant_.defines();
     if (sharedScene && sharedScene->defines() != defines_)
@@ -203,7 +244,9 @@ void WavefrontRenderer::adaptWaveSize(uint32_t paths, double seconds) {
     secondsPerPath_ = std::max(seconds / paths, 0.75 * secondsPerPath_);
     const double wanted = 0.6 * settings_.submitBudgetSeconds / secondsPerPath_;
     const double grown = std::min(wanted, 4.0 * wavePaths_);
-    const uint32_t floor = std::min(pathCapacity_, 1024u);
+    const uint32_t floor = settings_.integrator == Integrator::Light
+                               ? pixelCount_ // whole samples of the image per wave
+                               : std::min(pathCapacity_, 1024u);
     wavePaths_ = static_cast<uint32_t>(std::clamp(grown, double(floor), double(pathCapacity_)));
 }
 
@@ -236,6 +279,10 @@ uint32_t WavefrontRenderer::advance(uint32_t maxSamples) {
 uint32_t WavefrontRenderer::renderPixels(uint32_t paths) {
     if (variant_.adaptive)
         throw InternalError("a renderer of pixel lists traces through renderPixelList only");
+    if (settings_.integrator == Integrator::Light) { // whole samples only
+        advance(1);
+        return pixelCount_;
+    }
     const uint32_t left = std::min(pathCapacity_, pixelCount_ - pixelCursor_);
     const uint32_t pixels = std::clamp(paths, 1u, left);
     runWave(pixelCursor_, pixels, samplesDone_, 1);

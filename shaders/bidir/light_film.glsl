@@ -1,0 +1,51 @@
+// The light film (--integrator light): per entry (a pixel in a sample slot of the wave), the
+// sum of the light subpaths' splats as 64-bit unsigned fixed point with 32 fractional bits,
+// in two words per channel (low, high). Integer adds commute exactly, so the same seed gives
+// the same image bit for bit whatever order the splats arrive in; float atomics would not.
+// A splat is at most WF_LIGHT_FILM_MAX (the caller drops and counts larger ones as it drops
+// NaN), so a high word of 2^32 - 1 holds 256 of the largest in one entry; values below 2^-33
+// round to 0. accumulate.comp reads each entry once per wave and zeroes it.
+#ifndef WF_LIGHT_FILM_GLSL
+#define WF_LIGHT_FILM_GLSL
+
+#define WF_LIGHT_FILM_MAX 16777216.0 // 2^24
+
+layout(std430, binding = WF_BINDING_LIGHT_FILM) buffer LightFilmBuffer {
+    uint lightFilm[]; // 6 words per entry: r low, r high, g low, g high, b low, b high
+};
+
+void lightFilmAddChannel(uint word, float value) {
+    uint high = uint(value);
+    // 2^32 ulps of the fraction, rounded to nearest (value < 2^24, so the fraction has at
+    // least 8 exact bits below the point).
+    float fraction = (value - float(high)) * 4294967296.0;
+    uint low = fraction >= 4294967295.0 ? 4294967295u : uint(fraction + 0.5);
+    if (low != 0u) {
+        uint old = atomicAdd(lightFilm[word], low);
+        if (old + low < old)
+            high += 1u;
+    }
+    if (high != 0u)
+        atomicAdd(lightFilm[word + 1u], high);
+}
+
+// value: finite, each channel in [0, WF_LIGHT_FILM_MAX].
+void lightFilmAdd(uint entry, vec3 value) {
+    lightFilmAddChannel(6u * entry, value.r);
+    lightFilmAddChannel(6u * entry + 2u, value.g);
+    lightFilmAddChannel(6u * entry + 4u, value.b);
+}
+
+// The entry's sum, and zeroes it for the next wave.
+vec3 lightFilmTake(uint entry) {
+    vec3 sum;
+    for (uint c = 0u; c < 3u; ++c) {
+        uint word = 6u * entry + 2u * c;
+        sum[c] = float(lightFilm[word + 1u]) + float(lightFilm[word]) * (1.0 / 4294967296.0);
+        lightFilm[word] = 0u;
+        lightFilm[word + 1u] = 0u;
+    }
+    return sum;
+}
+
+#endif

@@ -1,0 +1,192 @@
+#version 460
+// light_shade (--integrator light): one vertex of a light subpath per ray in the current queue.
+// The vertex connects to the camera (a splat, queued for the light_splat pass's visibility
+// test) unless its BSDF is Dirac, and continues by sampling the adjoint BSDF
+// (bidir/adjoint_bsdf.h) with Russian roulette. Light subpaths collect no emission: paths that
+// end on an emitter seen by the camera are the camera pass's (emitters seen directly).
+// In: rayQueue[depth & 1] (count in counters.rayArgs.count), hits (by queue slot), the light
+// subpaths' rays and throughput (by path), the scene.
+// Out: the continuation (rayOrigin/rayDirection/throughput by path, appended to
+// rayQueue[(depth + 1) & 1]); camera connections in the shadow queue's arrays by slot: origin
+// with the light film entry in w, the segment to the lens point, the value to splat.
+#extension GL_GOOGLE_include_directive : require
+layout(local_size_x = WF_WORKGROUP_SIZE) in;
+#include "wave/bindings.glsl"
+#if !WF_HAS_EMITTERS || WF_INTEGRATOR != WF_INTEGRATOR_LIGHT
+#error "light_shade exists only for light tracing in scenes with emitters"
+#endif
+#include "wave/queue_append.glsl"
+#include "traversal/geometry.h"
+#include "sampling/rng.h"
+#include "sampling/sampling.h"
+#include "lights/light_sampling.h"
+#include "bsdf/bsdf.h"
+#include "surface/surface.glsl"
+#include "lights/lights.glsl"
+#include "wave/path_vertex.glsl"
+#include "bidir/adjoint_bsdf.h"
+#include "bidir/light_subpath.glsl"
+#include "wave/wave_paths.glsl"
+
+layout(push_constant) uniform Push { PassConstants pass; };
+
+WF_DEFINE_QUEUE_APPEND(appendRay, counters.rayCount)
+WF_DEFINE_QUEUE_APPEND(appendSplat, counters.shadowCount)
+
+struct LightVertex {
+    // In: where the subpath is.
+    uint pixel;       // the path slot's pixel and sample index: its sample dimensions
+    uint sampleIndex;
+    uint depth;       // light bounce index: this ray is the subpath's segment depth + 1
+    uvec4 hit;
+    // In and out: the ray, and after shading the continuation.
+    vec3 origin;
+    vec3 direction;   // the way light travels
+    vec3 beta;        // emitted cos / pdfs x the adjoint BSDF's sample weights so far
+    // Out.
+    bool continues;
+    bool connects;
+    vec3 splatOrigin;
+    vec3 splatSegment; // to the lens point: t in (0, 1)
+    uint splatPixel;
+    vec3 splat;        // added to splatPixel if the segment is unoccluded
+};
+
+void shadeLightVertex(inout LightVertex v) {
+    v.continues = false;
+    v.connects = false;
+    if (v.hit.w == WF_MISS)
+        return;
+#if WF_HAS_SPHERE_LIGHTS
+    if ((v.hit.w & WF_SPHERE_HIT) != 0u)
+        return; // sphere lights are pure emitters: they absorb what reaches them
+#endif
+    vec3 toLight = -v.direction;
+#if WF_HAS_INSTANCES
+    float t = instancedHitDistance(v.hit.x, v.hit.w, uintBitsToFloat(v.hit.y),
+                                   uintBitsToFloat(v.hit.z), v.origin);
+#else
+    float t = uintBitsToFloat(v.hit.x);
+#endif
+    // No ray cone on a light subpath: textures read their full-resolution level, as light
+    // sampling's emission does.
+    SurfaceHit surface = loadSurface(v.hit.x, v.hit.w, uintBitsToFloat(v.hit.y),
+                                     uintBitsToFloat(v.hit.z), toLight, 0.0);
+#if WF_HAS_VOLUME
+    if (!surface.frontFace && surface.transmission > 0.0)
+        v.beta *= exp(-surface.absorption * t); // as path_vertex.glsl: the same Beer-Lambert
+#endif
+    BsdfParams bsdf = bsdfAt(surface);
+#if WF_BSDF_LAYERS
+    BsdfLayers layers = layersAt(surface);
+    bool hasNonDelta = layeredHasNonDelta(bsdf, layers);
+#else
+    bool hasNonDelta = bsdfHasNonDelta(bsdf);
+#endif
+    // The frame as path_vertex.glsl builds it, from the side the ray arrived on.
+    bool flip = surface.transmission > 0.0 && !surface.frontFace;
+    vec3 n = flip ? -surface.ns : surface.ns;
+    vec3 geometricOutside = flip ? -surface.ng : surface.ng;
+    vec3 tangent, bitangent;
+    buildOrthonormalBasis(n, tangent, bitangent);
+    vec3 toLightLocal = vec3(dot(toLight, tangent), dot(toLight, bitangent), dot(toLight, n));
+
+    // The connection to the camera makes a path of depth + 2 segments.
+    CameraConnection c;
+    if (hasNonDelta && v.depth + 2u <= params.maxDepth &&
+        connectToCamera(surface.p,
+                        lightVertexSample2D(v.pixel, v.sampleIndex, v.depth, WF_DIM_LIGHT_POINT),
+                        c)) {
+        vec3 toCameraLocal =
+            vec3(dot(c.toCamera, tangent), dot(c.toCamera, bitangent), dot(c.toCamera, n));
+        // In the radiance order f(toCamera, toLight) is the path tracer's own BSDF (no
+        // refraction factor); the shading-normal correction makes it f_s |toCamera.ng|.
+#if WF_BSDF_LAYERS
+        vec3 f = layeredEval(bsdf, layers, toCameraLocal, toLightLocal);
+#else
+        vec3 f = bsdfEval(bsdf, toCameraLocal, toLightLocal);
+#endif
+        vec3 value = v.beta * f *
+                     (abs(toCameraLocal.z) *
+                      adjointShadingFactor(surface.ns, surface.ng, toLight, c.toCamera) *
+                      c.importance);
+        value = clampContribution(value);
+        if (any(greaterThan(value, vec3(0.0))) || any(isnan(value))) {
+            v.connects = true;
+            v.splatOrigin =
+                offsetRayOrigin(surface.p, surface.pError, geometricOutside, c.toCamera);
+            v.splatSegment = c.lensPoint - v.splatOrigin;
+            v.splatPixel = c.pixel;
+            v.splat = value;
+        }
+    }
+
+    // The next vertex is worth finding only if it can still connect: depth + 3 segments.
+    if (v.depth + 3u > params.maxDepth)
+        return;
+    BsdfSample s;
+    float uLobe = lightVertexSample1D(v.pixel, v.sampleIndex, v.depth, WF_DIM_BSDF_LOBE);
+    vec2 uDirection = lightVertexSample2D(v.pixel, v.sampleIndex, v.depth, WF_DIM_BSDF);
+#if WF_BSDF_LAYERS
+    if (!layeredSample(bsdf, layers, toLightLocal, uLobe, uDirection, s))
+        return;
+#else
+    if (!bsdfSample(bsdf, toLightLocal, uLobe, uDirection, s))
+        return;
+#endif
+    vec3 wi = normalize(tangent * s.wi.x + bitangent * s.wi.y + n * s.wi.z);
+    vec3 beta = v.beta * s.weight *
+                adjointThroughputFactor(surface.ns, surface.ng, toLight, wi, s.eta);
+    if (v.depth >= params.rrDepth) {
+        float survive = min(max(beta.r, max(beta.g, beta.b)), 1.0);
+        beta = lightVertexSample1D(v.pixel, v.sampleIndex, v.depth, WF_DIM_ROULETTE) < survive
+                   ? beta / survive
+                   : vec3(0.0);
+    }
+    if (max(beta.r, max(beta.g, beta.b)) < params.minThroughput)
+        beta = vec3(0.0);
+    v.continues = any(greaterThan(beta, vec3(0.0)));
+    if (v.continues) {
+        v.origin = offsetRayOrigin(surface.p, surface.pError, geometricOutside, wi);
+        v.direction = wi;
+        v.beta = beta;
+    }
+}
+
+void main() {
+    uint index = gl_GlobalInvocationID.x;
+    bool inQueue = index < counters.rayArgs.count;
+    uint path = inQueue ? rayQueueAt(pass.depth, index) : 0u;
+    LightVertex v;
+    v.continues = false;
+    v.connects = false;
+    if (inQueue) {
+        v.pixel = wavePathPixel(pass, path);
+        v.sampleIndex = wavePathSample(pass, path);
+        v.depth = pass.depth;
+        v.hit = hitAt(index);
+        v.origin = rayOriginAt(path).xyz;
+        v.direction = rayDirectionAt(path).xyz;
+        v.beta = throughputAt(path).rgb;
+        shadeLightVertex(v);
+        if (v.continues) {
+            rayOrigin[path] = wfPack(vec4(v.origin, 0.0));
+            rayDirection[path] = wfPack(vec4(v.direction, 0.0));
+            throughput[path] = wfPack(vec4(v.beta, 1.0));
+        }
+    }
+
+    // Appends happen in uniform control flow: every lane of the subgroup takes part.
+    uint raySlot = appendRay(v.continues);
+    if (v.continues)
+        rayQueues[((pass.depth + 1u) & 1u) * params.pathCapacity + raySlot] = path;
+    uint splatSlot = appendSplat(v.connects);
+    if (v.connects) {
+        // The light film entry: the pixel it lands in, in the sample slot of the subpath's own
+        // sample index (waves of light tracing cover the whole image: accumulate.comp).
+        uint entry = (v.sampleIndex - pass.sampleBase) * pass.wavePixels + v.splatPixel;
+        shadowOrigin[splatSlot] = wfPack(uvec4(floatBitsToUint(v.splatOrigin), entry));
+        shadowDirection[splatSlot] = wfPack(vec4(v.splatSegment, 0.0));
+        shadowRadiance[splatSlot] = wfPack(vec4(v.splat, 0.0));
+    }
+}
