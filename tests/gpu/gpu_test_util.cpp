@@ -100,7 +100,8 @@ MeanAndError imageMean(const std::vector<float>& rgb) {
 int expectRegionsUnbiased(const std::vector<std::vector<float>>& images,
                           const std::vector<float>& reference,
                           const std::vector<float>& referenceVariance, uint32_t width,
-                          uint32_t height, uint32_t block, const std::string& what) {
+                          uint32_t height, uint32_t block, const std::string& what,
+                          const std::vector<bool>* skipRegion) {
     auto regionSum = [&](const std::vector<float>& rgb, uint32_t bx, uint32_t by) {
         double sum = 0.0;
         for (uint32_t y = by * block; y < (by + 1) * block; ++y)
@@ -113,6 +114,8 @@ int expectRegionsUnbiased(const std::vector<std::vector<float>>& images,
     int checked = 0;
     for (uint32_t by = 0; by < height / block; ++by)
         for (uint32_t bx = 0; bx < width / block; ++bx) {
+            if (skipRegion && (*skipRegion)[by * (width / block) + bx])
+                continue;
             double mean = 0.0, meanSq = 0.0;
             for (const auto& image : images) {
                 const double m = regionSum(image, bx, by) / values;

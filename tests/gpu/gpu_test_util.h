@@ -46,9 +46,11 @@ MeanAndError imageMean(const std::vector<float>& rgb);
 // pixels, rgb) against the reference's, within 5 standard errors (the images' spread and the
 // reference's variance layer, rgb per pixel) plus 0.2%: a gtest failure per region that is
 // not, named by `what`. Returns the regions checked.
+// `skipRegion`, when given, holds one flag per region (row by row): those are not checked.
 int expectRegionsUnbiased(const std::vector<std::vector<float>>& images,
                           const std::vector<float>& reference,
                           const std::vector<float>& referenceVariance, uint32_t width,
-                          uint32_t height, uint32_t block, const std::string& what);
+                          uint32_t height, uint32_t block, const std::string& what,
+                          const std::vector<bool>* skipRegion = nullptr);
 
 } // namespace wf::test

@@ -1,0 +1,173 @@
+// --integrator light (issue 46): light tracing estimates what the path tracer does, region by
+// region, on the laboratory's scenes, except where the camera sees a Dirac surface directly
+// (a light tracer leaves those pixels black: no light subpath can connect through them);
+// white furnace; the same seed gives the same image bit for bit; no NaN; what it cannot do
+// yet is refused.
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "errors.h"
+#include "gpu_test_util.h"
+#include "instanced_scene.h"
+#include "scene/gltf/gltf_loader.h"
+#include "scene/lights/light_table.h"
+
+namespace wf::test {
+namespace {
+
+constexpr uint32_t kSize = 32;
+constexpr uint32_t kBlock = 8;
+
+RenderSettings settingsFor(Integrator integrator, uint32_t spp, uint32_t seed) {
+    RenderSettings settings;
+    settings.width = kSize;
+    settings.height = kSize;
+    settings.samplesPerPixel = spp;
+    settings.maxDepth = 6;
+    settings.seed = seed;
+    settings.sampler = SamplerKind::Independent; // seeds and samples independent alike
+    settings.integrator = integrator;
+    return settings;
+}
+
+// Light renders over `seeds` seeds against a path-traced reference with its variance, per
+// kBlock x kBlock region within 5 standard errors. The light renders' error comes from their
+// spread over seeds, not from their pixels' variance: one light subpath splats into several
+// pixels of a region, so the pixels' errors are correlated; 16 seeds give that spread 15
+// degrees of freedom. Regions holding a pixel that every light
+// render left exactly 0 while the reference is not are skipped (a Dirac surface seen
+// directly); at least `minRegions` must be checked.
+void expectLightAgreesWithPath(const Scene& scene, uint32_t referenceSpp, uint32_t lightSpp,
+                               int seeds, int minRegions, const std::string& what) {
+    RenderSettings reference = settingsFor(Integrator::Path, referenceSpp, 9001);
+    reference.aov = true; // the variance layer
+    RenderResult path = renderScene(scene, reference);
+    std::vector<std::vector<float>> images;
+    for (int seed = 0; seed < seeds; ++seed) {
+        RenderResult light =
+            renderScene(scene, settingsFor(Integrator::Light, lightSpp, 100 + seed));
+        EXPECT_EQ(light.stats.nonFiniteSamples, 0u) << what;
+        for (float v : light.rgb)
+            ASSERT_TRUE(std::isfinite(v)) << what;
+        images.push_back(std::move(light.rgb));
+    }
+    const uint32_t regionsPerRow = kSize / kBlock;
+    std::vector<bool> skip(regionsPerRow * regionsPerRow, false);
+    for (uint32_t i = 0; i < kSize * kSize; ++i) {
+        bool unreached = path.rgb[3 * i] + path.rgb[3 * i + 1] + path.rgb[3 * i + 2] > 0.0f;
+        for (const auto& image : images)
+            unreached = unreached && image[3 * i] + image[3 * i + 1] + image[3 * i + 2] == 0.0f;
+        if (unreached)
+            skip[(i / kSize / kBlock) * regionsPerRow + (i % kSize) / kBlock] = true;
+    }
+    const int checked = expectRegionsUnbiased(images, path.rgb, path.aov.variance, kSize, kSize,
+                                              kBlock, what, &skip);
+    EXPECT_GE(checked, minRegions) << what;
+    EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
+}
+
+Scene laboratoryScene(const char* name) {
+    return loadGltf(std::string(WF_TEST_SCENE_DIR) + "/" + name + ".gltf");
+}
+
+TEST(LightTracing, AgreesWithPathOnTheCornellBox) {
+    expectLightAgreesWithPath(laboratoryScene("cornell_box"), 1024, 64, 16, 16, "cornell");
+}
+
+TEST(LightTracing, AgreesWithPathOnVeachsPlates) {
+    // Glossy plates seen directly: light tracing's failure case (splats land on few pixels),
+    // still unbiased.
+    expectLightAgreesWithPath(laboratoryScene("veach_mis"), 1024, 512, 16, 8, "veach");
+}
+
+TEST(LightTracing, AgreesWithPathOnTheGlassCausticAwayFromTheGlass) {
+    // The caustic on the floor is light tracing's strength; the sphere seen directly stays
+    // black, and the regions it covers are skipped (at most half of them).
+    expectLightAgreesWithPath(laboratoryScene("glass_caustic"), 2048, 64, 16, 8, "caustic");
+}
+
+TEST(LightTracing, AgreesWithPathThroughRoughGlass) {
+    // Rough glass seen directly connects to the camera from either side of the interface,
+    // where importance must not take the 1 / eta^2 that radiance takes (adjoint_bsdf.h).
+    Scene scene = laboratoryScene("glass_caustic");
+    for (Material& material : scene.materials)
+        if (material.transmission > 0.0f)
+            material.roughness = 0.3f;
+    expectLightAgreesWithPath(scene, 1024, 64, 16, 12, "rough glass");
+}
+
+TEST(LightTracing, AgreesWithPathUnderSphereLights) {
+    expectLightAgreesWithPath(laboratoryScene("sphere_near_floor"), 1024, 64, 16, 8, "sphere");
+}
+
+TEST(LightTracing, AgreesWithPathOnInstancedNormalMappedMeshes) {
+    // Two-level BVH, textures and shading normals that differ from the geometric ones: the
+    // adjoint BSDF's correction (bidir/adjoint_bsdf.h) is what keeps this unbiased.
+    TempDir dir;
+    expectLightAgreesWithPath(loadGltf(writeNormalMappedInstancedScene(dir)), 1024, 64, 16, 16,
+                              "instances");
+}
+
+TEST(LightTracing, AgreesWithPathThroughAThinLens) {
+    Scene scene = laboratoryScene("cornell_box");
+    scene.camera.aperture = 0.4f;
+    scene.camera.focusDistance =
+        glm::dot(sceneBounds(scene).center - scene.camera.position, scene.camera.forward);
+    expectLightAgreesWithPath(scene, 1024, 64, 16, 16, "thin lens");
+}
+
+TEST(LightTracing, WhiteFurnaceSumsTheSeriesToMaxDepth) {
+    // Camera inside a closed box whose walls emit E and reflect a: a path of at most D
+    // segments collects E (1 - a^D) / (1 - a); the camera rays find the first term, light
+    // subpaths the rest.
+    const float albedo = 0.5f, emission = 0.5f;
+    for (uint32_t depth : {1u, 2u, 4u, 40u}) {
+        RenderSettings settings = settingsFor(Integrator::Light, 64, 5);
+        settings.maxDepth = depth;
+        RenderResult result = renderScene(furnaceBox(albedo, emission), settings);
+        const double expected = emission * (1.0 - std::pow(albedo, depth)) / (1.0 - albedo);
+        MeanAndError measured = imageMean(result.rgb);
+        EXPECT_EQ(result.stats.nonFiniteSamples, 0u);
+        EXPECT_NEAR(measured.mean, expected, 4.0 * measured.standardError + 1e-4 * expected)
+            << "max depth " << depth;
+        EXPECT_NEAR(measured.mean, expected, 0.01 * expected) << "max depth " << depth;
+    }
+    EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
+}
+
+TEST(LightTracing, SameSeedSameImageBitForBit) {
+    // The light film adds splats as integers, which commute: no order of arrival shows.
+    const Scene scene = laboratoryScene("cornell_box");
+    RenderSettings settings = settingsFor(Integrator::Light, 16, 3);
+    settings.sampler = SamplerKind::Sobol;
+    const std::vector<float> first = renderScene(scene, settings).rgb;
+    settings.maxPathsPerWave = 3 * kSize * kSize; // other wave sizes: whole samples still
+    const std::vector<float> second = renderScene(scene, settings).rgb;
+    ASSERT_EQ(first.size(), second.size());
+    EXPECT_EQ(std::memcmp(first.data(), second.data(), first.size() * sizeof(float)), 0);
+    settings.seed = 4;
+    EXPECT_NE(renderScene(scene, settings).rgb, first);
+}
+
+TEST(LightTracing, RefusesWhatItCannotTrace) {
+    const Scene cornell = laboratoryScene("cornell_box");
+    RenderSettings settings = settingsFor(Integrator::Light, 4, 1);
+    settings.megakernel = true;
+    EXPECT_THROW(renderScene(cornell, settings), UsageError);
+    settings = settingsFor(Integrator::Light, 4, 1);
+    settings.pixelList = true;
+    EXPECT_THROW(renderScene(cornell, settings), UsageError);
+    settings = settingsFor(Integrator::Light, 4, 1);
+    settings.guiding = true;
+    EXPECT_THROW(renderScene(cornell, settings), UsageError);
+    Scene orthographic = cornell;
+    orthographic.camera.orthoHalfHeight = 1.0f;
+    EXPECT_THROW(renderScene(orthographic, settingsFor(Integrator::Light, 4, 1)), UsageError);
+}
+
+} // namespace
+} // namespace wf::test
