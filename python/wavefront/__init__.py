@@ -90,14 +90,19 @@ class Renderer:
     guiding: "auto" (path guiding where the measured rule of docs/guiding.md predicts a gain),
     "on" or "off", as the CLI's --guiding: the default of every render(), which may override it
     (render(..., guiding="on")); each result's stats say what auto decided (guidingDecision).
+    integrator: "path" (the path tracer) or "light" (light tracing), as the CLI's --integrator:
+    the default of every render(), which may override it (render(..., integrator="path")).
     Raises DeviceError when there is no usable device.
     """
 
     def __init__(self, device=None, validation=False, quiet=True, traversal="auto",
-                 guiding="auto"):
+                 guiding="auto", integrator="path"):
         if guiding not in ("auto", "on", "off"):
             raise ValueError(f"guiding is 'auto', 'on' or 'off', not {guiding!r}")
         self._guiding = guiding
+        if integrator not in ("path", "light"):
+            raise ValueError(f"integrator is 'path' or 'light', not {integrator!r}")
+        self._integrator = integrator
         if device is not None and (isinstance(device, bool) or not isinstance(device, int)):
             raise ValueError(f"device is a device index or None, not {device!r}")
         if traversal not in ("auto", "bvh", "rt"):
@@ -156,16 +161,19 @@ class Renderer:
                triangle_sampling=None, sphere_sampling=None, min_throughput=None, clamp=None,
                texture_filter=None, shade_split=None, no_randomize=False, spp_offset=None,
                spp_total=None, aov=(), time_limit=None, target_error=None, guiding=None,
-               error_replicates=None, progress=None):
+               error_replicates=None, integrator=None, progress=None):
         """Renders `scene` and returns a RenderOutput. None means the CLI's default (spp 64,
         width 512, height from the camera's aspect, seed 0, sampler "sobol", max_depth 16,
         light_sampling "mis", ...). aov: names among albedo, normal, depth, variance, samples.
         progress(spp_done, spp_total, seconds) is called after each wave (with target_error,
         after each round). Ctrl-C ends the render after the pass in flight and raises
-        KeyboardInterrupt; the renderer stays usable. guiding: None takes the Renderer's."""
+        KeyboardInterrupt; the renderer stays usable. guiding and integrator: None takes the
+        Renderer's."""
         values = dict(locals())
         if values["guiding"] is None:
             values["guiding"] = self._guiding
+        if values["integrator"] is None:
+            values["integrator"] = self._integrator
         flags = self._flags(values)
         return RenderOutput(_options(self._core.render, self._scene(scene), flags, progress))
 
@@ -186,6 +194,8 @@ class Renderer:
         values = {**self.render.__kwdefaults__, **options, "spp": spp}
         if values["guiding"] is None:
             values["guiding"] = self._guiding
+        if values["integrator"] is None:
+            values["integrator"] = self._integrator
         flags = self._flags(values)
         loaded = self._scene(scene)
         session = _options(self._core.begin, loaded, flags)

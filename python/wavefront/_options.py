@@ -12,7 +12,7 @@ RENDER_OPTIONS = (
     "spp", "time_limit", "target_error", "aov", "width", "height", "max_depth", "rr_depth",
     "light_sampling", "light_selection", "triangle_sampling", "sphere_sampling",
     "min_throughput", "clamp", "seed", "sampler", "texture_filter", "shade_split",
-    "no_randomize", "spp_offset", "spp_total", "guiding", "error_replicates",
+    "no_randomize", "spp_offset", "spp_total", "guiding", "error_replicates", "integrator",
 )
 # load()'s options: those that change the scene rather than a render.
 LOAD_OPTIONS = ("camera", "env", "instancing", "aperture", "focus_distance", "time", "frame",

@@ -215,7 +215,9 @@ int runConvergeCommand(const std::vector<std::string>& args) {
         settings.seed = 1000003; // apart from the measured seeds 1..N
         info.reference = (fs::path(*dir) / "reference.exr").string();
         info.referenceMethod = std::string(samplerName(settings.sampler)) + "+" +
-                               lightSamplingName(settings.lightSampling);
+                               (settings.integrator == Integrator::Path
+                                    ? lightSamplingName(settings.lightSampling)
+                                    : integratorName(settings.integrator));
         info.referenceSpp = referenceSpp;
         std::fprintf(stderr, "wavefront: no --reference: rendering one with Wavefront itself, "
                      "%s at %u spp (seed %u), saved as %s\n", info.referenceMethod.c_str(),

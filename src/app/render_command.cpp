@@ -342,6 +342,23 @@ int runRenderCommand(const std::vector<std::string>& args) {
     statsContext.extraFields.push_back({"loadSeconds", jsonNumber(summary.loadSeconds)});
     statsContext.extraFields.push_back(traversalStatsField(renderer));
     statsContext.extraFields.push_back({"guidingDecision", jsonQuoted(guideDecision.reason)});
+    if (settings.integrator != Integrator::Path) {
+        // Light subpaths reuse the camera paths' state; what they add is the light film.
+        const uint64_t filmBytesPerPath = 24;
+        statsContext.extraFields.push_back(
+            {"integrator", jsonQuoted(integratorName(settings.integrator))});
+        statsContext.extraFields.push_back(
+            {"lightSubpathMemory",
+             "{\"bytesPerPath\": " + std::to_string(filmBytesPerPath) +
+                 ", \"bytesPerWave\": " +
+                 std::to_string(filmBytesPerPath * renderer.pathCapacity()) + "}"});
+        if (verbose)
+            std::fprintf(stderr, "wavefront: light tracing: light subpaths reuse the path state; "
+                                 "light film %llu bytes per path, %.1f MiB per wave of %u paths\n",
+                         (unsigned long long)filmBytesPerPath,
+                         double(filmBytesPerPath) * renderer.pathCapacity() / 1048576.0,
+                         renderer.pathCapacity());
+    }
     if (adaptive) {
         renderAdaptively(renderer, settings, targetError, run, verbose,
                          {*output, parsed.value("--json"), aovs, quiet}, statsContext);
@@ -414,6 +431,16 @@ int runRenderCommand(const std::vector<std::string>& args) {
                            {"guidingIterations", std::to_string(stats.guideIterations.size())},
                            {"guidingImageSpp", std::to_string(stats.guideFinalSamples)}};
         reportGuiding(verbose, stats, statsContext);
+    }
+    if (settings.integrator != Integrator::Path) {
+        // One light subpath per camera sample: both counts, so that a reader can normalise.
+        const uint64_t samples = uint64_t(settings.width) * settings.height * finished.spp;
+        guideAttributes.insert(guideAttributes.end(),
+                               {{"integrator", integratorName(settings.integrator)},
+                                {"cameraSamples", std::to_string(samples)},
+                                {"lightPaths", std::to_string(samples)}});
+        statsContext.extraFields.push_back({"cameraSamples", std::to_string(samples)});
+        statsContext.extraFields.push_back({"lightPaths", std::to_string(samples)});
     }
     writeRenderPart(*output, finished, guideAttributes, true,
                     aovs.empty() ? std::vector<ExrChannel>{}

@@ -141,7 +141,10 @@ std::string renderSettingsKey(const RenderSettings& s, const ParsedArgs& parsed)
     std::snprintf(numbers, sizeof numbers,
                   "%ux%u depth %u rr %u min-throughput %g clamp %g", s.width, s.height,
                   s.maxDepth, s.rrDepth, s.minThroughput, s.clampRadiance);
-    return std::string(numbers) + " " + lightSamplingName(s.lightSampling) + " " +
+    return std::string(numbers) + " " +
+           (s.integrator == Integrator::Path ? "" : std::string("integrator ") +
+                                                        integratorName(s.integrator) + " ") +
+           lightSamplingName(s.lightSampling) + " " +
            lightSelectionName(s.lightSelection) + " triangle " +
            (s.triangleSolidAngle ? "solid-angle" : "area") + " sphere " +
            (s.sphereSolidAngle ? "solid-angle" : "area") + " " + samplerName(s.sampler) +

@@ -13,6 +13,7 @@ namespace wf {
 void ConvergenceMethod::applyTo(RenderSettings& settings) const {
     settings.sampler = sampler;
     settings.lightSampling = lightSampling;
+    settings.integrator = integrator;
     settings.randomizeSamples = randomize;
     settings.triangleSolidAngle = triangleSolidAngle;
     settings.sphereSolidAngle = sphereSolidAngle;
@@ -26,7 +27,7 @@ std::string methodWords() {
     std::string words;
     for (const std::string& name : samplerNames())
         words += name + ", ";
-    return words + "bsdf, nee, mis, uniform, power, tree, no-randomize, triangle-area, "
+    return words + "bsdf, nee, mis, light, uniform, power, tree, no-randomize, triangle-area, "
                    "sphere-area, adaptive, guided, replicates";
 }
 
@@ -42,7 +43,9 @@ ConvergenceMethod parseMethod(const std::string& text) {
                     return true;
             return false;
         }();
-        const bool isEstimator = word == "bsdf" || word == "nee" || word == "mis";
+        // The integrator replaces the path tracer's estimator: one word of the two.
+        const bool isEstimator =
+            word == "bsdf" || word == "nee" || word == "mis" || word == "light";
         const bool isSelection = word == "uniform" || word == "power" || word == "tree";
         if (!seen.insert(word).second || (isSampler && samplerSet) ||
             (isEstimator && estimatorSet) || (isSelection && selectionSet))
@@ -51,6 +54,9 @@ ConvergenceMethod parseMethod(const std::string& text) {
         if (isSampler) {
             method.sampler = parseSampler(word, "--methods");
             samplerSet = true;
+        } else if (word == "light") {
+            method.integrator = Integrator::Light;
+            estimatorSet = true;
         } else if (isEstimator) {
             method.lightSampling = parseLightSampling(word);
             estimatorSet = true;
@@ -80,8 +86,13 @@ ConvergenceMethod parseMethod(const std::string& text) {
     if (method.adaptive && samplerIsFiniteSet(method.sampler))
         throw UsageError("--methods: adaptive gives pixels parts of a finite set ('" + text +
                          "'); pick sobol, halton, independent or bluenoise");
+    if (method.integrator != Integrator::Path && (method.adaptive || method.guided))
+        throw UsageError("--methods: light tracing takes neither adaptive nor guided ('" + text +
+                         "')");
     method.name = std::string(samplerName(method.sampler)) + "+" +
-                  lightSamplingName(method.lightSampling) +
+                  (method.integrator == Integrator::Light
+                       ? integratorName(method.integrator)
+                       : lightSamplingName(method.lightSampling)) +
                   (method.randomize ? "" : "+no-randomize") +
                   (method.triangleSolidAngle ? "" : "+triangle-area") +
                   (method.sphereSolidAngle ? "" : "+sphere-area") +

@@ -34,13 +34,15 @@ struct ConvergenceMethod {
     // `replicates`: two error replicates (--error-replicates 2), so that the recorded estimate
     // is calibrated for a correlated sampler; `adaptive` takes them anyway, as --target-error.
     bool replicates = false;
+    // `light`: light tracing (--integrator light) in place of the path tracer's estimator.
+    Integrator integrator = Integrator::Path;
 
     void applyTo(RenderSettings& settings) const;
 };
 
-// A method from words joined by '+', in any order: a sampler name, bsdf|nee|mis, a light
-// selection uniform|power|tree, and the switches no-randomize, triangle-area, sphere-area,
-// adaptive, guided, replicates. Unnamed parts take render's defaults.
+// A method from words joined by '+', in any order: a sampler name, bsdf|nee|mis or the
+// integrator light, a light selection uniform|power|tree, and the switches no-randomize,
+// triangle-area, sphere-area, adaptive, guided, replicates. Unnamed parts take render's defaults.
 // UsageError on an unknown or repeated word.
 ConvergenceMethod parseMethod(const std::string& text);
 // Comma-separated methods; UsageError if empty or if two name the same method.

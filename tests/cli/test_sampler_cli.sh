@@ -94,4 +94,24 @@ check "converge: bad crop" 2 "$wavefront" converge "$cornell" -o "$work/c3" --wi
     --crop 4,4,8,8
 expect "bad crop: one line" one_line_error
 
+# --integrator light: an image, its counts in the EXR and JSON, one-line refusals.
+check "render --integrator light" 0 "$wavefront" render "$cornell" -o "$work/light.exr" \
+    --spp 4 --width 8 --max-depth 4 --integrator light --json "$work/light.json" -q
+expect "light: integrator in the EXR header" grep -qa "lightPaths" "$work/light.exr"
+expect "light: both counts in the JSON" json_has "$work/light.json" \
+    "d['integrator'] == 'light' and d['lightPaths'] == d['cameraSamples'] == 4 * 8 * 8"
+check "light with --target-error" 2 "$wavefront" render "$cornell" -o "$work/x.exr" \
+    --integrator light --target-error 0.01 --width 8
+expect "light with --target-error: one line" one_line_error
+check "unknown integrator" 2 "$wavefront" render "$cornell" -o "$work/x.exr" --integrator bpt
+expect "unknown integrator: one line" one_line_error
+check "converge light" 0 "$wavefront" converge "$cornell" -o "$work/c5" \
+    --reference "$conv/reference.exr" --time 0.01 --max-spp 4 --methods sobol,sobol+light \
+    --max-depth 3 --no-plot -q
+expect "converge light: a method of its own" json_has "$work/c5/convergence.json" \
+    "[(m['name'], m['integrator']) for m in d['methods']] == [('sobol+mis', 'path'), ('sobol+light', 'light')]"
+check "converge: light and nee" 2 "$wavefront" converge "$cornell" -o "$work/c3" \
+    --methods sobol+light+nee
+expect "light and nee: one line" one_line_error
+
 finish

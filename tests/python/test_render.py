@@ -206,3 +206,19 @@ def test_material_variants(renderer, tmp_path):
     assert sums[2][1] == sums[2][2] == 0 < sums[2][0]  # red only
     with pytest.raises(wf.SceneError, match="no such variant"):
         renderer.load(path, variant="green")
+
+
+def test_light_tracing_from_the_renderer_or_the_call(renderer, cornell):
+    path = renderer.render(cornell, width=16, spp=64, max_depth=4, seed=3)
+    light = renderer.render(cornell, width=16, spp=64, max_depth=4, seed=3, integrator="light")
+    # Another estimator of the same image: equal means within a few per cent, unequal pixels.
+    assert abs(light.image.mean() / path.image.mean() - 1.0) < 0.05
+    assert not np.array_equal(light.image, path.image)
+    assert np.isfinite(light.image).all()
+    with wf.Renderer(integrator="light") as own:
+        again = own.render(own.load(CORNELL), width=16, spp=64, max_depth=4, seed=3)
+        assert np.array_equal(again.image, light.image)  # same seed, same image
+        with pytest.raises(ValueError, match="target_error"):
+            own.render(own.load(CORNELL), width=16, target_error=0.01)
+    with pytest.raises(ValueError, match="integrator"):
+        wf.Renderer(integrator="bdpt")

@@ -44,7 +44,7 @@ std::string jsonArray(const std::vector<double>& values) {
 void writeConvergenceCsv(const std::string& path, const std::vector<MethodRun>& runs) {
     std::ostringstream csv;
     csv << "method,sampler,light_sampling,seed_index,spp,gpu_seconds,wall_seconds,relmse,mse,"
-           "bias,estimated_relmse,estimate_reliable,estimate_upper_bound\n";
+           "bias,estimated_relmse,estimate_reliable,estimate_upper_bound,integrator\n";
     for (const MethodRun& run : runs) {
         for (size_t s = 0; s < run.perSeed.size(); ++s) {
             for (const Checkpoint& c : run.perSeed[s]) {
@@ -55,7 +55,7 @@ void writeConvergenceCsv(const std::string& path, const std::vector<MethodRun>& 
                     << ',' << format("%.6g", c.error.bias) << ','
                     << format("%.6g", c.estimate.relMse) << ','
                     << (c.estimate.reliable ? 1 : 0) << ',' << (c.estimate.upperBound ? 1 : 0)
-                    << '\n';
+                    << ',' << integratorName(run.method.integrator) << '\n';
             }
         }
     }
@@ -130,7 +130,8 @@ void writeConvergenceJson(const std::string& path, const ConvergenceInfo& info,
         }
         j << "    {\"name\": " << jsonQuoted(s.name) << ", \"sampler\": "
           << jsonQuoted(samplerName(runs[m].method.sampler)) << ", \"lightSampling\": "
-          << jsonQuoted(lightSamplingName(runs[m].method.lightSampling))
+          << jsonQuoted(lightSamplingName(runs[m].method.lightSampling)) << ", \"integrator\": "
+          << jsonQuoted(integratorName(runs[m].method.integrator))
           << ",\n     \"spp\": " << jsonArray(spp) << ",\n     \"gpuSeconds\": " << jsonArray(gpu)
           << ",\n     \"wallSeconds\": " << jsonArray(wall) << ",\n     \"relMse\": "
           << jsonArray(rel) << ",\n     \"relMseQ1\": " << jsonArray(low)
