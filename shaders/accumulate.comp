@@ -20,7 +20,7 @@ layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "guiding/guide_bindings.glsl"
 #include "guiding/guide_path.glsl"
 #endif
-#if WF_INTEGRATOR == WF_INTEGRATOR_LIGHT
+#if WF_INTEGRATOR != WF_INTEGRATOR_PATH && WF_HAS_EMITTERS
 #include "bidir/light_film.glsl"
 #endif
 
@@ -54,7 +54,7 @@ void main() {
     for (uint s = 0u; s < pass.samplesPerPixel; ++s) {
         uint path = local + s * pass.wavePixels;
         vec3 value = radianceAt(path).rgb;
-#if WF_INTEGRATOR == WF_INTEGRATOR_LIGHT
+#if WF_INTEGRATOR != WF_INTEGRATOR_PATH && WF_HAS_EMITTERS
         value += lightFilmTake(path); // waves of light tracing cover the image: path = entry
 #endif
         bool finite = isFiniteBits(value);

@@ -1,5 +1,5 @@
 #version 460
-// light_raygen (--integrator light): the first ray of one light subpath per path of the wave,
+// light_raygen (--integrator light, bdpt): the first ray of one light subpath per path of the wave,
 // after the camera's pass has found what each camera ray sees.
 // In: params, the emitter table and lights, push constants (the wave: path p traces the light
 // subpath of p's pixel and sample index, bidir/light_subpath.glsl).
@@ -9,8 +9,8 @@
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "wave/bindings.glsl"
-#if !WF_HAS_EMITTERS || WF_INTEGRATOR != WF_INTEGRATOR_LIGHT
-#error "light_raygen exists only for light tracing in scenes with emitters"
+#if !WF_HAS_EMITTERS || WF_INTEGRATOR == WF_INTEGRATOR_PATH
+#error "light_raygen exists only for light subpaths in scenes with emitters"
 #endif
 #include "wave/queue_append.glsl"
 #include "traversal/geometry.h"
@@ -21,6 +21,9 @@ layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "surface/surface.glsl"
 #include "lights/lights.glsl"
 #include "bidir/light_subpath.glsl"
+#if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
+#include "bidir/bdpt_emitters.glsl"
+#endif
 #include "wave/wave_paths.glsl"
 
 layout(push_constant) uniform Push { PassConstants pass; };
@@ -31,14 +34,19 @@ void main() {
     uint path = gl_GlobalInvocationID.x;
     bool emits = false;
     if (path < pass.pathCount) {
-        vec3 origin, direction, beta;
-        emits = emitLightRay(wavePathPixel(pass, path), wavePathSample(pass, path), origin,
-                             direction, beta);
+        EmittedRay ray;
+        emits = emitLightRay(wavePathPixel(pass, path), wavePathSample(pass, path), ray);
         if (emits) {
-            rayOrigin[path] = wfPack(vec4(origin, 0.0));
-            rayDirection[path] = wfPack(vec4(direction, 0.0));
-            throughput[path] = wfPack(vec4(beta, 1.0));
+            rayOrigin[path] = wfPack(vec4(ray.origin, 0.0));
+            rayDirection[path] = wfPack(vec4(ray.direction, 0.0));
+            throughput[path] = wfPack(vec4(ray.beta, 1.0));
+#if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
+            bdptStartLightSubpath(path, ray);
+#endif
         }
+#if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
+        lightDepths[path] = 0u;
+#endif
     }
     // In uniform control flow: every lane of the subgroup takes part.
     uint slot = appendRay(emits);

@@ -1,5 +1,5 @@
 #version 460
-// light_shade (--integrator light): one vertex of a light subpath per ray in the current queue.
+// light_shade (--integrator light, bdpt): one vertex of a light subpath per ray in the current queue.
 // The vertex connects to the camera (a splat, queued for the light_splat pass's visibility
 // test) unless its BSDF is Dirac, and continues by sampling the adjoint BSDF
 // (bidir/adjoint_bsdf.h) with Russian roulette. Light subpaths collect no emission: paths that
@@ -12,7 +12,7 @@
 #extension GL_GOOGLE_include_directive : require
 layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "wave/bindings.glsl"
-#if !WF_HAS_EMITTERS || WF_INTEGRATOR != WF_INTEGRATOR_LIGHT
+#if !WF_HAS_EMITTERS || WF_INTEGRATOR == WF_INTEGRATOR_PATH
 #error "light_shade exists only for light tracing in scenes with emitters"
 #endif
 #include "wave/queue_append.glsl"
@@ -26,6 +26,9 @@ layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "wave/path_vertex.glsl"
 #include "bidir/adjoint_bsdf.h"
 #include "bidir/light_subpath.glsl"
+#if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
+#include "bidir/bdpt_emitters.glsl"
+#endif
 #include "wave/wave_paths.glsl"
 
 layout(push_constant) uniform Push { PassConstants pass; };
@@ -43,6 +46,10 @@ struct LightVertex {
     vec3 origin;
     vec3 direction;   // the way light travels
     vec3 beta;        // emitted cos / pdfs x the adjoint BSDF's sample weights so far
+#if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
+    uint path;
+    vec4 mis;         // pathMis: the subpath's MIS quantities (bdpt_state.glsl), in and out
+#endif
     // Out.
     bool continues;
     bool connects;
@@ -83,6 +90,24 @@ void shadeLightVertex(inout LightVertex v) {
 #else
     bool hasNonDelta = bsdfHasNonDelta(bsdf);
 #endif
+#if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
+    VcmMisConfig cfg = bdptMisConfig();
+    float cosHit = abs(dot(toLight, surface.ng));
+    VcmSubpathMis mis;
+    if (v.depth == 0u) {
+        mis = bdptLightAtFirstHit(cfg, v.mis, surface.p, v.direction, t, cosHit);
+    } else {
+        mis = bdptMis(v.mis);
+        vcmOnHit(cfg, mis, t * t, cosHit);
+    }
+    // Kept for the camera subpath's connections where one can still reach it: a camera
+    // vertex at bounce 0 makes a path of depth + 3 segments.
+    if (v.depth + 3u <= params.maxDepth) {
+        bdptStoreLightVertex(v.path, v.depth, v.hit, toLight, hasNonDelta ? v.beta : vec3(0.0),
+                             mis);
+        lightDepths[v.path] = v.depth + 1u;
+    }
+#endif
     // The frame as path_vertex.glsl builds it, from the side the ray arrived on.
     bool flip = surface.transmission > 0.0 && !surface.frontFace;
     vec3 n = flip ? -surface.ns : surface.ns;
@@ -110,6 +135,17 @@ void shadeLightVertex(inout LightVertex v) {
                      (abs(toCameraLocal.z) *
                       adjointShadingFactor(surface.ns, surface.ng, toLight, c.toCamera) *
                       c.importance);
+#if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
+        // The strategy t = 1 among all that make this path (vcm_mis.h).
+#if WF_BSDF_LAYERS
+        float reversePdf = layeredPdf(bsdf, layers, toCameraLocal, toLightLocal);
+#else
+        float reversePdf = bsdfPdf(bsdf, toCameraLocal, toLightLocal);
+#endif
+        float cameraPdfA = float(params.pixelCount) * c.directionPdf *
+                           abs(dot(c.toCamera, surface.ng)) / c.dist2;
+        value *= vcmWeightCameraConnect(cfg, mis, cameraPdfA, reversePdf);
+#endif
         value = clampContribution(value);
         if (any(greaterThan(value, vec3(0.0))) || any(isnan(value))) {
             v.connects = true;
@@ -135,6 +171,18 @@ void shadeLightVertex(inout LightVertex v) {
         return;
 #endif
     vec3 wi = normalize(tangent * s.wi.x + bitangent * s.wi.y + n * s.wi.z);
+#if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
+    float scatterReversePdf = s.pdf; // a Dirac bounce: the same lobe both ways
+    if (!s.isDelta) {
+#if WF_BSDF_LAYERS
+        scatterReversePdf = layeredPdf(bsdf, layers, s.wi, toLightLocal);
+#else
+        scatterReversePdf = bsdfPdf(bsdf, s.wi, toLightLocal);
+#endif
+    }
+    vcmOnScatter(cfg, mis, abs(dot(wi, surface.ng)), s.pdf, scatterReversePdf, s.isDelta);
+    v.mis = bdptStored(mis);
+#endif
     vec3 beta = v.beta * s.weight *
                 adjointThroughputFactor(surface.ns, surface.ng, toLight, wi, s.eta);
     if (v.depth >= params.rrDepth) {
@@ -168,11 +216,18 @@ void main() {
         v.origin = rayOriginAt(path).xyz;
         v.direction = rayDirectionAt(path).xyz;
         v.beta = throughputAt(path).rgb;
+#if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
+        v.path = path;
+        v.mis = pathMis[path];
+#endif
         shadeLightVertex(v);
         if (v.continues) {
             rayOrigin[path] = wfPack(vec4(v.origin, 0.0));
             rayDirection[path] = wfPack(vec4(v.direction, 0.0));
             throughput[path] = wfPack(vec4(v.beta, 1.0));
+#if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
+            pathMis[path] = v.mis;
+#endif
         }
     }
 

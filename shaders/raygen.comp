@@ -12,6 +12,9 @@ layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "wave/wave_paths.glsl"
 #include "wave/camera_ray.glsl"
 #include "surface/ray_cones.glsl"
+#if WF_INTEGRATOR == WF_INTEGRATOR_BDPT && WF_HAS_EMITTERS
+#include "bidir/bdpt_state.glsl"
+#endif
 #if WF_GUIDING
 #include "guiding/guide_bindings.glsl"
 #include "guiding/guide_path.glsl"
@@ -35,6 +38,12 @@ void main() {
 #endif
 #if WF_GUIDING
     guideStartPath(path);
+#endif
+#if WF_INTEGRATOR == WF_INTEGRATOR_BDPT && WF_HAS_EMITTERS
+    pathMis[path] = bdptStored(bdptStartCamera(origin, direction));
+    // After the light subpaths, whose passes left the queue's arguments: the queue pass turns
+    // this count into the camera rays' (wave_recorder.cpp).
+    atomicAdd(counters.rayCount, 1u);
 #endif
 #if WF_RAY_CONES
     rayCone[path] = cameraCone();

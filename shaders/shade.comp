@@ -57,6 +57,10 @@ void main() {
         v.path = path;
         guideTakeRadianceBefore(path, radianceAt(path).rgb);
 #endif
+#if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
+        v.path = path;
+        v.mis = pathMis[path];
+#endif
         v.hit = hitAt(index);
         vec4 origin = rayOriginAt(path);
         v.origin = origin.xyz;
@@ -92,8 +96,16 @@ void main() {
 #if WF_RAY_CONES
             rayCone[path] = v.cone;
 #endif
+#if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
+            pathMis[path] = v.mis;
+#endif
         }
     }
+#if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
+    // Not a surface: nothing to connect (shadePathVertex sets it only at surfaces).
+    if (!inQueue || v.hit.w == WF_MISS || (v.hit.w & WF_SPHERE_HIT) != 0u)
+        bdptVertex.connectable = false;
+#endif
 
     // Appends happen in uniform control flow: every lane of the subgroup takes part.
     uint raySlot = appendRay(v.continues);
@@ -108,6 +120,22 @@ void main() {
         shadowDirection[shadowSlot] =
             wfPack(vec4(v.shadowSegment, float(v.shadowSphere + 1u)));
         shadowRadiance[shadowSlot] = wfPack(vec4(v.shadowRadiance, 0.0));
+    }
+#endif
+#if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
+    // The connections to the path slot's light vertices, one light bounce at a time, so that
+    // every lane takes part in each append; light_splat tests them and adds them to the
+    // path's light film entry (several per path: its adds are atomic).
+    for (uint d = 0u; d + 3u <= params.maxDepth; ++d) {
+        vec3 origin, segment, value;
+        bool connects = inQueue && bdptConnect(bdptVertex, path, pass.depth, d, origin, segment,
+                                               value);
+        uint slot = appendShadow(connects);
+        if (connects) {
+            shadowOrigin[slot] = wfPack(uvec4(floatBitsToUint(origin), path));
+            shadowDirection[slot] = wfPack(vec4(segment, 0.0));
+            shadowRadiance[slot] = wfPack(vec4(value, 0.0));
+        }
     }
 #endif
 }

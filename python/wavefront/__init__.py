@@ -90,7 +90,8 @@ class Renderer:
     guiding: "auto" (path guiding where the measured rule of docs/guiding.md predicts a gain),
     "on" or "off", as the CLI's --guiding: the default of every render(), which may override it
     (render(..., guiding="on")); each result's stats say what auto decided (guidingDecision).
-    integrator: "path" (the path tracer) or "light" (light tracing), as the CLI's --integrator:
+    integrator: "path" (the path tracer), "light" (light tracing) or "bdpt" (bidirectional path
+    tracing), as the CLI's --integrator:
     the default of every render(), which may override it (render(..., integrator="path")).
     Raises DeviceError when there is no usable device.
     """
@@ -100,8 +101,8 @@ class Renderer:
         if guiding not in ("auto", "on", "off"):
             raise ValueError(f"guiding is 'auto', 'on' or 'off', not {guiding!r}")
         self._guiding = guiding
-        if integrator not in ("path", "light"):
-            raise ValueError(f"integrator is 'path' or 'light', not {integrator!r}")
+        if integrator not in ("path", "light", "bdpt"):
+            raise ValueError(f"integrator is 'path', 'light' or 'bdpt', not {integrator!r}")
         self._integrator = integrator
         if device is not None and (isinstance(device, bool) or not isinstance(device, int)):
             raise ValueError(f"device is a device index or None, not {device!r}")

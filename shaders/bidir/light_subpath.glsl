@@ -39,15 +39,26 @@ vec2 lightVertexSample2D(uint pixel, uint sampleIndex, uint depth, uint offset) 
                     params.seed);
 }
 
-// The first ray of the light subpath of (pixel, sampleIndex): its origin (off the light's
-// surface), direction and throughput emitted cos / (pmf pdfA pdfW). False when it carries
-// nothing (no light, a grazing direction, a dark texel).
-bool emitLightRay(uint pixel, uint sampleIndex, out vec3 origin, out vec3 direction,
-                  out vec3 beta) {
-    origin = vec3(0.0);
-    direction = vec3(0.0, 0.0, 1.0);
-    beta = vec3(0.0);
+// The first ray of a light subpath, and what BDPT's MIS needs of its start.
+struct EmittedRay {
+    vec3 origin;        // off the light's surface
+    vec3 direction;     // the way light travels
+    vec3 beta;          // emitted cos / (pick pdfA pdfW)
+    uint emitter;       // the emitter-table entry it left
+    float emissionPdfW; // pick pdfA pdfW (infinite lights: the scene disk's pdfA)
+    float cosAtLight;   // at the light point; 1 for points and infinite lights
+};
+
+// The first ray of the light subpath of (pixel, sampleIndex). False when it carries nothing
+// (no light, a grazing direction, a dark texel).
+bool emitLightRay(uint pixel, uint sampleIndex, out EmittedRay ray) {
+    ray.origin = vec3(0.0);
+    ray.direction = vec3(0.0, 0.0, 1.0);
+    ray.beta = vec3(0.0);
+    ray.emissionPdfW = 0.0;
+    ray.cosAtLight = 1.0;
     uint emitter = chooseEmitter(lightEmissionSample1D(pixel, sampleIndex, WF_LIGHT_DIM_CHOICE));
+    ray.emitter = emitter;
     float pmf = emitterAt(emitter).pmf;
     if (!(pmf > 0.0))
         return false;
@@ -60,6 +71,7 @@ bool emitLightRay(uint pixel, uint sampleIndex, out vec3 origin, out vec3 direct
     e.pdfA = 0.0;
     e.pdfW = 0.0;
     vec3 originError = vec3(0.0);
+    bool surfacePoint = false; // a triangle's or a sphere's, with a cosine there
 #if WF_HAS_TRIANGLE_EMITTERS
     if (kind == WF_EMITTER_TRIANGLE) {
         Triangle tri = triangleAt(index);
@@ -68,6 +80,7 @@ bool emitLightRay(uint pixel, uint sampleIndex, out vec3 origin, out vec3 direct
         e = emitTriangle(tri.p0, tri.p1, tri.p2, surfaceEmission(index, material, b.x, b.y),
                          (material.flags & WF_MATERIAL_DOUBLE_SIDED) != 0u, uPoint, uDirection);
         originError = triangleSpawnError(tri.p0, tri.p1, tri.p2, b.x, b.y);
+        surfacePoint = true;
     }
 #endif
 #if WF_HAS_ENVIRONMENT
@@ -88,6 +101,7 @@ bool emitLightRay(uint pixel, uint sampleIndex, out vec3 origin, out vec3 direct
             e = emitSphere(light.position, light.radius, sphereRadiance(light), uPoint,
                            uDirection);
             originError = spherePointError(light);
+            surfacePoint = true;
 #endif
         } else if (light.type == WF_LIGHT_POINT) {
             e = emitPoint(light.position, light.intensity, uDirection);
@@ -102,13 +116,15 @@ bool emitLightRay(uint pixel, uint sampleIndex, out vec3 origin, out vec3 direct
 #endif
     if (!(e.pdfA > 0.0) || !(e.pdfW > 0.0))
         return false;
-    beta = emissionThroughput(e) / pmf;
-    direction = e.direction;
+    ray.beta = emissionThroughput(e) / pmf;
+    ray.direction = e.direction;
+    ray.emissionPdfW = pmf * e.pdfA * e.pdfW;
+    ray.cosAtLight = surfacePoint ? abs(dot(e.normal, e.direction)) : 1.0;
     // Points and the scene's disk lie on no surface; the others leave theirs by the ray offset.
-    origin = any(greaterThan(originError, vec3(0.0)))
-                 ? offsetRayOrigin(e.origin, originError, e.normal, e.direction)
-                 : e.origin;
-    return any(greaterThan(beta, vec3(0.0)));
+    ray.origin = any(greaterThan(originError, vec3(0.0)))
+                     ? offsetRayOrigin(e.origin, originError, e.normal, e.direction)
+                     : e.origin;
+    return any(greaterThan(ray.beta, vec3(0.0)));
 }
 
 CameraGeometry sceneCamera() {
@@ -141,7 +157,9 @@ struct CameraConnection {
     vec3 lensPoint;
     vec3 toCamera; // unit, from p towards the lens point
     uint pixel;
-    float importance; // the splat's factor for valueToCamera
+    float importance;   // the splat's factor for valueToCamera
+    float dist2;        // from p to the lens point
+    float directionPdf; // the camera's density of the ray towards p (cameraDirectionPdf)
 };
 
 bool connectToCamera(vec3 p, vec2 uLens, out CameraConnection c) {
@@ -150,6 +168,8 @@ bool connectToCamera(vec3 p, vec2 uLens, out CameraConnection c) {
     c.toCamera = vec3(0.0, 0.0, 1.0);
     c.pixel = 0u;
     c.importance = 0.0;
+    c.dist2 = 0.0;
+    c.directionPdf = 0.0;
     vec3 w;
     vec2 raster;
     float dist2;
@@ -158,6 +178,8 @@ bool connectToCamera(vec3 p, vec2 uLens, out CameraConnection c) {
     uvec2 xy = min(uvec2(raster), uvec2(params.width - 1u, params.height - 1u));
     c.pixel = xy.y * params.width + xy.x;
     c.toCamera = -w;
+    c.dist2 = dist2;
+    c.directionPdf = cameraDirectionPdf(camera, c.lensPoint, w);
     float cosCamera = dot(w, camera.forward);
     c.importance = cameraImportance(camera, c.lensPoint, w) * cosCamera /
                    (dist2 * cameraLensPdf(camera));

@@ -30,7 +30,27 @@ struct LightSample {
     vec3 segmentEnd; // where the shadow ray stops: just off the light, or outside the scene
     uint sphere;     // the sphere light it ends on, left out of the shadow test, or WF_NO_SPHERE
     bool isDelta;
+#if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
+    // What BDPT's MIS weight of the connection needs (bidir/vcm_mis.h, vcmWeightNee): the
+    // density of a light subpath emitting this point and direction (pick included), the
+    // cosine at the light point (1 for points and infinite lights), and the connection's
+    // solid-angle density for the weight (pdf, but pick x distance^2 for a point or spot
+    // light, whose position is a Dirac in area measure).
+    float emissionPdfW;
+    float cosAtLight;
+    float misPdfW;
+#endif
 };
+
+// Sets the BDPT fields of s (nothing without BDPT).
+void setEmissionDensity(inout LightSample s, float emissionPdfW, float cosAtLight,
+                        float misPdfW) {
+#if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
+    s.emissionPdfW = emissionPdfW;
+    s.cosAtLight = cosAtLight;
+    s.misPdfW = misPdfW;
+#endif
+}
 
 uint chooseEmitter(float u) {
     float scaled = u * float(params.emitterCount);
@@ -81,6 +101,7 @@ LightSample noLight(vec3 p) {
     s.segmentEnd = p;
     s.sphere = WF_NO_SPHERE;
     s.isDelta = false;
+    setEmissionDensity(s, 0.0, 1.0, 0.0);
     return s;
 }
 
@@ -100,6 +121,15 @@ float triangleLightPdf(float pmf, Triangle tri, vec3 from, float t, float cosLig
 #endif
     float area = 0.5 * length(cross(tri.p1 - tri.p0, tri.p2 - tri.p0));
     return area > 0.0 && cosLight > 0.0 ? pmf * t * t / (area * cosLight) : 0.0;
+}
+
+// The density of a light subpath leaving the triangle at a point, at cosLight to its normal:
+// pick x 1 / area x cos / pi, halved for a double-sided emitter (light_emission.h's
+// emitTriangle).
+float triangleEmissionPdfW(float pmf, Triangle tri, Material material, float cosLight) {
+    float area = 0.5 * length(cross(tri.p1 - tri.p0, tri.p2 - tri.p0));
+    float sides = (material.flags & WF_MATERIAL_DOUBLE_SIDED) != 0u ? 0.5 : 1.0;
+    return area > 0.0 ? pmf * sides * abs(cosLight) * WF_INV_PI / area : 0.0;
 }
 
 // Barycentrics (b1, b2) of a point in the triangle's plane, clamped into the triangle.
@@ -158,6 +188,7 @@ LightSample sampleTriangleLight(float pmf, uint triangleIndex, vec2 u, vec3 p) {
     s.segmentEnd = offsetRayOrigin(q, qError, nl, -direction);
     s.sphere = WF_NO_SPHERE;
     s.isDelta = false;
+    setEmissionDensity(s, triangleEmissionPdfW(pmf, tri, material, cosLight), cosLight, s.pdf);
     return s;
 }
 #endif
@@ -177,6 +208,13 @@ float sphereLightPdf(float pmf, PunctualLight light, vec3 from, float t, float c
                       sphereConeOneMinusCos(light.radius, length(light.position - from)));
     float area = 4.0 * WF_PI * light.radius * light.radius;
     return cosLight > 0.0 ? pmf * t * t / (area * cosLight) : 0.0;
+}
+
+// The density of a light subpath leaving the sphere at a point, at cosLight to its normal
+// (light_emission.h's emitSphere): pick x 1 / (4 pi R^2) x cos / pi.
+float sphereEmissionPdfW(float pmf, PunctualLight light, float cosLight) {
+    float area = 4.0 * WF_PI * light.radius * light.radius;
+    return area > 0.0 ? pmf * abs(cosLight) * WF_INV_PI / area : 0.0;
 }
 
 // Error bound of a point computed as centre + radius * unit normal.
@@ -209,6 +247,7 @@ LightSample sampleSphereLight(float pmf, uint lightIndex, PunctualLight light, v
     s.segmentEnd = offsetRayOrigin(q, spherePointError(light), nl, nl);
     s.sphere = lightIndex;
     s.isDelta = false;
+    setEmissionDensity(s, sphereEmissionPdfW(pmf, light, cosLight), cosLight, s.pdf);
     return s;
 }
 #endif
@@ -223,6 +262,9 @@ LightSample sampleDeltaLight(float pmf, PunctualLight light, vec3 p) {
         s.direction = -light.direction;
         s.radiance = light.intensity; // lux: irradiance at normal incidence
         s.segmentEnd = pointOutsideScene(p, s.direction);
+        // emitDirectional: the disk's density, the direction a Dirac.
+        setEmissionDensity(s, pmf / (WF_PI * params.sceneRadius * params.sceneRadius), 1.0,
+                           pmf);
         return s;
     }
     vec3 toLight = light.position - p;
@@ -239,6 +281,11 @@ LightSample sampleDeltaLight(float pmf, PunctualLight light, vec3 p) {
         s.radiance *= x * x;
     }
     s.segmentEnd = light.position;
+    // emitPoint and emitSpot: directions uniform over the sphere or the outer cone.
+    float directionPdf = light.type == WF_LIGHT_SPOT
+                             ? 1.0 / (2.0 * WF_PI * max(1.0 - light.cosOuter, 1e-30))
+                             : 0.25 * WF_INV_PI;
+    setEmissionDensity(s, pmf * directionPdf, 1.0, pmf * distance2);
     return s;
 }
 #endif
@@ -266,6 +313,8 @@ LightSample sampleEnvironment(float uTexel, vec2 u, vec3 p) {
     s.segmentEnd = pointOutsideScene(p, s.direction);
     s.sphere = WF_NO_SPHERE;
     s.isDelta = false;
+    // emitEnvironment: the direction's density (pick included) x the disk's.
+    setEmissionDensity(s, s.pdf / (WF_PI * params.sceneRadius * params.sceneRadius), 1.0, s.pdf);
     return s.pdf > 0.0 ? s : noLight(p);
 }
 #endif

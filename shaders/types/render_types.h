@@ -46,6 +46,7 @@ namespace wf::gpu_types {
 // tracer, whose shaders stay as they were.
 #define WF_INTEGRATOR_PATH 0
 #define WF_INTEGRATOR_LIGHT 1
+#define WF_INTEGRATOR_BDPT 2
 #ifndef WF_INTEGRATOR
 #define WF_INTEGRATOR WF_INTEGRATOR_PATH
 #endif
@@ -93,6 +94,14 @@ namespace wf::gpu_types {
 // --integrator light: per (pixel, sample slot) of a wave, the light subpaths' splats as 64-bit
 // fixed point, two words (low, high) per channel (bidir/light_film.glsl).
 #define WF_BINDING_LIGHT_FILM 104
+// --integrator bdpt (bidir/bdpt_state.glsl): per path its subpath's MIS quantities and the
+// light bounces its light subpath reached; per light vertex (slot d pathCapacity + path) its
+// hit, direction to the light and throughput.
+#define WF_BINDING_PATH_MIS 105
+#define WF_BINDING_LIGHT_DEPTHS 106
+#define WF_BINDING_LIGHT_VERTEX_HITS 107
+#define WF_BINDING_LIGHT_VERTEX_DIRECTIONS 108
+#define WF_BINDING_LIGHT_VERTEX_THROUGHPUTS 109
 // WF_GUIDING (shaders/guiding/guide_bindings.glsl): the path guide's SD-tree and records.
 #define WF_BINDING_GUIDE_PARAMS 120   // GuideParams
 #define WF_BINDING_GUIDE_SPATIAL 121  // GuideSpatialNode[]

@@ -20,14 +20,18 @@
 #else
 #define WF_BSDF_LAYERS 0
 #endif
+#if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
+// --integrator bdpt: every emission, NEE and connection weighed among all strategies.
+#include "bidir/bdpt_emitters.glsl"
+#endif
 
 struct PathVertex {
     // In: where the path is.
     uint pixel;
     uint sampleIndex;
     uint depth;        // bounce index: this ray is path segment depth + 1
-#if WF_GUIDING
-    uint path;         // where its training records live
+#if WF_GUIDING || WF_INTEGRATOR == WF_INTEGRATOR_BDPT
+    uint path;         // where its training records (bdpt: light vertices) live
 #endif
     uvec4 hit;         // from intersectClosest
     // In and out: the ray, and after shading the continuation ray.
@@ -37,6 +41,9 @@ struct PathVertex {
     float previousNormal; // encodeReceiverNormal at the vertex it left (light tree MIS; 0: none)
     vec3 beta;         // throughput
     float etaScale;    // product of eta^2 over refractions, so that RR ignores radiance scaling
+#if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
+    vec4 mis;          // pathMis: the camera subpath's MIS quantities (bdpt_state.glsl)
+#endif
 #if WF_RAY_CONES
     vec2 cone;         // the ray's cone: width at its origin, spread (ray_cones.glsl)
 #endif
@@ -90,8 +97,16 @@ bool shadeLightHit(inout PathVertex v) {
 #if WF_HAS_EMITTERS && WF_LIGHT_SAMPLING != 0
         lightPdf = environmentLightPdf(v.direction);
 #endif
-        v.radiance += clampContribution(v.beta * environmentRadiance(v.direction) *
-                                        emissionWeight(v.previousPdf, lightPdf));
+        float weight = emissionWeight(v.previousPdf, lightPdf);
+#if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
+        // The emitter seen directly has no other strategy here (vcm_mis.h); the infinite
+        // light takes the camera's quantities as they are, before any hit.
+        weight = v.depth == 0u ? 1.0
+                               : vcmWeightEmitterHit(bdptMisConfig(), bdptMis(v.mis), lightPdf,
+                                                     lightPdf / (WF_PI * params.sceneRadius *
+                                                                 params.sceneRadius));
+#endif
+        v.radiance += clampContribution(v.beta * environmentRadiance(v.direction) * weight);
 #endif
         return false;
     }
@@ -108,8 +123,20 @@ bool shadeLightHit(inout PathVertex v) {
                 lightPdf = sphereLightPdf(lightPmf(light.emitter, v.origin, v.previousNormal),
                                           light, v.origin, t, cosLight);
 #endif
-            v.radiance += clampContribution(v.beta * sphereRadiance(light) *
-                                            emissionWeight(v.previousPdf, lightPdf));
+            float weight = emissionWeight(v.previousPdf, lightPdf);
+#if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
+            if (v.depth > 0u && light.emitter != WF_NO_EMITTER) {
+                VcmSubpathMis mis = bdptMis(v.mis);
+                vcmOnHit(bdptMisConfig(), mis, t * t, cosLight);
+                float pmf = emitterAt(light.emitter).pmf;
+                weight = vcmWeightEmitterHit(bdptMisConfig(), mis,
+                                             lightPdf * cosLight / (t * t),
+                                             sphereEmissionPdfW(pmf, light, cosLight));
+            } else {
+                weight = 1.0;
+            }
+#endif
+            v.radiance += clampContribution(v.beta * sphereRadiance(light) * weight);
         }
         return false;
     }
@@ -148,6 +175,11 @@ BsdfLayers layersAt(SurfaceHit surface) {
     return layers;
 }
 #endif
+#if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
+#include "bidir/bdpt_connect.glsl"
+// The last camera vertex shaded, for shade.comp's connections (bdpt_connect.glsl).
+BdptCameraVertex bdptVertex;
+#endif
 
 void shadePathVertex(inout PathVertex v) {
     v.radiance = vec3(0.0);
@@ -185,6 +217,12 @@ void shadePathVertex(inout PathVertex v) {
     v.aovAlbedoDistance = vec4(surface.baseColor, t);
     v.aovNormal = surface.ns;
 #endif
+#if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
+    VcmMisConfig misConfig = bdptMisConfig();
+    VcmSubpathMis mis = bdptMis(v.mis);
+    vcmOnHit(misConfig, mis, t * t, abs(dot(wo, surface.ng)));
+    bdptVertex.connectable = false;
+#endif
     if (any(greaterThan(surface.emission, vec3(0.0)))) {
         float lightPdf = 0.0;
 #if WF_HAS_TRIANGLE_EMITTERS && WF_LIGHT_SAMPLING != 0
@@ -192,8 +230,22 @@ void shadePathVertex(inout PathVertex v) {
             lightPdf = triangleLightPdf(lightPmf(surface.emitter, v.origin, v.previousNormal),
                                         triangleAt(v.hit.w), v.origin, t, abs(dot(surface.ng, wo)));
 #endif
-        v.radiance += clampContribution(v.beta * surface.emission *
-                                        emissionWeight(v.previousPdf, lightPdf));
+        float weight = emissionWeight(v.previousPdf, lightPdf);
+#if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
+        weight = 1.0; // seen directly, or an emitter no light subpath can leave
+#if WF_HAS_TRIANGLE_EMITTERS
+        if (v.depth > 0u && surface.emitter != WF_NO_EMITTER) {
+            float cosLight = abs(dot(surface.ng, wo));
+            EmitterDensity e = emitterDensity(surface.emitter, v.origin, v.direction, t, cosLight);
+            Triangle emitting = triangleAt(v.hit.w);
+            weight = vcmWeightEmitterHit(
+                misConfig, mis, e.directPdfA,
+                triangleEmissionPdfW(emitterAt(surface.emitter).pmf, emitting,
+                                     materialAt(emitting.material), cosLight));
+        }
+#endif
+#endif
+        v.radiance += clampContribution(v.beta * surface.emission * weight);
     }
 #if WF_INTEGRATOR == WF_INTEGRATOR_LIGHT
     return; // light tracing: the camera finds emitters seen directly, light subpaths the rest
@@ -290,6 +342,14 @@ void shadePathVertex(inout PathVertex v) {
                 weight = powerHeuristic(light.pdf, bsdfPdf(bsdf, woLocal, wiLocal));
 #endif
 #endif
+#if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
+            weight = vcmWeightNee(
+                misConfig, mis, light.misPdfW,
+                light.isDelta ? 0.0 : bdptPdf(WF_BDPT_LOBES(bsdf, layers), woLocal, wiLocal),
+                bdptPdf(WF_BDPT_LOBES(bsdf, layers), wiLocal, woLocal), light.emissionPdfW,
+                light.cosAtLight,
+                abs(dot(light.direction, surface.ng)));
+#endif
             vec3 contribution = v.beta * f * light.radiance * (abs(wiLocal.z) * weight / light.pdf);
             v.shadowOrigin =
                 offsetRayOrigin(surface.p, surface.pError, geometricOutside, light.direction);
@@ -301,6 +361,25 @@ void shadePathVertex(inout PathVertex v) {
     }
 #endif
 
+#if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
+#if WF_BSDF_LAYERS
+    bdptVertex.connectable = layeredHasNonDelta(bsdf, layers);
+    bdptVertex.layers = layers;
+#else
+    bdptVertex.connectable = bsdfHasNonDelta(bsdf);
+#endif
+    bdptVertex.p = surface.p;
+    bdptVertex.pError = surface.pError;
+    bdptVertex.ng = surface.ng;
+    bdptVertex.outside = geometricOutside;
+    bdptVertex.tangent = tangent;
+    bdptVertex.bitangent = bitangent;
+    bdptVertex.n = n;
+    bdptVertex.woLocal = woLocal;
+    bdptVertex.beta = v.beta;
+    bdptVertex.mis = mis;
+    bdptVertex.bsdf = bsdf;
+#endif
     if (v.depth + 1u >= params.maxDepth)
         return;
     BsdfSample s;
@@ -378,6 +457,12 @@ void shadePathVertex(inout PathVertex v) {
         return;
 #endif
     vec3 wi = normalize(tangent * s.wi.x + bitangent * s.wi.y + n * s.wi.z);
+#endif
+#if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
+    float scatterReversePdf =
+        s.isDelta ? s.pdf : bdptPdf(WF_BDPT_LOBES(bsdf, layers), s.wi, woLocal);
+    vcmOnScatter(misConfig, mis, abs(dot(wi, surface.ng)), s.pdf, scatterReversePdf, s.isDelta);
+    v.mis = bdptStored(mis);
 #endif
     vec3 beta = v.beta * s.weight;
     float etaScale = v.etaScale * s.eta * s.eta;

@@ -36,12 +36,17 @@ std::vector<OptionSpec> depthOptions(uint32_t defaultMaxDepth) {
 std::vector<OptionSpec> samplingOptions() {
     return {
         {"--integrator", "", "NAME", "path (the path tracer with next-event estimation; "
-                                     "default) or light (light tracing: light subpaths "
+                                     "default), light (light tracing: light subpaths "
                                      "connect each vertex to the camera, camera rays add the "
                                      "emitters they see; unbiased, leaves black what only "
-                                     "Dirac surfaces seen directly show; whole samples of the "
-                                     "image per wave; not with --target-error, guiding, "
-                                     "motion blur, --traversal rt or an orthographic camera)"},
+                                     "Dirac surfaces seen directly show) or bdpt "
+                                     "(bidirectional path tracing: each pixel sample's camera "
+                                     "and light subpaths, every connection between them "
+                                     "weighed by MIS, the power heuristic; unbiased; keeps "
+                                     "max-depth - 2 light vertices per pixel). light and bdpt "
+                                     "trace whole samples of the image per wave and take "
+                                     "neither --target-error, guiding, motion blur, "
+                                     "--traversal rt nor an orthographic camera"},
         {"--light-sampling", "", "MODE", "bsdf (emission found by BSDF rays), nee (light "
                                          "sampling only) or mis (default)"},
         {"--light-selection", "", "MODE", "how NEE picks a light: uniform, power or tree (the "
@@ -222,7 +227,7 @@ void applyRenderFlags(const ParsedArgs& parsed, uint32_t defaultMaxDepth,
     settings.rrDepth = parsed.uintValue("--rr-depth", 3, 0, 1024);
     settings.seed = parsed.uintValue("--seed", 0, 0, 0xffffffffu);
     settings.integrator =
-        parseIntegrator(parsed.choiceValue("--integrator", "path", {"path", "light"}));
+        parseIntegrator(parsed.choiceValue("--integrator", "path", {"path", "light", "bdpt"}));
     settings.lightSampling =
         parseLightSampling(parsed.choiceValue("--light-sampling", "mis", {"bsdf", "nee", "mis"}));
     if (parsed.has("--light-selection"))

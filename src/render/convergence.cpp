@@ -27,7 +27,8 @@ std::string methodWords() {
     std::string words;
     for (const std::string& name : samplerNames())
         words += name + ", ";
-    return words + "bsdf, nee, mis, light, uniform, power, tree, no-randomize, triangle-area, "
+    return words + "bsdf, nee, mis, light, bdpt, uniform, power, tree, no-randomize, "
+                   "triangle-area, "
                    "sphere-area, adaptive, guided, replicates";
 }
 
@@ -45,7 +46,8 @@ ConvergenceMethod parseMethod(const std::string& text) {
         }();
         // The integrator replaces the path tracer's estimator: one word of the two.
         const bool isEstimator =
-            word == "bsdf" || word == "nee" || word == "mis" || word == "light";
+            word == "bsdf" || word == "nee" || word == "mis" || word == "light" ||
+            word == "bdpt";
         const bool isSelection = word == "uniform" || word == "power" || word == "tree";
         if (!seen.insert(word).second || (isSampler && samplerSet) ||
             (isEstimator && estimatorSet) || (isSelection && selectionSet))
@@ -54,8 +56,8 @@ ConvergenceMethod parseMethod(const std::string& text) {
         if (isSampler) {
             method.sampler = parseSampler(word, "--methods");
             samplerSet = true;
-        } else if (word == "light") {
-            method.integrator = Integrator::Light;
+        } else if (word == "light" || word == "bdpt") {
+            method.integrator = parseIntegrator(word);
             estimatorSet = true;
         } else if (isEstimator) {
             method.lightSampling = parseLightSampling(word);
@@ -90,7 +92,7 @@ ConvergenceMethod parseMethod(const std::string& text) {
         throw UsageError("--methods: light tracing takes neither adaptive nor guided ('" + text +
                          "')");
     method.name = std::string(samplerName(method.sampler)) + "+" +
-                  (method.integrator == Integrator::Light
+                  (method.integrator != Integrator::Path
                        ? integratorName(method.integrator)
                        : lightSamplingName(method.lightSampling)) +
                   (method.randomize ? "" : "+no-randomize") +

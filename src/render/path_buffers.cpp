@@ -1,5 +1,7 @@
 #include "render/path_buffers.h"
 
+#include <algorithm>
+
 #include "shaders/types/render_types.h"
 
 namespace wf {
@@ -7,8 +9,14 @@ namespace wf {
 using gpu_types::QueueCounters;
 using gpu_types::RenderParams;
 
+uint32_t PathBuffers::bdptLightVertices(const ShaderVariant& variant, uint32_t maxDepth) {
+    return variant.lightSubpaths() && variant.integrator == Integrator::Bdpt && maxDepth > 2
+               ? maxDepth - 2
+               : 0;
+}
+
 PathBuffers::PathBuffers(const Context& context, uint32_t pathCapacity, uint32_t pixelCount,
-                         PathStateUse use, const ShaderVariant& variant)
+                         PathStateUse use, const ShaderVariant& variant, uint32_t maxDepth)
     : params(context, "params", sizeof(RenderParams)),
       // Ray-traced passes read their trace arguments by address.
       counters(context, "queue counters", sizeof(QueueCounters),
@@ -47,11 +55,23 @@ PathBuffers::PathBuffers(const Context& context, uint32_t pathCapacity, uint32_t
         lightFilm = Buffer(context, "light film", uint64_t(pathCapacity) * 24);
         lightFilm.upload(std::vector<uint32_t>(size_t(pathCapacity) * 6, 0u));
     }
+    const uint64_t lightVertices = bdptLightVertices(variant, maxDepth);
+    if (variant.lightSubpaths() && variant.integrator == Integrator::Bdpt) {
+        pathMis = Buffer(context, "path mis", uint64_t(pathCapacity) * 16);
+        lightDepths = Buffer(context, "light depths", uint64_t(pathCapacity) * 4);
+        // Zero entries still bind (a depth-2 render keeps no light vertex).
+        const uint64_t entries = std::max<uint64_t>(1, uint64_t(pathCapacity) * lightVertices);
+        lightVertexHits = Buffer(context, "light vertex hits", entries * 16);
+        lightVertexDirections = Buffer(context, "light vertex directions", entries * 16);
+        lightVertexThroughputs = Buffer(context, "light vertex throughputs", entries * 16);
+    }
     if (use != PathStateUse::WavefrontWithShadowRays)
         return;
-    shadowOrigin = Buffer(context, "shadow origins", uint64_t(pathCapacity) * 16);
-    shadowDirection = Buffer(context, "shadow directions", uint64_t(pathCapacity) * 16);
-    shadowRadiance = Buffer(context, "shadow radiance", uint64_t(pathCapacity) * 16);
+    // BDPT queues a camera vertex's NEE and its connections in one bounce.
+    const uint64_t shadowEntries = uint64_t(pathCapacity) * (1 + lightVertices);
+    shadowOrigin = Buffer(context, "shadow origins", shadowEntries * 16);
+    shadowDirection = Buffer(context, "shadow directions", shadowEntries * 16);
+    shadowRadiance = Buffer(context, "shadow radiance", shadowEntries * 16);
 }
 
 void PathBuffers::appendBindings(DescriptorBindings& bindings) const {
@@ -89,6 +109,11 @@ void PathBuffers::appendBindings(DescriptorBindings& bindings) const {
         {WF_BINDING_KIND_QUEUE_TEXELS, &kindQueues, BufferAccess::Uint1Texels},
         {WF_BINDING_RAY_TIME, &rayTime},
         {WF_BINDING_LIGHT_FILM, &lightFilm},
+        {WF_BINDING_PATH_MIS, &pathMis},
+        {WF_BINDING_LIGHT_DEPTHS, &lightDepths},
+        {WF_BINDING_LIGHT_VERTEX_HITS, &lightVertexHits},
+        {WF_BINDING_LIGHT_VERTEX_DIRECTIONS, &lightVertexDirections},
+        {WF_BINDING_LIGHT_VERTEX_THROUGHPUTS, &lightVertexThroughputs},
     };
     for (const DescriptorBinding& binding : all)
         if (*binding.buffer)
@@ -100,7 +125,8 @@ void PathBuffers::appendMemoryReport(
     for (const Buffer* buffer :
          {&params, &counters, &film, &rayOrigin, &rayDirection, &throughput, &radiance, &hits,
           &shadowOrigin, &shadowDirection, &shadowRadiance, &rayQueues, &aovPaths, &aovFilm,
-          &momentFilm, &replicateFilm, &activePixels, &rayCones, &kindQueues, &rayTime, &lightFilm})
+          &momentFilm, &replicateFilm, &activePixels, &rayCones, &kindQueues, &rayTime, &lightFilm, &pathMis, &lightDepths,
+          &lightVertexHits, &lightVertexDirections, &lightVertexThroughputs})
         if (*buffer)
             report.emplace_back(buffer->name(), buffer->size());
 }

@@ -19,8 +19,12 @@ enum class PathStateUse { Megakernel, Wavefront, WavefrontWithShadowRays };
 
 struct PathBuffers {
     // `variant` says which per-pixel extras exist (aov, secondMoment, adaptive).
+    // `maxDepth`: BDPT keeps maxDepth - 2 light vertices per path.
     PathBuffers(const Context& context, uint32_t pathCapacity, uint32_t pixelCount,
-                PathStateUse use, const ShaderVariant& variant);
+                PathStateUse use, const ShaderVariant& variant, uint32_t maxDepth);
+    // BDPT's light vertices per path (0 for the other integrators), and its shadow queue's
+    // entries per path: a camera vertex's NEE and a connection to each light vertex.
+    static uint32_t bdptLightVertices(const ShaderVariant& variant, uint32_t maxDepth);
 
     void appendBindings(DescriptorBindings& bindings) const;
     void appendMemoryReport(std::vector<std::pair<std::string, uint64_t>>& report) const;
@@ -52,6 +56,13 @@ struct PathBuffers {
     // subpaths' splats in 64-bit fixed point, 24 bytes (bidir/light_film.glsl); zeroed here
     // and by accumulate as it reads them.
     Buffer lightFilm;
+    // BDPT (bidir/bdpt_state.glsl): per path its MIS quantities and light bounces reached; per
+    // light vertex its hit, direction and throughput (bdptLightVertices per path).
+    Buffer pathMis;
+    Buffer lightDepths;
+    Buffer lightVertexHits;
+    Buffer lightVertexDirections;
+    Buffer lightVertexThroughputs;
 };
 
 } // namespace wf

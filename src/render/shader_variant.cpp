@@ -15,13 +15,18 @@ namespace wf {
 ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& settings) {
     const LightTable& lights = scene.lights;
     ShaderVariant variant;
-    variant.integrator = settings.integrator;
-    variant.lightSampling = settings.lightSampling;
+    // Without a light there is no light subpath: BDPT is then the path tracer.
+    variant.integrator = settings.integrator == Integrator::Bdpt && lights.emitters.empty()
+                             ? Integrator::Path
+                             : settings.integrator;
+    // BDPT's strategies include next-event estimation, weighed by its own MIS.
+    variant.lightSampling = settings.integrator == Integrator::Bdpt ? LightSampling::Mis
+                                                                    : settings.lightSampling;
     // Light tracing reads the emitter table for its emission, whatever --light-sampling says
     // (its camera rays only add the emission they find).
     variant.nextEventEstimation =
         (settings.lightSampling != LightSampling::Bsdf ||
-         settings.integrator == Integrator::Light) &&
+         settings.integrator != Integrator::Path) &&
         !lights.emitters.empty();
     variant.triangleEmitters = variant.nextEventEstimation && lights.triangleEmitters > 0;
     variant.sphereLights = lights.sphereLights > 0;
@@ -36,7 +41,7 @@ ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& se
         variant.lightSelection = LightSelection::Power; // only lights beside a tree
     // Light subpaths start from a light chosen by the table's pmf alone (the tree's choice
     // needs a receiving point), so light tracing takes power where NEE would take the tree.
-    if (variant.integrator == Integrator::Light && variant.lightSelection == LightSelection::Tree)
+    if (variant.integrator != Integrator::Path && variant.lightSelection == LightSelection::Tree)
         variant.lightSelection = LightSelection::Power;
     variant.triangleSolidAngle = settings.triangleSolidAngle;
     variant.sphereSolidAngle = settings.sphereSolidAngle;
@@ -49,7 +54,7 @@ ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& se
     // keeps its single shade pass and shaders. Set for the megakernel too, which ignores it, so
     // that bench's two renderers share one set of scene buffers (the bins ride in them).
     // Light tracing shades its camera rays at depth 0 only and its light vertices in one pass.
-    variant.shadeKinds = settings.integrator == Integrator::Light
+    variant.shadeKinds = settings.integrator != Integrator::Path
                              ? 0u
                              : shadeKindsFor(shadeKindsPresent(scene.materials),
                                              settings.shadeSplit);
@@ -198,11 +203,17 @@ Integrator parseIntegrator(const std::string& name) {
         return Integrator::Path;
     if (name == "light")
         return Integrator::Light;
-    throw UsageError("--integrator expects path or light, got '" + name + "'");
+    if (name == "bdpt")
+        return Integrator::Bdpt;
+    throw UsageError("--integrator expects path, light or bdpt, got '" + name + "'");
 }
 
 const char* integratorName(Integrator integrator) {
-    return integrator == Integrator::Light ? "light" : "path";
+    switch (integrator) {
+    case Integrator::Light: return "light";
+    case Integrator::Bdpt: return "bdpt";
+    default: return "path";
+    }
 }
 
 LightSelection parseLightSelection(const std::string& name) {

@@ -15,10 +15,11 @@ struct RenderSettings;
 
 enum class LightSampling { Bsdf = 0, Nee = 1, Mis = 2 };
 
-// --integrator: the path tracer, or light tracing (camera rays find the emitters they see,
-// light subpaths connect to the camera for the rest; shaders/light_*.comp). Values are
+// --integrator: the path tracer; light tracing (camera rays find the emitters they see, light
+// subpaths connect to the camera for the rest; shaders/light_*.comp); bidirectional path
+// tracing (both subpaths, every connection weighed by MIS; bidir/bdpt_state.glsl). Values are
 // WF_INTEGRATOR's.
-enum class Integrator { Path = 0, Light = 1 };
+enum class Integrator { Path = 0, Light = 1, Bdpt = 2 };
 
 // How next-event estimation picks a light (--light-selection): uniformly, by power from one
 // alias table, or by the light tree's importance at the shading point. Auto: the tree where
@@ -70,7 +71,7 @@ struct ShaderVariant {
     uint32_t shadeBins() const; // passes shading by kind: 0 (none) or 2-3
     bool lightsBuffer() const { return sphereLights || deltaLights; }
     // Light tracing's passes exist: there is a light to trace from.
-    bool lightSubpaths() const { return integrator == Integrator::Light && nextEventEstimation; }
+    bool lightSubpaths() const { return integrator != Integrator::Path && nextEventEstimation; }
     bool lightTree() const {
         return nextEventEstimation && lightSelection == LightSelection::Tree;
     }

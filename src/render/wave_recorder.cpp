@@ -37,7 +37,7 @@ WaveRecorder::WaveRecorder(const Context& context, const ShaderCompiler& compile
     const uint32_t passesPerDepth = 3 + std::max(variant.shadeBins(), 1u) +
                                     (variant.lightSubpaths() ? 4 : 0);
     timer_ = std::make_unique<TimestampTimer>(context, passesPerDepth * maxDepth + 4, timePasses);
-    lightTracing_ = variant.integrator == Integrator::Light;
+    integrator_ = variant.integrator;
 
     PassResources resources{context, compiler, defines, table, counters, *timer_,
                             variant.rayTracing && !megakernel};
@@ -55,7 +55,7 @@ WaveRecorder::WaveRecorder(const Context& context, const ShaderCompiler& compile
                         resources, static_cast<uint32_t>(shades_.size()), ShadeKind(k)));
         }
         queue_ = std::make_unique<QueuePass>(resources);
-        if (variant.nextEventEstimation && !lightTracing_)
+        if (variant.nextEventEstimation && integrator_ == Integrator::Path)
             shadow_ = std::make_unique<ShadowPass>(resources);
         if (variant.lightSubpaths()) {
             lightRaygen_ = std::make_unique<LightRaygenPass>(resources);
@@ -82,9 +82,14 @@ void WaveRecorder::record(VkCommandBuffer cmd, const PassConstants& wave) const 
     if (megakernel_) {
         megakernel_->record(cmd, wave);
     } else {
+        // BDPT's camera vertices connect to the light vertices its light subpaths keep.
+        if (lightRaygen_ && integrator_ == Integrator::Bdpt)
+            recordLightSubpaths(cmd, wave);
         raygen_->record(cmd, wave);
+        if (integrator_ == Integrator::Bdpt)
+            queue_->record(cmd, ~0u); // raygen's count: the light passes left the arguments
         // Light tracing's camera rays find the emitters they see and end.
-        const uint32_t cameraDepth = lightTracing_ ? 1 : maxDepth_;
+        const uint32_t cameraDepth = integrator_ == Integrator::Light ? 1 : maxDepth_;
         for (uint32_t depth = 0; depth < cameraDepth; ++depth) {
             intersect_->record(cmd, depth);
             for (const auto& shade : shades_)
@@ -94,8 +99,10 @@ void WaveRecorder::record(VkCommandBuffer cmd, const PassConstants& wave) const 
             queue_->record(cmd, depth);
             if (shadow_)
                 shadow_->record(cmd, depth);
+            if (integrator_ == Integrator::Bdpt && lightSplat_)
+                lightSplat_->record(cmd, depth);
         }
-        if (lightRaygen_)
+        if (lightRaygen_ && integrator_ == Integrator::Light)
             recordLightSubpaths(cmd, wave);
     }
     accumulate_->record(cmd, wave);

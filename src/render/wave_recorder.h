@@ -2,7 +2,9 @@
 // shade (one pass per shade bin), queue and shadow, and accumulate; or the megakernel in place
 // of the passes between raygen's and accumulate's places. Light tracing: raygen, intersect
 // and shade at depth 0 (emitters seen directly), then light_raygen, queue and per light bounce
-// intersect, light_shade, queue and light_splat, then accumulate. Owns the passes and the timestamp
+// intersect, light_shade, queue and light_splat, then accumulate. BDPT: the light subpaths
+// first, then raygen, queue and per depth intersect, shade, queue and light_splat (NEE and
+// the connections to the light vertices), then accumulate. Owns the passes and the timestamp
 // queries that time them; the renderer owns the buffers and decides what each wave covers.
 #pragma once
 #include <cstdint>
@@ -14,6 +16,7 @@
 #include <vulkan/vulkan.h>
 
 #include "gpu/shader_compiler.h"
+#include "render/shader_variant.h"
 
 namespace wf {
 
@@ -63,7 +66,7 @@ private:
     std::unique_ptr<ShadowPass> shadow_;
     std::unique_ptr<AccumulatePass> accumulate_;
     std::unique_ptr<MegakernelPass> megakernel_;
-    bool lightTracing_ = false; // the camera's passes at depth 0 only
+    Integrator integrator_ = Integrator::Path;
     std::unique_ptr<LightRaygenPass> lightRaygen_; // light tracing in scenes with emitters
     std::unique_ptr<LightShadePass> lightShade_;
     std::unique_ptr<LightSplatPass> lightSplat_;

@@ -28,15 +28,16 @@ namespace {
 
 // What light tracing (--integrator light) does not take yet, or cannot: one line each.
 void requireLightTracingSupport(const RenderSettings& settings, const PreparedScene& scene) {
-    const auto refuse = [](const std::string& what) {
-        throw UsageError("--integrator light: " + what);
+    const auto refuse = [&](const std::string& what) {
+        throw UsageError(std::string("--integrator ") + integratorName(settings.integrator) +
+                         ": " + what);
     };
     if (settings.megakernel)
-        refuse("no megakernel of light tracing exists; bench it without --compare-megakernel");
+        refuse("no megakernel of it exists; bench it without --compare-megakernel");
     if (settings.traversal == Traversal::RayTracing)
         refuse("its passes trace by the project's BVH only; use --traversal bvh");
     if (settings.guiding)
-        refuse("path guiding guides camera paths; use --guiding off");
+        refuse("path guiding is not combined with light subpaths; use --guiding off");
     if (settings.pixelList)
         refuse("--target-error and adaptive sampling need per-pixel sample counts, which light "
                "splats do not keep; render a fixed --spp");
@@ -73,7 +74,7 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
                          "device's buffer limit (" + std::to_string(maxPixels) +
                          " entries of 16 bytes): take fewer replicates");
     pixelCount_ = static_cast<uint32_t>(pixels);
-    const bool lightTracing = settings.integrator == Integrator::Light;
+    const bool lightTracing = settings.integrator != Integrator::Path;
     if (lightTracing) {
         requireLightTracingSupport(settings, scene);
         if (pixels > maxPaths)
@@ -106,8 +107,18 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
                                    : variant_.nextEventEstimation
                                        ? PathStateUse::WavefrontWithShadowRays
                                        : PathStateUse::Wavefront;
+    if (variant_.integrator == Integrator::Bdpt) {
+        // Every light vertex field in one storage buffer; the shadow queue likewise.
+        const uint64_t perPath = 1 + PathBuffers::bdptLightVertices(variant_, settings.maxDepth);
+        if (uint64_t(pathCapacity_) * perPath * 16 > context.properties().limits.maxStorageBufferRange)
+            throw UsageError("--integrator bdpt keeps " + std::to_string(perPath - 1) +
+                             " light vertices per pixel at --max-depth " +
+                             std::to_string(settings.maxDepth) + ": at " +
+                             std::to_string(pixels) + " pixels that is over this device's "
+                             "buffer limit; take a smaller image or --max-depth");
+    }
     pathBuffers_ = std::make_unique<PathBuffers>(context, pathCapacity_, pixelCount_, pathState,
-                                                 variant_);
+                                                 variant_, settings.maxDepth);
     if (samplerReadsTable(settings.sampler))
         samplerTable_ = std::make_unique<Buffer>(makeSamplerTableBuffer(context, setSize()));
     if (settings.guiding) {
@@ -244,7 +255,7 @@ void WavefrontRenderer::adaptWaveSize(uint32_t paths, double seconds) {
     secondsPerPath_ = std::max(seconds / paths, 0.75 * secondsPerPath_);
     const double wanted = 0.6 * settings_.submitBudgetSeconds / secondsPerPath_;
     const double grown = std::min(wanted, 4.0 * wavePaths_);
-    const uint32_t floor = settings_.integrator == Integrator::Light
+    const uint32_t floor = settings_.integrator != Integrator::Path
                                ? pixelCount_ // whole samples of the image per wave
                                : std::min(pathCapacity_, 1024u);
     wavePaths_ = static_cast<uint32_t>(std::clamp(grown, double(floor), double(pathCapacity_)));
@@ -279,7 +290,7 @@ uint32_t WavefrontRenderer::advance(uint32_t maxSamples) {
 uint32_t WavefrontRenderer::renderPixels(uint32_t paths) {
     if (variant_.adaptive)
         throw InternalError("a renderer of pixel lists traces through renderPixelList only");
-    if (settings_.integrator == Integrator::Light) { // whole samples only
+    if (settings_.integrator != Integrator::Path) { // whole samples only
         advance(1);
         return pixelCount_;
     }

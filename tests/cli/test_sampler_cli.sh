@@ -103,7 +103,7 @@ expect "light: both counts in the JSON" json_has "$work/light.json" \
 check "light with --target-error" 2 "$wavefront" render "$cornell" -o "$work/x.exr" \
     --integrator light --target-error 0.01 --width 8
 expect "light with --target-error: one line" one_line_error
-check "unknown integrator" 2 "$wavefront" render "$cornell" -o "$work/x.exr" --integrator bpt
+check "unknown integrator" 2 "$wavefront" render "$cornell" -o "$work/x.exr" --integrator vcm
 expect "unknown integrator: one line" one_line_error
 check "converge light" 0 "$wavefront" converge "$cornell" -o "$work/c5" \
     --reference "$conv/reference.exr" --time 0.01 --max-spp 4 --methods sobol,sobol+light \

@@ -221,4 +221,4 @@ def test_light_tracing_from_the_renderer_or_the_call(renderer, cornell):
         with pytest.raises(ValueError, match="target_error"):
             own.render(own.load(CORNELL), width=16, target_error=0.01)
     with pytest.raises(ValueError, match="integrator"):
-        wf.Renderer(integrator="bdpt")
+        wf.Renderer(integrator="vcm")
