@@ -120,6 +120,15 @@ Material materialAt(uint index) {
     t9 = wfTexel(materialTexels, base + 9u);
     t10 = wfTexel(materialTexels, base + 10u);
 #endif
+    // The layers' and volume's textures (texels 11-12), and the coat normal map's scale.
+    uvec4 t11 = uvec4(WF_NO_TEXTURE, WF_NO_TEXTURE, WF_NO_TEXTURE, floatBitsToUint(1.0));
+    uvec4 t12 = uvec4(WF_NO_TEXTURE, WF_NO_TEXTURE, WF_NO_TEXTURE, 0u);
+#if WF_HAS_CLEARCOAT_TEXTURES || WF_HAS_CLEARCOAT_NORMAL_MAPS
+    t11 = wfTexel(materialTexels, base + 11u);
+#endif
+#if WF_HAS_SHEEN_TEXTURES || WF_HAS_THICKNESS_TEXTURES
+    t12 = wfTexel(materialTexels, base + 12u);
+#endif
     return Material(uintBitsToFloat(t0), uintBitsToFloat(t1.xyz), t1.w, uintBitsToFloat(t2.x),
                     uintBitsToFloat(t2.y), uintBitsToFloat(t2.z), uintBitsToFloat(t2.w),
                     uintBitsToFloat(t3.xyz), uintBitsToFloat(t3.w), uintBitsToFloat(t4.x),
@@ -127,7 +136,8 @@ Material materialAt(uint index) {
                     uintBitsToFloat(t6.y), uintBitsToFloat(t6.z), t6.w, uintBitsToFloat(t7.xyz),
                     uintBitsToFloat(t7.w), uintBitsToFloat(t8.xyz), uintBitsToFloat(t8.w),
                     uintBitsToFloat(t9.x), uintBitsToFloat(t9.y), uintBitsToFloat(t9.z),
-                    uintBitsToFloat(t9.w), t10.x, t10.y, t10.z, t10.w);
+                    uintBitsToFloat(t9.w), t10.x, t10.y, t10.z, t10.w,
+                    t11.x, t11.y, t11.z, uintBitsToFloat(t11.w), t12.x, t12.y, t12.z, t12.w);
 }
 
 #if WF_HAS_INSTANCES

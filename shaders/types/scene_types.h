@@ -124,6 +124,17 @@ struct Material {
     uint iridescenceThicknessTexture;  // its G channel mixes minimum..maximum
     uint pad1;
     uint pad2;
+    // --- The layers' and volume's textures (issue 48), texels 11-12: read by the shaders only
+    // where the scene uses them (WF_HAS_CLEARCOAT_TEXTURES, _CLEARCOAT_NORMAL_MAPS,
+    // _SHEEN_TEXTURES, _THICKNESS_TEXTURES). Each with its own KHR_texture_transform.
+    uint clearcoatTexture;          // its R channel multiplies clearcoat
+    uint clearcoatRoughnessTexture; // its G channel multiplies clearcoatRoughness
+    uint clearcoatNormalTexture;    // the coat's own tangent-space normal map
+    float clearcoatNormalScale;     // clearcoatNormalTexture.scale, 1 by default
+    uint sheenColorTexture;         // its RGB (sRGB) multiplies sheenColor
+    uint sheenRoughnessTexture;     // its A channel multiplies sheenRoughness
+    uint thicknessTexture;          // its G channel multiplies thickness
+    uint pad3;
 };
 
 // Per-scene switches for the material extensions (ShaderVariant), off in shaders compiled
@@ -143,6 +154,18 @@ struct Material {
 #endif
 #ifndef WF_HAS_IRIDESCENCE
 #define WF_HAS_IRIDESCENCE 0
+#endif
+#ifndef WF_HAS_CLEARCOAT_TEXTURES
+#define WF_HAS_CLEARCOAT_TEXTURES 0
+#endif
+#ifndef WF_HAS_CLEARCOAT_NORMAL_MAPS
+#define WF_HAS_CLEARCOAT_NORMAL_MAPS 0
+#endif
+#ifndef WF_HAS_SHEEN_TEXTURES
+#define WF_HAS_SHEEN_TEXTURES 0
+#endif
+#ifndef WF_HAS_THICKNESS_TEXTURES
+#define WF_HAS_THICKNESS_TEXTURES 0
 #endif
 #endif
 
@@ -181,7 +204,7 @@ struct Emitter {
 #define WF_INSTANCE_PAGES 1
 #define WF_INSTANCE_PAGE_SHIFT 31
 #endif
-#define WF_MATERIAL_TEXELS 11u
+#define WF_MATERIAL_TEXELS 13u
 #define WF_INSTANCE_TEXELS 7u
 
 #ifdef __cplusplus
@@ -198,7 +221,7 @@ static_assert(offsetof(wf::gpu_types::Triangle, p2) == 32);
 static_assert(sizeof(wf::gpu_types::BvhNode) == 32);
 static_assert(offsetof(wf::gpu_types::BvhNode, hi) == 16);
 static_assert(offsetof(wf::gpu_types::BvhNode, count) == 28);
-static_assert(sizeof(wf::gpu_types::Material) == 176);
+static_assert(sizeof(wf::gpu_types::Material) == 208);
 static_assert(offsetof(wf::gpu_types::Material, emission) == 16);
 static_assert(offsetof(wf::gpu_types::Material, flags) == 28);
 static_assert(offsetof(wf::gpu_types::Material, specularColor) == 48);
@@ -215,6 +238,11 @@ static_assert(offsetof(wf::gpu_types::Material, iridescenceThicknessMaximum) == 
 static_assert(offsetof(wf::gpu_types::Material, iridescenceTexture) == 160);
 static_assert(offsetof(wf::gpu_types::Material, iridescenceThicknessTexture) == 164);
 static_assert(offsetof(wf::gpu_types::Material, pad2) == 172);
+static_assert(offsetof(wf::gpu_types::Material, clearcoatTexture) == 176);
+static_assert(offsetof(wf::gpu_types::Material, clearcoatNormalScale) == 188);
+static_assert(offsetof(wf::gpu_types::Material, sheenColorTexture) == 192);
+static_assert(offsetof(wf::gpu_types::Material, thicknessTexture) == 200);
+static_assert(offsetof(wf::gpu_types::Material, pad3) == 204);
 static_assert(sizeof(wf::gpu_types::Emitter) == 16);
 static_assert(sizeof(wf::gpu_types::Instance) == 16 * WF_INSTANCE_TEXELS);
 static_assert(offsetof(wf::gpu_types::Instance, worldFromObject0) == 48);

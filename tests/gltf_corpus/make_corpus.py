@@ -511,6 +511,51 @@ m = g.material(extensions={
         "iridescenceThicknessTexture": {"index": tex, "extensions": {"KHR_texture_transform": {
             "scale": [2, 2]}}}}})
 case("valid/material_iridescence.gltf", "loads 2 images=1", quad(g, m))
+# Every texture of the layer and volume extensions, each with a KHR_texture_transform of its own
+# (scale k on the k-th one, so a test can tell which reached which field), some on TEXCOORD_1.
+g = Gltf()
+tex = g.texture(g.image(checker_png()))
+
+
+def info(k, **more):
+    return dict({"index": tex, "extensions": {"KHR_texture_transform": {"scale": [k, 1]}}}, **more)
+
+
+m = g.material(normalTexture={"index": tex}, extensions={
+    "KHR_materials_clearcoat": {"clearcoatFactor": 0.8, "clearcoatRoughnessFactor": 0.25,
+                                "clearcoatTexture": info(2),
+                                "clearcoatRoughnessTexture": info(3, texCoord=1),
+                                "clearcoatNormalTexture": info(4, scale=0.5)},
+    "KHR_materials_sheen": {"sheenColorFactor": [0.5, 0.4, 0.3], "sheenRoughnessFactor": 0.6,
+                            "sheenColorTexture": info(5), "sheenRoughnessTexture": info(6)},
+    "KHR_materials_transmission": {"transmissionFactor": 1, "transmissionTexture": info(7)},
+    "KHR_materials_volume": {"thicknessFactor": 0.2, "attenuationColor": [0.5, 0.25, 1],
+                             "attenuationDistance": 2, "thicknessTexture": info(8)},
+    "KHR_materials_specular": {"specularTexture": info(9), "specularColorTexture": info(10)}})
+case("valid/material_layer_textures.gltf", "loads 2 images=1",
+     quad(g, m, normals=True, extra={"TEXCOORD_1": g.floats(QUAD_UV, "VEC2")}))
+# The coat's normal map alone still gets tangents (MikkTSpace: the file has none).
+g = Gltf()
+tex = g.texture(g.image(normal_png()))
+m = g.material(extensions={"KHR_materials_clearcoat": {
+    "clearcoatFactor": 1, "clearcoatNormalTexture": {"index": tex}}})
+case("valid/clearcoat_normal_map_only.gltf", "loads 2 images=1", quad(g, m, normals=True))
+# KHR_texture_basisu: the core source (PNG) is the fallback, read without a warning; the KTX2
+# image (its magic and nothing more) is never decoded.
+KTX2 = bytes([0xab, 0x4b, 0x54, 0x58, 0x20, 0x32, 0x30, 0xbb, 0x0d, 0x0a, 0x1a, 0x0a])
+g = textured(checker_png())
+g.doc["textures"][0]["extensions"] = {"KHR_texture_basisu": {"source": g.image(KTX2, "image/ktx2")}}
+g.doc["extensionsUsed"] = ["KHR_texture_basisu"]
+case("valid/texture_basisu_fallback.gltf", "loads 2 images=1", g)
+# Without a fallback (as a file that does not require the extension should not be): the
+# textures are dropped, with one warning for both.
+g = Gltf()
+ktx = g.image(KTX2, "image/ktx2")
+g.doc["textures"] = [{"extensions": {"KHR_texture_basisu": {"source": ktx}}}] * 2
+m = g.material(pbrMetallicRoughness={"baseColorTexture": {"index": 0}},
+               emissiveTexture={"index": 1}, emissiveFactor=[1, 1, 1])
+g.doc["extensionsUsed"] = ["KHR_texture_basisu"]
+case("valid/texture_basisu_without_fallback.gltf", "loads 2 images=0", quad(g, m))
 g = tri()
 g.doc["nodes"][0]["children"] = [1]
 g.doc["nodes"].append({"mesh": 0, "translation": [0, 0, 1]})
@@ -766,6 +811,18 @@ broken("meshopt_vertex_codec_v1.glb", "version 1 of meshopt's vertex codec", g)
 g = Gltf()
 m = g.material(extensions={"KHR_materials_clearcoat": {"clearcoatFactor": 1.5}})
 broken("clearcoat_above_one.gltf", "clearcoatFactor", quad(g, m, uv=False))
+for name, ext, key in [("clearcoat_texture_index.gltf", "KHR_materials_clearcoat", "clearcoatTexture"),
+                       ("sheen_texture_index.gltf", "KHR_materials_sheen", "sheenColorTexture"),
+                       ("thickness_texture_index.gltf", "KHR_materials_volume", "thicknessTexture")]:
+    g = Gltf()
+    g.texture(g.image(checker_png()))
+    m = g.material(extensions={ext: {key: {"index": 3}}})
+    broken(name, key + " refers to texture 3", quad(g, m))
+g = Gltf()
+tex = g.texture(g.image(checker_png()))
+m = g.material(extensions={"KHR_materials_clearcoat": {"clearcoatFactor": 1,
+    "clearcoatNormalTexture": {"index": tex, "scale": "strong"}}})
+broken("clearcoat_normal_scale_not_a_number.gltf", "clearcoatNormalTexture.scale", quad(g, m))
 g = Gltf()
 m = g.material(extensions={"KHR_materials_volume": {"thicknessFactor": 1,
                                                     "attenuationDistance": 0}})

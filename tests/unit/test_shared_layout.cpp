@@ -2,8 +2,10 @@
 // glslang's reflection for the std430 offset of every member the shaders see and compares it
 // with the C++ offsetof, so a layout drift fails here instead of corrupting a render.
 #include <cstddef>
+#include <initializer_list>
 #include <map>
 #include <string>
+#include <utility>
 
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
@@ -42,7 +44,9 @@ void main() {
         mat.normalTexture + mat.emissiveTexture + mat.transmissionTexture + mat.pad +
         mat.specularTexture + mat.specularColorTexture + uint(mat.clearcoat +
         mat.clearcoatRoughness + mat.sheenColor.x + mat.sheenRoughness + mat.attenuation.x +
-        mat.thickness);
+        mat.thickness + mat.clearcoatNormalScale) + mat.clearcoatTexture +
+        mat.clearcoatRoughnessTexture + mat.clearcoatNormalTexture + mat.sheenColorTexture +
+        mat.sheenRoughnessTexture + mat.thicknessTexture + mat.pad3;
     em.alias = em.source + uint(em.pmf + em.aliasProb);
     pair.pad1 = pair.child0 + pair.child1 + pair.pad0 + uint(pair.lo0.x + pair.hi0.x + pair.lo1.x +
         pair.hi1.x);
@@ -142,6 +146,17 @@ TEST(SharedLayout, GlslOffsetsMatchCpp) {
     expectOffset("mat.sheenRoughness", materialBase, offsetof(Material, sheenRoughness));
     expectOffset("mat.attenuation", materialBase, offsetof(Material, attenuation));
     expectOffset("mat.thickness", materialBase, offsetof(Material, thickness));
+    // The layers' textures (issue 48), a block of their own at the end.
+    for (const auto& [name, offset] : std::initializer_list<std::pair<const char*, size_t>>{
+             {"mat.clearcoatTexture", offsetof(Material, clearcoatTexture)},
+             {"mat.clearcoatRoughnessTexture", offsetof(Material, clearcoatRoughnessTexture)},
+             {"mat.clearcoatNormalTexture", offsetof(Material, clearcoatNormalTexture)},
+             {"mat.clearcoatNormalScale", offsetof(Material, clearcoatNormalScale)},
+             {"mat.sheenColorTexture", offsetof(Material, sheenColorTexture)},
+             {"mat.sheenRoughnessTexture", offsetof(Material, sheenRoughnessTexture)},
+             {"mat.thicknessTexture", offsetof(Material, thicknessTexture)},
+             {"mat.pad3", offsetof(Material, pad3)}})
+        expectOffset(name, materialBase, offset);
     expectOffset("em.alias", materialBase + sizeof(Material), offsetof(Emitter, alias));
     const size_t pairBase = materialBase + sizeof(Material) + sizeof(Emitter);
     expectOffset("pair.child0", pairBase, offsetof(BvhPair, child0));

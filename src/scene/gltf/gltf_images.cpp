@@ -212,11 +212,9 @@ void loadImages(const tinygltf::Model& model, const std::string& file,
             m.roughness =
                 1.0f - tables.derived[size_t(tables.refDerived[m.metallicRoughnessTexture])]
                            .glossinessFactor;
-        for (uint32_t* field : {&m.metallicRoughnessTexture, &m.normalTexture,
-                                &m.emissiveTexture, &m.transmissionTexture,
-                                &m.specularTexture, &m.specularColorTexture,
-                                &m.iridescenceTexture, &m.iridescenceThicknessTexture}) {
-            if (*field != WF_NO_TEXTURE && refImage[*field] == FAILED) {
+        for (uint32_t* field : textureFields(m)) {
+            if (field != &m.baseColorTexture && *field != WF_NO_TEXTURE &&
+                refImage[*field] == FAILED) {
                 *field = WF_NO_TEXTURE;
             }
         }

@@ -32,6 +32,7 @@
 #include "scene/gltf/posing/gltf_motion.h"
 #include "scene/gltf/gltf_primitives.h"
 #include "scene/gltf/gltf_scene_limits.h"
+#include "scene/gltf/gltf_texture_refs.h"
 #include "scene/gltf/gltf_variants.h"
 
 namespace wf {
@@ -109,7 +110,7 @@ void Converter::checkExtensions() const {
         }
     }
     for (const std::string& ext : model_.extensionsUsed) {
-        if (!gltf::isSupportedExtension(ext)) {
+        if (!gltf::isSupportedExtension(ext) && !gltf::isReadThroughFallbacks(ext)) {
             gltf::warn(file_, "ignoring glTF extension " + ext + " (not supported)");
         }
     }
@@ -363,12 +364,9 @@ Scene Converter::run() {
         scene_.surface.textureRefs.clear();
         scene_.surface.refImage.clear();
         scene_.surface.images.clear();
-        for (Material& m : scene_.materials) {
-            m.baseColorTexture = m.metallicRoughnessTexture = m.normalTexture =
-                m.emissiveTexture = m.transmissionTexture = m.specularTexture =
-                    m.specularColorTexture = m.iridescenceTexture =
-                        m.iridescenceThicknessTexture = WF_NO_TEXTURE;
-        }
+        for (Material& m : scene_.materials)
+            for (uint32_t* field : gltf::textureFields(m))
+                *field = WF_NO_TEXTURE;
     }
     addDefaultEnvironment();
     return std::move(scene_);

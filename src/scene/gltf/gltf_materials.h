@@ -1,9 +1,8 @@
 // glTF materials to the GPU's Material records: metallic-roughness factors and textures,
 // emission (KHR_materials_emissive_strength), alpha modes, KHR_materials_ior, _transmission,
-// _specular (factors and textures), _clearcoat, _sheen and _volume (factors; their textures are
-// ignored with a warning), the archived KHR_materials_pbrSpecularGlossiness (mapped onto the
-// same BSDF: docs/gltf.md), and one TextureRef per texture use (sampler wrap and filter, sRGB
-// for colour, TEXCOORD set, KHR_texture_transform). Images are decoded later (gltf_images.h).
+// _specular, _clearcoat, _sheen, _volume and _iridescence (factors and textures), the archived
+// KHR_materials_pbrSpecularGlossiness (mapped onto the same BSDF: docs/gltf.md), and one
+// TextureRef per texture use (gltf_texture_refs.h). Images are decoded later (gltf_images.h).
 #pragma once
 #include <cstdint>
 #include <string>
@@ -50,6 +49,10 @@ struct MaterialTables {
 // Fails (InputError) on out-of-range indices and values outside glTF's ranges; warns about
 // what it ignores.
 MaterialTables convertMaterials(const tinygltf::Model& model, const std::string& file);
+
+// Every texture field of a material (WF_NO_TEXTURE or an index into the texture references),
+// base colour first, for code that drops or remaps them all.
+std::vector<uint32_t*> textureFields(Material& m);
 
 // The default material for primitives without one (glTF: white, metallic 1, roughness 1 is
 // the spec's default, but a grey Lambert-like surface is what users expect to see).
