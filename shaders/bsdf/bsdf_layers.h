@@ -16,8 +16,15 @@
 // albedo bound over view and light keeps f reciprocal, and since each layer reflects at most its
 // bound, the albedo at wo is at most c C + (1 - c C)(s S' + (1 - s S')) = 1: no layering gains
 // energy. The sheen lobe's own albedo passes 1 at grazing angles for low roughness, which the
-// max(1, S) divisor removes. Departures: the coat uses the base's shading normal
-// (clearcoatNormalTexture is ignored with a warning, as are the layers' other textures).
+// max(1, S) divisor removes. Departure: a coat without a normal map of its own uses the base's
+// shading normal (normal map included), where the spec has the vertex normal.
+//
+// The coat's own normal map (WF_HAS_CLEARCOAT_NORMAL_MAPS: BsdfLayers.coatNormal, in the
+// base's shading frame): the coat's GGX lobe and its albedo bound C are evaluated in the coat's
+// frame, with the coat's cosine in place of the base's (f_coat |cos_base| = f_coat' cos_coat),
+// so the coat reflects exactly what a flat coat reflects at the tilted angle, at most
+// c C(mu'_o), and Wc takes the coat-frame cosines: the bound above holds. Directions below either
+// horizon get nothing from the coat.
 //
 // Sampling: the coat (GGX visible normals; a Dirac mirror at roughness 0), the sheen (cosine)
 // or the base (bsdfSample), chosen by uLobe with probabilities proportional to c C(mu_o),
@@ -34,6 +41,9 @@
 #endif
 #ifndef WF_HAS_SHEEN
 #define WF_HAS_SHEEN 1
+#endif
+#ifndef WF_HAS_CLEARCOAT_NORMAL_MAPS
+#define WF_HAS_CLEARCOAT_NORMAL_MAPS 1
 #endif
 #endif
 #if WF_HAS_SHEEN
@@ -52,6 +62,15 @@ struct BsdfLayers {
     float clearcoatRoughness; // perceptual: alpha = roughness^2; exactly 0 is a Dirac mirror
     vec3 sheenColor;          // sheenColorFactor (linear)
     float sheenRoughness;
+#if WF_HAS_CLEARCOAT_NORMAL_MAPS
+    // The coat's unit normal in the base's shading frame (+z the base's normal, on the side
+    // the frame calls outside); (0, 0, 1) exactly for a coat without a normal map of its own.
+#ifdef __cplusplus
+    vec3 coatNormal = vec3(0.0f, 0.0f, 1.0f);
+#else
+    vec3 coatNormal;
+#endif
+#endif
 };
 
 // What eval, pdf and sample share for one material and wo.
@@ -67,6 +86,12 @@ struct LayerLobes {
     float pCoat;      // lobe choice probabilities at wo
     float pSheen;
     float pBase;
+#if WF_HAS_CLEARCOAT_NORMAL_MAPS
+    bool coatTilted;  // the coat's frame below, in the mirrored frame, differs from the base's
+    vec3 coatT;
+    vec3 coatB;
+    vec3 coatN;
+#endif
 };
 
 WF_INLINE BsdfLayers layersSanitize(BsdfLayers l) {
@@ -87,6 +112,20 @@ WF_INLINE float coatAlbedoBound(LayerLobes w, float mu) {
     return WF_COAT_F0 +
            (1.0f - WF_COAT_F0) * w.coatKappa * pow(clamp(1.0f - mu, 0.0f, 1.0f), w.coatPower);
 }
+
+#if WF_HAS_CLEARCOAT_NORMAL_MAPS
+// A mirrored-frame direction in the coat's frame, and back.
+WF_INLINE vec3 toCoatFrame(LayerLobes w, vec3 v) {
+    return w.coatTilted ? vec3(dot(v, w.coatT), dot(v, w.coatB), dot(v, w.coatN)) : v;
+}
+WF_INLINE vec3 fromCoatFrame(LayerLobes w, vec3 v) {
+    return w.coatTilted ? w.coatT * v.x + w.coatB * v.y + w.coatN * v.z : v;
+}
+// The cosine C and Wc take: the coat's (clamped to [0, 1]: C(0) bounds every angle).
+WF_INLINE float coatCosine(LayerLobes w, vec3 vM) {
+    return w.coatTilted ? clamp(dot(vM, w.coatN), 0.0f, 1.0f) : abs(vM.z);
+}
+#endif
 
 #if WF_HAS_SHEEN
 // min(1, S(mu)): the albedo of the normalised sheen lobe is at most this.
@@ -113,7 +152,8 @@ WF_INLINE float sheenScale(LayerLobes w, float muO, float muI) {
     return 1.0f;
 }
 
-WF_INLINE LayerLobes layerLobes(BsdfParams m, BsdfLayers layers, float muO) {
+WF_INLINE LayerLobes layerLobes(BsdfParams m, BsdfLayers layers, vec3 wo) {
+    float muO = abs(wo.z);
     LayerLobes w;
     w.coat = layers.clearcoat;
     w.coatDelta = layers.clearcoatRoughness == 0.0f;
@@ -124,7 +164,20 @@ WF_INLINE LayerLobes layerLobes(BsdfParams m, BsdfLayers layers, float muO) {
     w.coatPower = 2.84f + 5.15f * d * d;
     w.sheen = maxComponent(layers.sheenColor);
     w.sheenRoughness = layers.sheenRoughness;
-    float eCoat = w.coat > 0.0f ? w.coat * coatAlbedoBound(w, muO) : 0.0f;
+#if WF_HAS_CLEARCOAT_NORMAL_MAPS
+    // The coat's normal mirrored with wo (see layeredSample): (side x, side y, z), or the
+    // base's where it does not point above the base's horizon.
+    float side = wo.z < 0.0f ? -1.0f : 1.0f;
+    vec3 cn = layers.coatNormal;
+    w.coatTilted = cn.z > 0.0f && cn != vec3(0.0f, 0.0f, 1.0f);
+    w.coatN = w.coatTilted ? normalize(vec3(side * cn.x, side * cn.y, cn.z))
+                           : vec3(0.0f, 0.0f, 1.0f);
+    buildOrthonormalBasis(w.coatN, w.coatT, w.coatB);
+    float muCoat = coatCosine(w, vec3(wo.x, wo.y, muO));
+#else
+    float muCoat = muO;
+#endif
+    float eCoat = w.coat > 0.0f ? w.coat * coatAlbedoBound(w, muCoat) : 0.0f;
     float eSheen = 0.0f;
 #if WF_HAS_SHEEN
     w.sheenAlpha = sheenAlpha(layers.sheenRoughness);
@@ -174,7 +227,15 @@ WF_INLINE vec3 layersEvalMirrored(BsdfLayers layers, LayerLobes w, vec3 woM, vec
 #endif
 #if WF_HAS_CLEARCOAT
     if (w.coat > 0.0f && !w.coatDelta) {
+#if WF_HAS_CLEARCOAT_NORMAL_MAPS
+        vec3 woC = toCoatFrame(w, woM);
+        vec3 wiC = toCoatFrame(w, wiM);
+        if (woC.z > 0.0f && wiC.z > 0.0f) {
+            f += vec3(coatReflection(w, woC, wiC) * (wiC.z / wiM.z));
+        }
+#else
         f += vec3(coatReflection(w, woM, wiM));
+#endif
     }
 #endif
     return f;
@@ -187,7 +248,15 @@ WF_INLINE float layersPdfMirrored(LayerLobes w, vec3 woM, vec3 wiM) {
 #endif
 #if WF_HAS_CLEARCOAT
     if (w.pCoat > 0.0f && !w.coatDelta) {
+#if WF_HAS_CLEARCOAT_NORMAL_MAPS
+        vec3 woC = toCoatFrame(w, woM);
+        vec3 wiC = toCoatFrame(w, wiM);
+        if (woC.z > 0.0f && wiC.z > 0.0f) {
+            pdf += w.pCoat * coatReflectionPdf(w, woC, wiC);
+        }
+#else
         pdf += w.pCoat * coatReflectionPdf(w, woM, wiM);
+#endif
     }
 #endif
     return pdf;
@@ -196,7 +265,12 @@ WF_INLINE float layersPdfMirrored(LayerLobes w, vec3 woM, vec3 wiM) {
 WF_INLINE vec3 layeredEvalWith(BsdfParams m, BsdfLayers layers, LayerLobes w, vec3 wo, vec3 wi) {
     float muO = abs(wo.z);
     float muI = abs(wi.z);
+#if WF_HAS_CLEARCOAT_NORMAL_MAPS
+    float wc = coatScale(w, coatCosine(w, vec3(wo.x, wo.y, muO)),
+                         coatCosine(w, vec3(wi.x, wi.y, muI)));
+#else
     float wc = coatScale(w, muO, muI);
+#endif
     vec3 f = bsdfEval(m, wo, wi) * (wc * sheenScale(w, muO, muI));
     float side = wo.z < 0.0f ? -1.0f : 1.0f;
     if (side * wi.z > 0.0f) {
@@ -220,7 +294,7 @@ WF_INLINE vec3 layeredEval(BsdfParams m, BsdfLayers layers, vec3 wo, vec3 wi) {
     }
     m = bsdfSanitize(m);
     layers = layersSanitize(layers);
-    return layeredEvalWith(m, layers, layerLobes(m, layers, abs(wo.z)), wo, wi);
+    return layeredEvalWith(m, layers, layerLobes(m, layers, wo), wo, wi);
 }
 
 WF_INLINE float layeredPdf(BsdfParams m, BsdfLayers layers, vec3 wo, vec3 wi) {
@@ -229,7 +303,7 @@ WF_INLINE float layeredPdf(BsdfParams m, BsdfLayers layers, vec3 wo, vec3 wi) {
     }
     m = bsdfSanitize(m);
     layers = layersSanitize(layers);
-    return layeredPdfWith(m, layerLobes(m, layers, abs(wo.z)), wo, wi);
+    return layeredPdfWith(m, layerLobes(m, layers, wo), wo, wi);
 }
 
 WF_INLINE bool layeredSample(BsdfParams m, BsdfLayers layers, vec3 wo, float uLobe, vec2 u,
@@ -242,10 +316,36 @@ WF_INLINE bool layeredSample(BsdfParams m, BsdfLayers layers, vec3 wo, float uLo
     layers = layersSanitize(layers);
     float side = wo.z < 0.0f ? -1.0f : 1.0f;
     vec3 woM = vec3(wo.x, wo.y, abs(wo.z));
-    LayerLobes w = layerLobes(m, layers, woM.z);
+    LayerLobes w = layerLobes(m, layers, wo);
     vec3 wiM;
     float eta = 1.0f;
     if (uLobe < w.pCoat) {
+#if WF_HAS_CLEARCOAT_NORMAL_MAPS
+        // In the coat's frame, then back; what leaves below the base's horizon is lost.
+        vec3 woC = toCoatFrame(w, woM);
+        if (!(woC.z > 0.0f)) {
+            return false;
+        }
+        if (w.coatDelta) {
+            wiM = fromCoatFrame(w, vec3(-woC.x, -woC.y, woC.z));
+            if (!(wiM.z > 0.0f)) {
+                return false;
+            }
+            s.wi = vec3(wiM.x, wiM.y, side * wiM.z);
+            s.isDelta = true;
+            s.pdf = w.pCoat;
+            float f = WF_COAT_F0 + (1.0f - WF_COAT_F0) * schlickWeight(woC.z);
+            s.weight = vec3(w.coat * f / w.pCoat);
+            return true;
+        }
+        vec3 h = ggxSampleVisibleNormal(woC, w.coatAlpha, u);
+        float c = dot(woC, h);
+        vec3 wiC = 2.0f * c * h - woC;
+        wiM = fromCoatFrame(w, wiC);
+        if (!(c > 0.0f) || !(wiC.z > 0.0f) || !(wiM.z > 0.0f)) {
+            return false; // masked, or below the base's horizon
+        }
+#else
         if (w.coatDelta) {
             s.wi = vec3(-wo.x, -wo.y, wo.z);
             s.isDelta = true;
@@ -260,6 +360,7 @@ WF_INLINE bool layeredSample(BsdfParams m, BsdfLayers layers, vec3 wo, float uLo
         if (!(c > 0.0f) || !(wiM.z > 0.0f)) {
             return false; // reflected below the surface: masked
         }
+#endif
     } else if (uLobe < w.pCoat + w.pSheen) {
         wiM = sampleCosineHemisphere(u);
     } else {
@@ -270,7 +371,13 @@ WF_INLINE bool layeredSample(BsdfParams m, BsdfLayers layers, vec3 wo, float uLo
         }
         if (b.isDelta) {
             float muI = abs(b.wi.z);
+#if WF_HAS_CLEARCOAT_NORMAL_MAPS
+            float scale =
+                coatScale(w, coatCosine(w, woM), coatCosine(w, vec3(b.wi.x, b.wi.y, muI))) *
+                sheenScale(w, woM.z, muI);
+#else
             float scale = coatScale(w, woM.z, muI) * sheenScale(w, woM.z, muI);
+#endif
             s.wi = b.wi;
             s.isDelta = true;
             s.pdf = w.pBase * b.pdf;

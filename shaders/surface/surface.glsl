@@ -6,7 +6,8 @@
 // WF_HAS_TEXTURES multiplies the factors by their textures (glTF metallic-roughness: B is
 // metalness, G roughness; colour textures are sRGB-decoded in textures.glsl), and
 // WF_HAS_SPECULAR_TEXTURES the KHR_materials_specular maps. WF_HAS_CLEARCOAT, WF_HAS_SHEEN and
-// WF_HAS_VOLUME carry those extensions' factors (their textures are not supported).
+// WF_HAS_VOLUME carry those extensions' factors, and WF_HAS_CLEARCOAT_TEXTURES,
+// _CLEARCOAT_NORMAL_MAPS, _SHEEN_TEXTURES and _THICKNESS_TEXTURES their textures.
 #include "surface/textures.glsl"
 
 struct SurfaceHit {
@@ -30,6 +31,9 @@ struct SurfaceHit {
 #if WF_HAS_CLEARCOAT
     float clearcoat;
     float clearcoatRoughness;
+#if WF_HAS_CLEARCOAT_NORMAL_MAPS
+    vec3 coatNormal; // unit, same side as ng: the coat's own normal map, else equal to ns
+#endif
 #endif
 #if WF_HAS_SHEEN
     vec3 sheenColor;
@@ -129,6 +133,46 @@ vec3 frontShadingNormal(Instance instance, uint triangleIndex, Material material
 #endif
     return n;
 }
+
+#if WF_HAS_CLEARCOAT_NORMAL_MAPS
+// KHR_materials_clearcoat's clearcoatNormalTexture on the front side: the interpolated vertex
+// normal perturbed by the coat's own map (the base's normal map does not reach the coat), as
+// frontShadingNormal does for the base; written apart so scenes without coat maps keep that
+// function as it was.
+vec3 frontCoatNormal(Instance instance, uint triangleIndex, Material material, float b1,
+                     float b2, vec3 ng, float footprint) {
+    vec3 n = ng;
+#if WF_HAS_NORMALS
+    TriangleNormals corners = triangleNormalsAt(triangleIndex);
+    float b0 = 1.0 - b1 - b2;
+    vec3 sum = b0 * normalToWorld(instance, decodeUnit(corners.n0)) +
+               b1 * normalToWorld(instance, decodeUnit(corners.n1)) +
+               b2 * normalToWorld(instance, decodeUnit(corners.n2));
+    float len = length(sum);
+    n = len > 1e-6 ? sum / len : ng;
+#endif
+#if WF_HAS_NORMAL_MAPS
+    TriangleTangents frame = triangleTangentsAt(triangleIndex);
+    vec3 t = vectorToWorld(instance, (1.0 - b1 - b2) * decodeUnit(frame.t0) +
+                                         b1 * decodeUnit(frame.t1) + b2 * decodeUnit(frame.t2));
+    t -= n * dot(n, t);
+    float tLen = length(t);
+    if (tLen > 1e-6) {
+        t /= tLen;
+        bool flipped = ((frame.signs & 1u) != 0u) != instanceMirrors(instance);
+        vec3 b = cross(n, t) * (flipped ? -1.0 : 1.0);
+        vec3 m = surfaceTexture(material.clearcoatNormalTexture, triangleIndex, b1, b2,
+                                footprint).xyz;
+        m = m * 2.0 - 1.0;
+        m.xy *= material.clearcoatNormalScale;
+        vec3 mapped = t * m.x + b * m.y + n * m.z;
+        float mLen = length(mapped);
+        n = mLen > 1e-6 ? mapped / mLen : n;
+    }
+#endif
+    return n;
+}
+#endif
 
 // Emitted radiance of a triangle's front at barycentrics (b1, b2): emissiveFactor x strength x
 // emissiveTexture. Light sampling should use this too, so that NEE and BSDF hits agree.
@@ -256,13 +300,49 @@ SurfaceHit loadSurface(uint instanceIndex, uint triangleIndex, float b1, float b
 #if WF_HAS_CLEARCOAT
     s.clearcoat = material.clearcoat;
     s.clearcoatRoughness = material.clearcoatRoughness;
+#if WF_HAS_TEXTURES && WF_HAS_CLEARCOAT_TEXTURES
+    // KHR_materials_clearcoat: the strength in R, the roughness in G.
+    if (material.clearcoatTexture != WF_NO_TEXTURE)
+        s.clearcoat *= surfaceTexture(material.clearcoatTexture, triangleIndex, b1, b2,
+                                      footprint).r;
+    if (material.clearcoatRoughnessTexture != WF_NO_TEXTURE)
+        s.clearcoatRoughness *= surfaceTexture(material.clearcoatRoughnessTexture, triangleIndex,
+                                               b1, b2, footprint).g;
+#endif
+#if WF_HAS_CLEARCOAT_NORMAL_MAPS
+    s.coatNormal = s.ns; // the base's shading normal, unless the coat has its own map
+    if (material.clearcoatNormalTexture != WF_NO_TEXTURE) {
+        vec3 coat = frontCoatNormal(instance, triangleIndex, material, b1, b2, ng, footprint);
+        s.coatNormal = s.frontFace ? coat : -coat;
+        if (!(dot(s.coatNormal, s.ng) > 0.0))
+            s.coatNormal = s.ng;
+    }
+#endif
 #endif
 #if WF_HAS_SHEEN
     s.sheenColor = material.sheenColor;
     s.sheenRoughness = material.sheenRoughness;
+#if WF_HAS_TEXTURES && WF_HAS_SHEEN_TEXTURES
+    // KHR_materials_sheen: the colour in RGB (sRGB), the roughness in A.
+    if (material.sheenColorTexture != WF_NO_TEXTURE)
+        s.sheenColor *= surfaceTexture(material.sheenColorTexture, triangleIndex, b1, b2,
+                                       footprint).rgb;
+    if (material.sheenRoughnessTexture != WF_NO_TEXTURE)
+        s.sheenRoughness *= surfaceTexture(material.sheenRoughnessTexture, triangleIndex, b1, b2,
+                                           footprint).a;
+#endif
 #endif
 #if WF_HAS_VOLUME
+#if WF_HAS_TEXTURES && WF_HAS_THICKNESS_TEXTURES
+    // KHR_materials_volume: the thickness in G; where it is 0 the surface is thin-walled.
+    float thickness = material.thickness;
+    if (thickness > 0.0 && material.thicknessTexture != WF_NO_TEXTURE)
+        thickness *= surfaceTexture(material.thicknessTexture, triangleIndex, b1, b2,
+                                    footprint).g;
+    s.absorption = thickness > 0.0 ? material.attenuation : vec3(0.0);
+#else
     s.absorption = material.thickness > 0.0 ? material.attenuation : vec3(0.0);
+#endif
 #endif
 #if WF_HAS_IRIDESCENCE
     s.iridescence = material.iridescence;

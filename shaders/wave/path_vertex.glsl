@@ -163,7 +163,11 @@ BsdfParams bsdfAt(SurfaceHit surface) {
 
 #if WF_BSDF_LAYERS
 BsdfLayers layersAt(SurfaceHit surface) {
+#if WF_HAS_CLEARCOAT_NORMAL_MAPS
+    BsdfLayers layers = BsdfLayers(0.0, 0.0, vec3(0.0), 0.0, vec3(0.0, 0.0, 1.0));
+#else
     BsdfLayers layers = BsdfLayers(0.0, 0.0, vec3(0.0), 0.0);
+#endif
 #if WF_HAS_CLEARCOAT
     layers.clearcoat = surface.clearcoat;
     layers.clearcoatRoughness = surface.clearcoatRoughness;
@@ -263,6 +267,13 @@ void shadePathVertex(inout PathVertex v) {
     vec3 tangent, bitangent;
     buildOrthonormalBasis(n, tangent, bitangent);
     vec3 woLocal = vec3(dot(wo, tangent), dot(wo, bitangent), dot(wo, n));
+#if WF_BSDF_LAYERS && WF_HAS_CLEARCOAT && WF_HAS_CLEARCOAT_NORMAL_MAPS
+    // The coat's own normal in this frame (flipped with it); (0, 0, 1) exactly without one.
+    if (surface.coatNormal != surface.ns) {
+        vec3 coat = flip ? -surface.coatNormal : surface.coatNormal;
+        layers.coatNormal = vec3(dot(coat, tangent), dot(coat, bitangent), dot(coat, n));
+    }
+#endif
 #if WF_LIGHT_TREE
     // The light tree weighs lights by the side light can arrive from (both through glass).
     float receiver = surface.transmission > 0.0 ? 0.0 : encodeReceiverNormal(n);

@@ -61,13 +61,22 @@ ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& se
     // Material extensions compile in only where some material uses them (zero factors stay
     // zero whatever their textures hold; absorption acts only inside transmissive meshes).
     for (const Material& m : scene.materials) {
-        variant.clearcoat |= m.clearcoat > 0.0f;
-        variant.sheen |= std::max({m.sheenColor.x, m.sheenColor.y, m.sheenColor.z}) > 0.0f;
+        const bool coat = m.clearcoat > 0.0f;
+        const bool sheen = std::max({m.sheenColor.x, m.sheenColor.y, m.sheenColor.z}) > 0.0f;
+        const bool volume = m.transmission > 0.0f && m.thickness > 0.0f &&
+                            std::max({m.attenuation.x, m.attenuation.y, m.attenuation.z}) > 0.0f;
+        variant.clearcoat |= coat;
+        variant.sheen |= sheen;
         variant.iridescence |= m.iridescence > 0.0f;
-        variant.volume |= m.transmission > 0.0f && m.thickness > 0.0f &&
-                          std::max({m.attenuation.x, m.attenuation.y, m.attenuation.z}) > 0.0f;
+        variant.volume |= volume;
         variant.specularTextures |=
             m.specularTexture != WF_NO_TEXTURE || m.specularColorTexture != WF_NO_TEXTURE;
+        variant.clearcoatTextures |= coat && (m.clearcoatTexture != WF_NO_TEXTURE ||
+                                              m.clearcoatRoughnessTexture != WF_NO_TEXTURE);
+        variant.clearcoatNormalMaps |= coat && m.clearcoatNormalTexture != WF_NO_TEXTURE;
+        variant.sheenTextures |= sheen && (m.sheenColorTexture != WF_NO_TEXTURE ||
+                                           m.sheenRoughnessTexture != WF_NO_TEXTURE);
+        variant.thicknessTextures |= volume && m.thicknessTexture != WF_NO_TEXTURE;
     }
     // The smallest register stack that holds the tree's stack need (bvh_traverse.h).
     const uint32_t need = scene.bvhStats.stackNeed;
@@ -119,6 +128,10 @@ ShaderDefines ShaderVariant::defines() const {
             {"WF_HAS_IRIDESCENCE", flag(iridescence)},
             {"WF_HAS_VOLUME", flag(volume)},
             {"WF_HAS_SPECULAR_TEXTURES", flag(specularTextures && surface.textures)},
+            {"WF_HAS_CLEARCOAT_TEXTURES", flag(clearcoatTextures && surface.textures)},
+            {"WF_HAS_CLEARCOAT_NORMAL_MAPS", flag(clearcoatNormalMaps && surface.normalMaps)},
+            {"WF_HAS_SHEEN_TEXTURES", flag(sheenTextures && surface.textures)},
+            {"WF_HAS_THICKNESS_TEXTURES", flag(thicknessTextures && surface.textures)},
             {"WF_HAS_TEXTURES", flag(surface.textures)},
             {"WF_TEXEL_PAGES", std::to_string(surface.texelPages)},
             {"WF_HAS_TEXCOORD1", flag(surface.texcoord1)},

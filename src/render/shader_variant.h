@@ -47,6 +47,13 @@ struct ShaderVariant {
     bool iridescence = false;         // WF_HAS_IRIDESCENCE: some material has a thin film
     bool volume = false;              // WF_HAS_VOLUME: some transmissive material absorbs
     bool specularTextures = false;    // WF_HAS_SPECULAR_TEXTURES: KHR_materials_specular maps
+    // The layers' and volume's textures (issue 48), each only where a material with the layer
+    // on has one: WF_HAS_CLEARCOAT_TEXTURES (coat, coat roughness), _CLEARCOAT_NORMAL_MAPS,
+    // _SHEEN_TEXTURES (colour, roughness), _THICKNESS_TEXTURES.
+    bool clearcoatTextures = false;
+    bool clearcoatNormalMaps = false;
+    bool sheenTextures = false;
+    bool thicknessTextures = false;
     SurfaceFeatures surface;          // textures, normals, alpha: set by the renderer
     SamplerKind sampler = kDefaultSampler; // WF_SAMPLER (rng.h)
     bool randomizeSamples = true;     // WF_SAMPLER_RANDOMIZE: off for --no-randomize

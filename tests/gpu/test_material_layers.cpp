@@ -2,10 +2,12 @@
 // KHR_materials_volume's Beer-Lambert attenuation through an index-matched box of absorbing
 // glass equals exp(-sigma_a L) x background; the KHR_materials_specular textures scale the
 // factors; coated and sheened spheres in the white furnace never outshine the environment.
+// (The layers' own textures: test_layer_textures.cpp.)
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <string>
 
 #include "analytic_scenes.h"
@@ -97,26 +99,29 @@ TEST(MaterialLayers, SceneWithoutThemCompilesNoneOfTheirCode) {
     const ShaderDefines& defines = renderer.shaderDefines();
     for (const char* name :
          {"WF_HAS_CLEARCOAT", "WF_HAS_SHEEN", "WF_HAS_VOLUME", "WF_HAS_SPECULAR_TEXTURES",
-          "WF_HAS_IRIDESCENCE"})
+          "WF_HAS_IRIDESCENCE", "WF_HAS_CLEARCOAT_TEXTURES", "WF_HAS_CLEARCOAT_NORMAL_MAPS",
+          "WF_HAS_SHEEN_TEXTURES", "WF_HAS_THICKNESS_TEXTURES"})
         EXPECT_EQ(defineValue(defines, name), "0") << name;
     const char* layerCode[] = {"layeredSample", "coatReflection", "sheenLobe", "sheenAlbedoNode",
-                               "absorption", "fresnelIridescence"};
+                               "absorption", "fresnelIridescence", "frontCoatNormal",
+                               "toCoatFrame"};
     for (const char* pass : {"shade.comp", "megakernel.comp"}) {
         const std::vector<uint32_t> spirv = compiler.compile(pass, defines).spirv;
         for (const char* name : layerCode)
             EXPECT_FALSE(spirvMentions(spirv, name)) << pass << " has " << name;
     }
     // Each switch brings its own code and only that (so the check above can fail).
-    auto with = [&](const char* name) {
+    auto with = [&](std::initializer_list<const char*> names) {
         ShaderDefines on = defines;
         for (auto& [key, value] : on)
-            if (key == name)
-                value = "1";
+            for (const char* name : names)
+                if (key == name)
+                    value = "1";
         return compiler.compile("shade.comp", on).spirv;
     };
-    const std::vector<uint32_t> coat = with("WF_HAS_CLEARCOAT"), sheen = with("WF_HAS_SHEEN"),
-                                volume = with("WF_HAS_VOLUME"),
-                                film = with("WF_HAS_IRIDESCENCE");
+    const std::vector<uint32_t> coat = with({"WF_HAS_CLEARCOAT"}), sheen = with({"WF_HAS_SHEEN"}),
+                                volume = with({"WF_HAS_VOLUME"}),
+                                film = with({"WF_HAS_IRIDESCENCE"});
     EXPECT_TRUE(spirvMentions(coat, "coatReflection"));
     EXPECT_FALSE(spirvMentions(coat, "sheenLobe"));
     EXPECT_TRUE(spirvMentions(sheen, "sheenLobe"));
@@ -125,12 +130,30 @@ TEST(MaterialLayers, SceneWithoutThemCompilesNoneOfTheirCode) {
     EXPECT_FALSE(spirvMentions(volume, "layeredSample"));
     EXPECT_TRUE(spirvMentions(film, "fresnelIridescence"));
     EXPECT_FALSE(spirvMentions(film, "layeredSample"));
+    // The layers' textures (issue 48): each switch changes the code of a textured variant with
+    // its layer, the coat's normal map bringing its own frame; none is in the plain coat.
+    EXPECT_FALSE(spirvMentions(coat, "toCoatFrame"));
+    const std::vector<uint32_t> texturedCoat = with({"WF_HAS_CLEARCOAT", "WF_HAS_TEXTURES"});
+    EXPECT_NE(with({"WF_HAS_CLEARCOAT", "WF_HAS_TEXTURES", "WF_HAS_CLEARCOAT_TEXTURES"}),
+              texturedCoat);
+    const std::vector<uint32_t> coatMaps =
+        with({"WF_HAS_CLEARCOAT", "WF_HAS_TEXTURES", "WF_HAS_NORMALS", "WF_HAS_NORMAL_MAPS",
+              "WF_HAS_CLEARCOAT_NORMAL_MAPS"});
+    EXPECT_TRUE(spirvMentions(coatMaps, "frontCoatNormal"));
+    EXPECT_TRUE(spirvMentions(coatMaps, "toCoatFrame"));
+    EXPECT_NE(with({"WF_HAS_SHEEN", "WF_HAS_TEXTURES", "WF_HAS_SHEEN_TEXTURES"}),
+              with({"WF_HAS_SHEEN", "WF_HAS_TEXTURES"}));
+    EXPECT_NE(with({"WF_HAS_VOLUME", "WF_HAS_TEXTURES", "WF_HAS_THICKNESS_TEXTURES"}),
+              with({"WF_HAS_VOLUME", "WF_HAS_TEXTURES"}));
     // Every switch at once, in both shading passes (the host builds such variants too).
     ShaderDefines all = defines;
     for (auto& [key, value] : all)
         if (key == "WF_HAS_CLEARCOAT" || key == "WF_HAS_SHEEN" || key == "WF_HAS_VOLUME" ||
             key == "WF_HAS_SPECULAR_TEXTURES" || key == "WF_HAS_TEXTURES" ||
-            key == "WF_HAS_IRIDESCENCE")
+            key == "WF_HAS_IRIDESCENCE" || key == "WF_HAS_CLEARCOAT_TEXTURES" ||
+            key == "WF_HAS_CLEARCOAT_NORMAL_MAPS" || key == "WF_HAS_SHEEN_TEXTURES" ||
+            key == "WF_HAS_THICKNESS_TEXTURES" || key == "WF_HAS_NORMALS" ||
+            key == "WF_HAS_NORMAL_MAPS")
             value = "1";
     for (const char* pass : {"shade.comp", "megakernel.comp"})
         EXPECT_TRUE(spirvMentions(compiler.compile(pass, all).spirv, "layeredSample")) << pass;
