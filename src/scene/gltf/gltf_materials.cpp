@@ -335,14 +335,11 @@ bool isSupportedExtension(const std::string& name) {
 }
 
 std::vector<uint32_t*> textureFields(Material& m) {
-    return {&m.baseColorTexture,          &m.metallicRoughnessTexture,
-            &m.normalTexture,             &m.emissiveTexture,
-            &m.transmissionTexture,       &m.specularTexture,
-            &m.specularColorTexture,      &m.iridescenceTexture,
-            &m.iridescenceThicknessTexture, &m.clearcoatTexture,
-            &m.clearcoatRoughnessTexture, &m.clearcoatNormalTexture,
-            &m.sheenColorTexture,         &m.sheenRoughnessTexture,
-            &m.thicknessTexture};
+    return {&m.baseColorTexture,     &m.metallicRoughnessTexture, &m.normalTexture,
+            &m.emissiveTexture,      &m.transmissionTexture,      &m.specularTexture,
+            &m.specularColorTexture, &m.iridescenceTexture,       &m.iridescenceThicknessTexture,
+            &m.clearcoatTexture,     &m.clearcoatRoughnessTexture, &m.clearcoatNormalTexture,
+            &m.sheenColorTexture,    &m.sheenRoughnessTexture,    &m.thicknessTexture};
 }
 
 Material defaultMaterial() {
