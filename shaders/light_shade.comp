@@ -115,6 +115,12 @@ void shadeLightVertex(inout LightVertex v) {
     vec3 tangent, bitangent;
     buildOrthonormalBasis(n, tangent, bitangent);
     vec3 toLightLocal = vec3(dot(toLight, tangent), dot(toLight, bitangent), dot(toLight, n));
+#if WF_BSDF_LAYERS && WF_HAS_CLEARCOAT && WF_HAS_CLEARCOAT_NORMAL_MAPS
+    if (surface.coatNormal != surface.ns) { // as path_vertex.glsl
+        vec3 coat = flip ? -surface.coatNormal : surface.coatNormal;
+        layers.coatNormal = vec3(dot(coat, tangent), dot(coat, bitangent), dot(coat, n));
+    }
+#endif
 
     // The connection to the camera makes a path of depth + 2 segments.
     CameraConnection c;

@@ -92,6 +92,12 @@ bool bdptConnect(BdptCameraVertex c, uint path, uint depth, uint d, out vec3 ori
     vec3 lt, lb;
     buildOrthonormalBasis(ln, lt, lb);
     vec3 toLightLocal = vec3(dot(toLight, lt), dot(toLight, lb), dot(toLight, ln));
+#if WF_BSDF_LAYERS && WF_HAS_CLEARCOAT && WF_HAS_CLEARCOAT_NORMAL_MAPS
+    if (s.coatNormal != s.ns) { // as path_vertex.glsl
+        vec3 coat = flip ? -s.coatNormal : s.coatNormal;
+        lightLayers.coatNormal = vec3(dot(coat, lt), dot(coat, lb), dot(coat, ln));
+    }
+#endif
     vec3 toCameraLocal = vec3(dot(-w, lt), dot(-w, lb), dot(-w, ln));
     vec3 wCamera = vec3(dot(w, c.tangent), dot(w, c.bitangent), dot(w, c.n));
 

@@ -43,6 +43,10 @@ void requireLightTracingSupport(const RenderSettings& settings, const PreparedSc
                "splats do not keep; render a fixed --spp");
     if (scene.motionSegments > 0)
         refuse("motion blur (--shutter) is not traced by light subpaths yet");
+    for (const Material& m : scene.materials)
+        if (m.clearcoat > 0.0f && m.clearcoatNormalTexture != WF_NO_TEXTURE)
+            refuse("a clear coat with its own normal map is not reciprocal, and light subpaths "
+                   "do not sample its adjoint yet");
     gpu_types::CameraGeometry camera{};
     camera.tanHalfFovY = std::tan(0.5f * scene.camera.yfov);
     camera.orthoHalfHeight = scene.camera.orthoHalfHeight;
