@@ -13,7 +13,7 @@
 #include "render/samplers/sampler_tables.h"
 #include "render/gpu_scene/scene_buffers.h"
 #include "render/wave_recorder.h"
-#include "shaders/bidir/camera_importance.h"
+#include "render/integrator_support.h"
 #include "passes/workgroup.h"
 #include "shaders/types/render_types.h"
 #include "shaders/sampling/sampler_tables.h"
@@ -23,38 +23,6 @@ namespace wf {
 using gpu_types::PassConstants;
 using gpu_types::QueueCounters;
 using gpu_types::RenderParams;
-
-namespace {
-
-// What light tracing (--integrator light) does not take yet, or cannot: one line each.
-void requireLightTracingSupport(const RenderSettings& settings, const PreparedScene& scene) {
-    const auto refuse = [&](const std::string& what) {
-        throw UsageError(std::string("--integrator ") + integratorName(settings.integrator) +
-                         ": " + what);
-    };
-    if (settings.megakernel)
-        refuse("no megakernel of it exists; bench it without --compare-megakernel");
-    if (settings.traversal == Traversal::RayTracing)
-        refuse("its passes trace by the project's BVH only; use --traversal bvh");
-    if (settings.guiding)
-        refuse("path guiding is not combined with light subpaths; use --guiding off");
-    if (settings.pixelList)
-        refuse("--target-error and adaptive sampling need per-pixel sample counts, which light "
-               "splats do not keep; render a fixed --spp");
-    if (scene.motionSegments > 0)
-        refuse("motion blur (--shutter) is not traced by light subpaths yet");
-    for (const Material& m : scene.materials)
-        if (m.clearcoat > 0.0f && m.clearcoatNormalTexture != WF_NO_TEXTURE)
-            refuse("a clear coat with its own normal map is not reciprocal, and light subpaths "
-                   "do not sample its adjoint yet");
-    gpu_types::CameraGeometry camera{};
-    camera.tanHalfFovY = std::tan(0.5f * scene.camera.yfov);
-    camera.orthoHalfHeight = scene.camera.orthoHalfHeight;
-    if (!gpu_types::cameraConnectable(camera))
-        refuse("an orthographic camera has no lens that light paths can connect to");
-}
-
-} // namespace
 
 WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene& scene,
                                      const RenderSettings& settings,
@@ -80,7 +48,7 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
     pixelCount_ = static_cast<uint32_t>(pixels);
     const bool lightTracing = settings.integrator != Integrator::Path;
     if (lightTracing) {
-        requireLightTracingSupport(settings, scene);
+        requireIntegratorSupport(settings, scene);
         if (pixels > maxPaths)
             throw UsageError("--integrator light traces a whole sample of the image per wave: "
                              "at most " + std::to_string(maxPaths) + " pixels");

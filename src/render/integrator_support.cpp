@@ -1,0 +1,43 @@
+#include "render/integrator_support.h"
+
+#include <cmath>
+#include <string>
+
+#include "errors.h"
+#include "render/gpu_scene/scene_buffers.h"
+#include "scene/scene.h"
+#include "shaders/bidir/camera_importance.h"
+
+namespace wf {
+
+void requireIntegratorSupport(const RenderSettings& settings, const PreparedScene& scene) {
+    if (settings.integrator == Integrator::Path)
+        return;
+    const auto refuse = [&](const std::string& what) {
+        throw UsageError(std::string("--integrator ") + integratorName(settings.integrator) +
+                         ": " + what);
+    };
+    if (settings.megakernel)
+        refuse("no megakernel of it exists; bench it without --compare-megakernel");
+    if (settings.traversal == Traversal::RayTracing)
+        refuse("its passes trace by the project's BVH only; use --traversal bvh");
+    if (settings.guiding)
+        refuse("path guiding is not combined with light subpaths; use --guiding off");
+    if (settings.pixelList)
+        refuse("--target-error and adaptive sampling need per-pixel sample counts, which light "
+               "splats do not keep; render a fixed --spp");
+    if (scene.motionSegments > 0)
+        refuse("motion blur (--shutter) is not traced by light subpaths yet");
+    for (const Material& m : scene.materials)
+        if (m.clearcoat > 0.0f && m.clearcoatNormalTexture != WF_NO_TEXTURE)
+            refuse("a clear coat with its own normal map is not reciprocal, and light subpaths "
+                   "do not sample its adjoint yet");
+    gpu_types::CameraGeometry camera{};
+    camera.tanHalfFovY = std::tan(0.5f * scene.camera.yfov);
+    camera.orthoHalfHeight = scene.camera.orthoHalfHeight;
+    if (!gpu_types::cameraConnectable(camera))
+        refuse("an orthographic camera has no lens that light paths can connect to");
+}
+
+
+} // namespace wf
