@@ -13,6 +13,7 @@
 
 #include "errors.h"
 #include "gpu_test_util.h"
+#include "image/error_metrics.h"
 #include "instanced_scene.h"
 #include "scene/gltf/gltf_loader.h"
 #include "scene/lights/light_table.h"
@@ -183,6 +184,32 @@ TEST_P(Bidirectional, RefusesWhatItCannotTrace) {
     Scene orthographic = cornell;
     orthographic.camera.orthoHalfHeight = 1.0f;
     EXPECT_THROW(renderScene(orthographic, settingsFor(GetParam(), 4, 1)), UsageError);
+}
+
+TEST_P(Bidirectional, ErrorEstimateStaysCalibratedWithSplats) {
+    // A pixel's samples are its camera values plus the splats of their sample index's light
+    // subpaths into it (accumulate.comp), so the film's moments (independent samples) and the
+    // replicates (a correlated sampler) measure the error the splats carry too.
+    const Scene scene = laboratoryScene("cornell_box");
+    RenderSettings referenceSettings = settingsFor(Integrator::Path, 4096, 4242);
+    const std::vector<float> reference = renderScene(scene, referenceSettings).rgb;
+    int reliable = 0;
+    for (SamplerKind sampler : {SamplerKind::Independent, SamplerKind::Sobol})
+        for (uint32_t seed = 1; seed <= 3; ++seed) {
+            RenderSettings settings = settingsFor(GetParam(), 64, seed);
+            settings.sampler = sampler;
+            settings.errorReplicates = 2; // the independent sampler ignores it
+            const RenderResult result = renderScene(scene, settings);
+            const double measured = imageError(result.rgb, reference).relMse;
+            const ErrorEstimate& e = result.estimate;
+            EXPECT_FALSE(e.upperBound);
+            if (!e.reliable)
+                continue;
+            ++reliable;
+            EXPECT_GE(e.relMse / measured, 0.7) << samplerName(sampler) << " seed " << seed;
+            EXPECT_LE(e.relMse / measured, 1.4) << samplerName(sampler) << " seed " << seed;
+        }
+    EXPECT_GE(reliable, 4);
 }
 
 INSTANTIATE_TEST_SUITE_P(Integrators, Bidirectional,
