@@ -91,13 +91,16 @@ def _write_obj(path, points):
         np.savetxt(f, faces, fmt="f %d %d %d")
 
 
-def scene_dict(mi, gltf_path, folder, width, height, spp, max_depth, rr_depth):
+def scene_dict(mi, gltf_path, folder, width, height, spp, max_depth, rr_depth,
+               integrator="path"):
     import json
     with open(gltf_path) as f:
         doc = json.load(f)
     buffers = _buffers(doc, os.path.dirname(gltf_path))
     corners = {}  # material index -> list of (3n, 3) arrays
     camera = None
+    spheres = []  # (centre, radius, radiance): KHR_lights_punctual lights with extras.radius
+    lights = doc.get("extensions", {}).get("KHR_lights_punctual", {}).get("lights", [])
     for index in doc["scenes"][doc.get("scene", 0)]["nodes"]:
         node = doc["nodes"][index]
         if node.get("children"):
@@ -105,6 +108,15 @@ def scene_dict(mi, gltf_path, folder, width, height, spp, max_depth, rr_depth):
         m = _node_matrix(node)
         if "camera" in node:
             camera = (doc["cameras"][node["camera"]], m)
+        light = node.get("extensions", {}).get("KHR_lights_punctual", {}).get("light")
+        if light is not None:
+            radius = lights[light].get("extras", {}).get("radius", 0.0)
+            if lights[light].get("type") != "point" or radius <= 0.0:
+                raise ValueError("only sphere lights (point lights with extras.radius) are read")
+            # Wavefront's sphere light: radiance intensity / (pi R^2) over its surface.
+            value = [c * lights[light].get("intensity", 1.0) / (math.pi * radius * radius)
+                     for c in lights[light].get("color", [1.0, 1.0, 1.0])]
+            spheres.append((m[:3, 3].tolist(), radius, value))
         if "mesh" not in node:
             continue
         for prim in doc["meshes"][node["mesh"]]["primitives"]:
@@ -122,7 +134,8 @@ def scene_dict(mi, gltf_path, folder, width, height, spp, max_depth, rr_depth):
     up = m[:3, :3] @ np.array([0.0, 1.0, 0.0])
     scene = {
         "type": "scene",
-        "integrator": {"type": "path", "max_depth": max_depth, "rr_depth": rr_depth},
+        # path, or ptracer (Mitsuba's light tracer, which also sees emitters directly).
+        "integrator": {"type": integrator, "max_depth": max_depth, "rr_depth": rr_depth},
         "sensor": {
             "type": "perspective", "fov": math.degrees(cam["perspective"]["yfov"]),
             "fov_axis": "y",
@@ -146,4 +159,8 @@ def scene_dict(mi, gltf_path, folder, width, height, spp, max_depth, rr_depth):
             shape["emitter"] = {"type": "area", "radiance": {
                 "type": "rgb", "value": [e * strength for e in emission]}}
         scene["material_%d" % material_index] = shape
+    for k, (centre, radius, value) in enumerate(spheres):
+        scene["sphere_light_%d" % k] = {
+            "type": "sphere", "center": centre, "radius": radius,
+            "emitter": {"type": "area", "radiance": {"type": "rgb", "value": value}}}
     return scene

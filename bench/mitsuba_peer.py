@@ -7,9 +7,9 @@ needs `pip install mitsuba` (into a virtual environment of your own, not the pro
 
     python3 -m venv /tmp/mi && /tmp/mi/bin/pip install mitsuba==3.9.1 numpy
     /tmp/mi/bin/python bench/mitsuba_peer.py [--variant scalar_rgb|llvm_ad_rgb|cuda_ad_rgb]
-        [--scene cornell|mirror-glass|mesh|tiny-light|lamps|instances] [--wavefront build/wavefront] [--width 256]
+        [--scene cornell|mirror-glass|mesh|tiny-light|lamps|instances|glass-caustic] [--wavefront build/wavefront] [--width 256]
         [--spp 64] [--max-depth 8] [--reference-spp 512] [--repeats 3] [--sampler NAME]
-        [--guiding on|off] [--json bench/results/peer.json]
+        [--guiding on|off] [--integrator path|light|bdpt] [--json bench/results/peer.json]
 
 `llvm_ad_rgb` (Dr.Jit's LLVM JIT, vectorised: what a CPU user would pick) needs an LLVM that
 Dr.Jit can drive: on Debian 12 `apt install libllvm19`; the script points DRJIT_LIBLLVM_PATH at
@@ -27,6 +27,10 @@ A third row times Wavefront with Mitsuba's own estimator (`--sampler independent
 --triangle-sampling area`: independent random numbers, the light sampled by area, as Mitsuba's
 path integrator does), so that paths/s compares the same work; its relMSE is measured against
 Wavefront's reference (the same expectation).
+
+`--integrator light|bdpt` renders Wavefront's timed row with light tracing or bidirectional path
+tracing (its reference stays the path tracer's: the same expectation); `light` is then also
+timed against Mitsuba's own light tracer (`ptracer`) as a fourth row.
 
 `--guiding on` renders Wavefront's timed row with path guiding (its training inside the timed
 seconds, as the EXR header's `renderSeconds` counts it); its reference, the matched-estimator row and the
@@ -59,6 +63,8 @@ SCENE_KINDS = {
     "tiny-light": "the box lit by a light 1/100 the area, the same power (NEE carries it)",
     "lamps": "the box lit by 1,024 small lamps (many emitters)",
     "instances": "64 placements of one 17,688-triangle sphere (two-level BVH)",
+    "glass-caustic": "the laboratory's glass ball on a floor under a small sphere light "
+                     "(a caustic)",
 }
 SCENES = tuple(SCENE_KINDS)
 
@@ -67,6 +73,8 @@ def write_scene(name, folder):
     """The glTF both renderers render (SCENE_KINDS says what each is); the path of the file."""
     if name == "cornell":
         return os.path.join(ROOT, "scenes", "cornell_box.gltf")
+    if name == "glass-caustic":
+        return os.path.join(ROOT, "scenes", "glass_caustic.gltf")
     path = os.path.join(folder, name + ".gltf")
     if name == "mesh":
         g, _, _ = scaling.build(300000, 1, False, 0)
@@ -174,9 +182,10 @@ def find_libllvm19():
     return next((f for f in files if f.endswith("libLLVM.so.19.1")), None)
 
 
-def render_mitsuba(mi, gltf, folder, width, height, spp, max_depth, rr_depth, seed=0):
+def render_mitsuba(mi, gltf, folder, width, height, spp, max_depth, rr_depth, seed=0,
+                   integrator="path"):
     scene = mi.load_dict(gltf_to_mitsuba.scene_dict(mi, gltf, folder, width, height, spp,
-                                                    max_depth, rr_depth))
+                                                    max_depth, rr_depth, integrator))
     start = time.perf_counter()
     image = np.array(mi.render(scene, spp=spp, seed=seed), dtype=np.float64)[:, :, :3]
     return image, time.perf_counter() - start
@@ -230,6 +239,8 @@ def main():
                         "Mitsuba's is independent)")
     parser.add_argument("--guiding", default="off", choices=["off", "on"],
                         help="Wavefront's --guiding for its timed row (default off)")
+    parser.add_argument("--integrator", default="path", choices=["path", "light", "bdpt"],
+                        help="Wavefront's --integrator for its timed row (default path)")
     parser.add_argument("--repeats", type=int, default=3,
                         help="timed renders of each, alternating (median time, mean relMSE)")
     parser.add_argument("--json", help="write the numbers here")
@@ -264,13 +275,20 @@ def main():
                                             "reference", ref_seed, args.sampler)
         # Timed renders alternate between the two, each with its own seed, so that a drift in
         # the machine's speed (other tenants) falls on both; times are medians, errors means.
-        mi_runs, wf_runs, matched_runs = [], [], []
+        mi_runs, wf_runs, matched_runs, ptracer_runs = [], [], [], []
+        if args.integrator == "light":  # compile ptracer's kernels untimed too
+            render_mitsuba(mi, gltf, folder, w, h, 4, depth, args.rr_depth + 1, ref_seed + 1,
+                           "ptracer")
         for seed in range(args.repeats):
+            if args.integrator == "light":
+                ptracer_runs.append(render_mitsuba(mi, gltf, folder, w, h, spp, depth,
+                                                   args.rr_depth + 1, seed, "ptracer"))
             mi_runs.append(render_mitsuba(mi, gltf, folder, w, h, spp, depth, args.rr_depth + 1,
                                           seed))
             wf_runs.append(render_wavefront(mi, args.wavefront, gltf, folder, w, h, spp, depth,
                                             args.rr_depth, "test", seed, args.sampler,
-                                            flags=["--guiding", args.guiding]))
+                                            flags=["--guiding", args.guiding,
+                                                   "--integrator", args.integrator]))
             matched_runs.append(render_wavefront(mi, args.wavefront, gltf, folder, w, h, spp,
                                                  depth, args.rr_depth, "matched", seed,
                                                  flags=MITSUBA_ESTIMATOR))
@@ -278,8 +296,11 @@ def main():
     paths = w * h * spp
     rows = {}
     matched_name = "Wavefront, Mitsuba's estimator"
-    for name, runs, ref in ((mitsuba_name, mi_runs, mi_ref),
-                            ("Wavefront", wf_runs, wf_ref), (matched_name, matched_runs, wf_ref)):
+    timed = [(mitsuba_name, mi_runs, mi_ref), ("Wavefront", wf_runs, wf_ref),
+             (matched_name, matched_runs, wf_ref)]
+    if ptracer_runs:  # Mitsuba's light tracer, against Mitsuba's own reference
+        timed.append((mitsuba_name + " ptracer", ptracer_runs, mi_ref))
+    for name, runs, ref in timed:
         seconds = float(np.median([run[1] for run in runs]))
         err = float(np.mean([rel_mse(run[0], ref) for run in runs]))
         rows[name] = {"seconds": seconds, "pathsPerSecond": paths / seconds, "relMSE": err,
@@ -291,8 +312,9 @@ def main():
                   rows["Wavefront"]["relMSETimesSeconds"])
     matched = rows[matched_name]["pathsPerSecond"] / rows[mitsuba_name]["pathsPerSecond"]
     print("%s %dx%d, %d spp, max depth %d; references %d spp; %d alternating timed renders "
-          "each (median seconds, mean relMSE); Wavefront guiding %s" % (
-              args.scene, w, h, spp, depth, args.reference_spp, args.repeats, args.guiding))
+          "each (median seconds, mean relMSE); Wavefront guiding %s, integrator %s" % (
+              args.scene, w, h, spp, depth, args.reference_spp, args.repeats, args.guiding,
+              args.integrator))
     print("| renderer | seconds | paths/s | relMSE | relMSE x seconds | image mean |")
     print("|---|---|---|---|---|---|")
     for name, r in rows.items():
@@ -306,6 +328,11 @@ def main():
         ratio, efficiency))
     print("Wavefront with Mitsuba's estimator / Mitsuba: %.3f paths/s" % matched)
     print("wavefront / megakernel (bench, same run): %.3f" % bench["wavefrontOverMegakernel"])
+    ptracer_efficiency = None
+    if ptracer_runs:
+        ptracer = rows[mitsuba_name + " ptracer"]
+        ptracer_efficiency = ptracer["relMSETimesSeconds"] / rows["Wavefront"]["relMSETimesSeconds"]
+        print("Wavefront light / Mitsuba ptracer: %.3f efficiency" % ptracer_efficiency)
     if args.json:
         with open(args.json, "w") as f:
             json.dump({"mitsubaVariant": args.variant, "scene": args.scene,
@@ -313,6 +340,8 @@ def main():
                        "referenceSpp": args.reference_spp, "repeats": args.repeats,
                        "wavefrontSampler": args.sampler or "default",
                        "wavefrontGuiding": args.guiding,
+                       "wavefrontIntegrator": args.integrator,
+                       "wavefrontOverPtracerEfficiency": ptracer_efficiency,
                        "renderers": rows,
                        "referencesRelMSE": check, "wavefrontOverMitsubaPathsPerSecond": ratio,
                        "wavefrontOverMitsubaEfficiency": efficiency,
