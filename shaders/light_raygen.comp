@@ -39,7 +39,10 @@ void main() {
         if (emits) {
             rayOrigin[path] = wfPack(vec4(ray.origin, 0.0));
             rayDirection[path] = wfPack(vec4(ray.direction, 0.0));
-            throughput[path] = wfPack(vec4(ray.beta, 1.0));
+            // w: the emitted throughput's largest channel, what Russian roulette measures
+            // the subpath's throughput against (light_shade.comp).
+            throughput[path] =
+                wfPack(vec4(ray.beta, max(ray.beta.r, max(ray.beta.g, ray.beta.b))));
 #if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
             bdptStartLightSubpath(path, ray);
 #endif

@@ -46,6 +46,7 @@ struct LightVertex {
     vec3 origin;
     vec3 direction;   // the way light travels
     vec3 beta;        // emitted cos / pdfs x the adjoint BSDF's sample weights so far
+    float betaStart;  // the largest channel of beta as emitted (Russian roulette's scale)
 #if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
     uint path;
     vec4 mis;         // pathMis: the subpath's MIS quantities (bdpt_state.glsl), in and out
@@ -192,12 +193,14 @@ void shadeLightVertex(inout LightVertex v) {
     vec3 beta = v.beta * s.weight *
                 adjointThroughputFactor(surface.ns, surface.ng, toLight, wi, s.eta);
     if (v.depth >= params.rrDepth) {
-        float survive = min(max(beta.r, max(beta.g, beta.b)), 1.0);
+        // Relative to the emitted throughput, which carries the light's power (far above 1):
+        // survival falls as the subpath loses what it started with, as a camera path's does.
+        float survive = min(max(beta.r, max(beta.g, beta.b)) / v.betaStart, 1.0);
         beta = lightVertexSample1D(v.pixel, v.sampleIndex, v.depth, WF_DIM_ROULETTE) < survive
                    ? beta / survive
                    : vec3(0.0);
     }
-    if (max(beta.r, max(beta.g, beta.b)) < params.minThroughput)
+    if (max(beta.r, max(beta.g, beta.b)) < params.minThroughput * v.betaStart)
         beta = vec3(0.0);
     v.continues = any(greaterThan(beta, vec3(0.0)));
     if (v.continues) {
@@ -221,7 +224,9 @@ void main() {
         v.hit = hitAt(index);
         v.origin = rayOriginAt(path).xyz;
         v.direction = rayDirectionAt(path).xyz;
-        v.beta = throughputAt(path).rgb;
+        vec4 pathThroughput = throughputAt(path);
+        v.beta = pathThroughput.rgb;
+        v.betaStart = pathThroughput.w;
 #if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
         v.path = path;
         v.mis = pathMis[path];
@@ -230,7 +235,7 @@ void main() {
         if (v.continues) {
             rayOrigin[path] = wfPack(vec4(v.origin, 0.0));
             rayDirection[path] = wfPack(vec4(v.direction, 0.0));
-            throughput[path] = wfPack(vec4(v.beta, 1.0));
+            throughput[path] = wfPack(vec4(v.beta, v.betaStart));
 #if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
             pathMis[path] = v.mis;
 #endif
