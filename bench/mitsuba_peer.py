@@ -28,9 +28,10 @@ A third row times Wavefront with Mitsuba's own estimator (`--sampler independent
 path integrator does), so that paths/s compares the same work; its relMSE is measured against
 Wavefront's reference (the same expectation).
 
-`--integrator light|bdpt` renders Wavefront's timed row with light tracing or bidirectional path
-tracing (its reference stays the path tracer's: the same expectation); `light` is then also
-timed against Mitsuba's own light tracer (`ptracer`) as a fourth row.
+`--integrator light|bdpt` renders Wavefront's timed row and its reference with light tracing or
+bidirectional path tracing (the matched-estimator row, measured against that reference, stays
+the path tracer: the same expectation); `light` is then also timed against Mitsuba's own light
+tracer (`ptracer`) as a fourth row.
 
 `--guiding on` renders Wavefront's timed row with path guiding (its training inside the timed
 seconds, as the EXR header's `renderSeconds` counts it); its reference, the matched-estimator row and the
@@ -270,9 +271,12 @@ def main():
         render_mitsuba(mi, gltf, folder, w, h, 4, depth, args.rr_depth + 1, ref_seed + 1)
         mi_ref, mi_ref_s = render_mitsuba(mi, gltf, folder, w, h, args.reference_spp, depth,
                                           args.rr_depth + 1, ref_seed)
+        # With the timed row's integrator: the same expectation as the path tracer's, and on
+        # scenes of specular chains far less noise at the same samples.
         wf_ref, wf_ref_s = render_wavefront(mi, args.wavefront, gltf, folder, w, h,
                                             args.reference_spp, depth, args.rr_depth,
-                                            "reference", ref_seed, args.sampler)
+                                            "reference", ref_seed, args.sampler,
+                                            flags=["--integrator", args.integrator])
         # Timed renders alternate between the two, each with its own seed, so that a drift in
         # the machine's speed (other tenants) falls on both; times are medians, errors means.
         mi_runs, wf_runs, matched_runs, ptracer_runs = [], [], [], []
