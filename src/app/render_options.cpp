@@ -105,15 +105,18 @@ OptionSpec traversalOption() {
             "auto (default: rt where the device has ray-tracing pipelines and is a GPU, else "
             "bvh; on lavapipe bvh measured faster), bvh (the project's BVH in compute) or rt "
             "(the driver's acceleration structures through ray-tracing pipelines; refused "
-            "where the device has none, and with --shutter; auto takes bvh with --shutter)"};
+            "where the device has none, and with --shutter or --integrator light|bdpt; auto takes "
+            "bvh with them)"};
 }
 
 RayTracingRequest traversalRequest(const ParsedArgs& parsed) {
     const std::string mode = parsed.choiceValue("--traversal", "auto", {"auto", "bvh", "rt"});
-    // Motion blur runs in the project's BVH only (motion.glsl), so auto takes it there.
-    return mode == "rt"                           ? RayTracingRequest::Required
-           : mode == "bvh" || parsed.has("--shutter") ? RayTracingRequest::Off
-                                                      : RayTracingRequest::Auto;
+    // Motion blur and light subpaths run in the project's BVH only (motion.glsl,
+    // light_splat.comp), so auto takes it there.
+    const bool lightSubpaths = parsed.value("--integrator").value_or("path") != "path";
+    return mode == "rt" ? RayTracingRequest::Required
+           : mode == "bvh" || parsed.has("--shutter") || lightSubpaths ? RayTracingRequest::Off
+                                                                      : RayTracingRequest::Auto;
 }
 
 Traversal traversalFor(const Context& context) {

@@ -96,6 +96,12 @@ void samplingRows(RenderSettings& render, OverlayActions& actions) {
         render.sampler = allSamplers()[size_t(sampler)];
         actions.renderChanged = true;
     }
+    // Integrator's order: path, light, bdpt.
+    int integrator = int(render.integrator);
+    if (ImGui::Combo("--integrator", &integrator, "path\0light\0bdpt\0")) {
+        render.integrator = Integrator(integrator);
+        actions.renderChanged = true;
+    }
     int lightSampling = int(render.lightSampling);
     if (ImGui::Combo("--light-sampling", &lightSampling, "bsdf\0nee\0mis\0")) {
         render.lightSampling = LightSampling(lightSampling);

@@ -161,8 +161,10 @@ bool Viewer::fitWindow(bool force) {
 void Viewer::rebuildTargets() {
     RenderSettings render = settings_.render;
     // The context enabled ray tracing only where --traversal (or auto's rule) picked it.
-    render.traversal =
-        context_.rayTracingEnabled() ? Traversal::RayTracing : Traversal::Bvh;
+    // Light subpaths trace by the project's BVH only (integrator_support.cpp).
+    render.traversal = context_.rayTracingEnabled() && render.integrator == Integrator::Path
+                           ? Traversal::RayTracing
+                           : Traversal::Bvh;
     if (samplerIsFiniteSet(render.sampler)) // the set is what the viewer will accumulate
         render.sampleSetSize = settings_.effectiveSppLimit();
     ViewerGuide::resolve(render, scene_.prepared);
@@ -203,8 +205,17 @@ void Viewer::applyKeys(const WindowEvents& events) {
 }
 
 void Viewer::applyOverlay(const OverlayActions& actions) {
-    if (actions.renderChanged)
-        rebuildTargets();
+    if (actions.renderChanged) {
+        try {
+            rebuildTargets();
+        } catch (const UsageError& error) {
+            // A switch this scene refuses (an integrator with an orthographic camera): say so
+            // and keep the path tracer.
+            std::fprintf(stderr, "wavefront: %s; back to --integrator path\n", error.what());
+            settings_.render.integrator = Integrator::Path;
+            rebuildTargets();
+        }
+    }
     if (actions.targetChanged)
         targets_.setTargetSeconds(settings_.targetMs / 1000.0);
     if (actions.selectCamera >= 0)

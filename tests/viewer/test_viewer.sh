@@ -116,6 +116,14 @@ if "$wavefront" render "$cornell" --width 8 --spp 1 --traversal rt -o "$work/pro
         --spp 8
 fi
 
+# Bidirectional path tracing: whole samples per frame, the same image as render's.
+run "view-bdpt" 0 "$wavefront" view "$cornell" "${common[@]}" "${slow[@]}" --integrator bdpt \
+    --width 64 --height 48 --until-done --no-overlay --screenshot "$work/view-bdpt.exr"
+run "render-bdpt" 0 "$wavefront" render "$cornell" "${common[@]}" --integrator bdpt \
+    --width 64 --height 48 -o "$work/render-bdpt.exr" --quiet
+check "bdpt view matches bdpt render" "$compare" "$work/view-bdpt.exr" "$work/render-bdpt.exr" \
+    --spp 8
+
 # A finite-set sampler: the viewer's set is its --spp, as render's is.
 run "view-stratified" 0 "$wavefront" view "$cornell" "${common[@]}" "${slow[@]}" \
     --sampler stratified \
