@@ -100,6 +100,14 @@ check "render --integrator light" 0 "$wavefront" render "$cornell" -o "$work/lig
 expect "light: integrator in the EXR header" grep -qa "lightPaths" "$work/light.exr"
 expect "light: both counts in the JSON" json_has "$work/light.json" \
     "d['integrator'] == 'light' and d['lightPaths'] == d['cameraSamples'] == 4 * 8 * 8"
+check "bdpt part 1" 0 "$wavefront" render "$cornell" -o "$work/b0.exr" --spp 2 --width 8 \
+    --spp-total 4 --integrator bdpt -q
+check "bdpt part 2" 0 "$wavefront" render "$cornell" -o "$work/b1.exr" --spp 2 --width 8 \
+    --spp-offset 2 --spp-total 4 --integrator bdpt -q
+check "bdpt parts merge" 0 "$wavefront" merge "$work/b0.exr" "$work/b1.exr" -o "$work/b.exr" -q
+check "a light part does not merge with a bdpt part" 2 "$wavefront" merge "$work/b0.exr" \
+    "$work/light.exr" -o "$work/x.exr" -q
+expect "light and bdpt parts: one line" one_line_error
 check "light with --target-error" 2 "$wavefront" render "$cornell" -o "$work/x.exr" \
     --integrator light --target-error 0.01 --width 8
 expect "light with --target-error: one line" one_line_error
