@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "errors.h"
+#include "analytic_scenes.h"
 #include "gpu_test_util.h"
 #include "image/error_metrics.h"
 #include "instanced_scene.h"
@@ -210,6 +211,65 @@ TEST_P(Bidirectional, ErrorEstimateStaysCalibratedWithSplats) {
             EXPECT_LE(e.relMse / measured, 1.4) << samplerName(sampler) << " seed " << seed;
         }
     EXPECT_GE(reliable, 4);
+}
+
+TEST_P(Bidirectional, WhiteFurnaceSphereUnderAnEnvironment) {
+    // Light subpaths from the environment (its disk over the scene's bounds) onto a white
+    // Lambertian sphere that fills the view: every pixel sees exactly the environment's L.
+    Material white{};
+    white.baseColor = glm::vec4(1.0f);
+    white.roughness = 1.0f;
+    white.ior = 1.5f;
+    white.specularColor = glm::vec3(1.0f);
+    RenderSettings settings = settingsFor(GetParam(), 64, 11);
+    settings.maxDepth = 40;
+    const RenderResult result = renderScene(furnaceSphere(white, 0.5f), settings);
+    const MeanAndError measured = imageMean(result.rgb);
+    EXPECT_EQ(result.stats.nonFiniteSamples, 0u);
+    EXPECT_NEAR(measured.mean, 0.5, 4.0 * measured.standardError + 1e-4);
+    EXPECT_LT(measured.standardError, 0.02); // so that 4 of them still tell
+}
+
+TEST(Bdpt, FloorUnderEveryLightKind) {
+    // Closed forms (analytic_scenes.h): a point, a spot and a directional light, a sphere light
+    // and an environment over a Lambertian floor, at max depth 2, over three seeds.
+    const float albedo = 0.5f;
+    Scene scene = floorScene(albedo);
+    scene.lights.push_back(pointLight({0.3f, 2.0f, -0.4f}, glm::vec3(5.0f)));
+    scene.lights.push_back(directionalLight({0.2f, -1.0f, 0.1f}, glm::vec3(2.0f)));
+    const glm::vec3 spotPosition(-0.2f, 1.5f, 0.1f);
+    PunctualLight spot = pointLight(spotPosition, glm::vec3(3.0f));
+    spot.type = WF_LIGHT_SPOT;
+    spot.direction = glm::normalize(-spotPosition);
+    spot.cosInner = std::cos(0.3f);
+    spot.cosOuter = std::cos(0.5f);
+    scene.lights.push_back(spot);
+    const float radius = 0.5f, height = 1.5f;
+    scene.lights.push_back(sphereLight({-1.0f, height, 0.5f}, radius, glm::vec3(4.0f)));
+    scene.environment = rowEnvironment(1, 1, nullptr);
+    scene.environment.rgb = {0.25f, 0.25f, 0.25f};
+    const glm::vec3 toPoint(0.3f, 2.0f, -0.4f), toSphere(-1.0f, height, 0.5f);
+    const double sphereRadiance = 4.0 / (M_PI * radius * radius);
+    const double sphereDistance = glm::length(toSphere);
+    // A sphere wholly above the horizon: E = pi L (R / d)^2 cos(theta).
+    const double irradiance =
+        5.0 * toPoint.y / std::pow(glm::length(toPoint), 3.0) +
+        2.0 * -glm::normalize(glm::vec3(0.2f, -1.0f, 0.1f)).y +
+        3.0 * spotPosition.y / std::pow(glm::length(spotPosition), 3.0) +
+        M_PI * sphereRadiance * radius * radius / (sphereDistance * sphereDistance) *
+            (height / sphereDistance) +
+        M_PI * 0.25;
+    const double expected = lambertRadiance(albedo, irradiance);
+    for (uint32_t seed = 0; seed < 3; ++seed) {
+        RenderSettings settings = settingsFor(Integrator::Bdpt, 32, 1000 + seed);
+        settings.width = settings.height = 24;
+        settings.maxDepth = 2;
+        const RenderResult result = renderScene(scene, settings);
+        const MeanAndError m = imageMean(result.rgb);
+        EXPECT_EQ(result.stats.nonFiniteSamples, 0u);
+        EXPECT_NEAR(m.mean, expected, 4.0 * m.standardError + 1e-4 * expected) << "seed " << seed;
+    }
+    EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Integrators, Bidirectional,
