@@ -30,8 +30,9 @@ Wavefront's reference (the same expectation).
 
 `--integrator light|bdpt` renders Wavefront's timed row and its reference with light tracing or
 bidirectional path tracing (the matched-estimator row, measured against that reference, stays
-the path tracer: the same expectation); `light` is then also timed against Mitsuba's own light
-tracer (`ptracer`) as a fourth row.
+the path tracer); `light` is then also timed against Mitsuba's own light tracer (`ptracer`, its
+relMSE against a ptracer reference: a light tracer leaves Dirac surfaces seen directly black)
+as a fourth row.
 
 `--guiding on` renders Wavefront's timed row with path guiding (its training inside the timed
 seconds, as the EXR header's `renderSeconds` counts it); its reference, the matched-estimator row and the
@@ -283,6 +284,10 @@ def main():
         if args.integrator == "light":  # compile ptracer's kernels untimed too
             render_mitsuba(mi, gltf, folder, w, h, 4, depth, args.rr_depth + 1, ref_seed + 1,
                            "ptracer")
+            # Its own reference: a light tracer leaves Dirac surfaces seen directly black, so
+            # its expectation is not the path tracer's.
+            ptracer_ref, _ = render_mitsuba(mi, gltf, folder, w, h, args.reference_spp, depth,
+                                            args.rr_depth + 1, ref_seed, "ptracer")
         for seed in range(args.repeats):
             if args.integrator == "light":
                 ptracer_runs.append(render_mitsuba(mi, gltf, folder, w, h, spp, depth,
@@ -300,13 +305,16 @@ def main():
     paths = w * h * spp
     rows = {}
     matched_name = "Wavefront, Mitsuba's estimator"
+    # With light tracing Wavefront's reference is not the path tracer's expectation: the
+    # matched (path-tracing) row then times paths only, its relMSE not measured (nan).
     timed = [(mitsuba_name, mi_runs, mi_ref), ("Wavefront", wf_runs, wf_ref),
-             (matched_name, matched_runs, wf_ref)]
-    if ptracer_runs:  # Mitsuba's light tracer, against Mitsuba's own reference
-        timed.append((mitsuba_name + " ptracer", ptracer_runs, mi_ref))
+             (matched_name, matched_runs, wf_ref if args.integrator != "light" else None)]
+    if ptracer_runs:  # Mitsuba's light tracer, against its own reference
+        timed.append((mitsuba_name + " ptracer", ptracer_runs, ptracer_ref))
     for name, runs, ref in timed:
         seconds = float(np.median([run[1] for run in runs]))
-        err = float(np.mean([rel_mse(run[0], ref) for run in runs]))
+        err = (float(np.mean([rel_mse(run[0], ref) for run in runs])) if ref is not None
+               else float("nan"))
         rows[name] = {"seconds": seconds, "pathsPerSecond": paths / seconds, "relMSE": err,
                       "relMSETimesSeconds": err * seconds,
                       "imageMean": float(np.mean([run[0].mean() for run in runs])),
