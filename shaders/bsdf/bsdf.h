@@ -14,7 +14,8 @@
 //                of the interface (F = specular beyond the critical angle: exact TIR)
 //   BTDF       = Walter et al. 2007, weighted 1 - max(F) at its microfacet.
 // GGX is Trowbridge-Reitz with height-correlated Smith G2, sampled by visible normals. Roughness
-// exactly 0 makes reflection and refraction Dirac lobes, with the same Schlick F.
+// exactly 0 makes reflection and refraction Dirac lobes, with the same Schlick F. Anisotropic
+// materials stretch all three lobes' GGX along the frame's x axis (anisotropy.h).
 //
 // One deliberate departure: the spec weights the diffuse base by 1 - specular max(F(wo.h)),
 // which reflects up to ~1.3 of the incident energy at grazing wo (roughness 0.2-0.3) and is
@@ -60,6 +61,9 @@
 #if WF_HAS_IRIDESCENCE
 #include "bsdf/iridescence.h"
 #endif
+// KHR_materials_anisotropy: the lobes' GGX takes (alpha_t, alpha_b) along the frame's x and y
+// where some material is anisotropic (WF_HAS_ANISOTROPY; always in the C++ tests).
+#include "bsdf/anisotropy.h"
 
 #ifdef __cplusplus
 namespace wf::gpu_types {
@@ -85,6 +89,13 @@ struct BsdfParams {
     float iridescenceThickness;
 #endif
 #endif
+#if WF_HAS_ANISOTROPY
+#ifdef __cplusplus
+    float anisotropy = 0.0f; // anisotropyStrength (x texture B) along the frame's +x axis
+#else
+    float anisotropy;
+#endif
+#endif
 };
 
 struct BsdfSample {
@@ -97,8 +108,12 @@ struct BsdfSample {
 
 // What eval, pdf and sample share for one material and side.
 struct BsdfLobes {
+#if WF_HAS_ANISOTROPY
+    vec2 alpha;         // (alpha_t, alpha_b) along x and y, each >= WF_GGX_MIN_ALPHA
+#else
     float alpha;        // GGX alpha, >= WF_GGX_MIN_ALPHA; unused by Dirac lobes
-    bool delta;         // roughness == 0
+#endif
+    bool delta;         // roughness == 0 (and anisotropy 0)
     bool indexMatched;  // ior == 1: transmission is a straight pass-through
     float etaRel;       // eta(far side) / eta(wo side)
     vec3 f0;            // dielectric F0
@@ -123,6 +138,9 @@ WF_INLINE BsdfParams bsdfSanitize(BsdfParams m) {
     m.iridescenceIor = max(m.iridescenceIor, 1.0f);
     m.iridescenceThickness = max(m.iridescenceThickness, 0.0f);
 #endif
+#if WF_HAS_ANISOTROPY
+    m.anisotropy = clamp(m.anisotropy, 0.0f, 1.0f);
+#endif
     return m;
 }
 
@@ -133,8 +151,14 @@ WF_INLINE float bsdfRefractiveIor(BsdfParams m) {
 
 WF_INLINE BsdfLobes bsdfLobes(BsdfParams m, bool inside) {
     BsdfLobes l;
+#if WF_HAS_ANISOTROPY
+    l.delta = m.roughness == 0.0f && m.anisotropy == 0.0f; // alpha_t = s^2 is not a Dirac lobe
+    l.alpha = anisotropicAlpha(m.roughness, m.anisotropy);
+    m.roughness = anisotropyCouplingRoughness(m.roughness, m.anisotropy); // for E(mu) below
+#else
     l.delta = m.roughness == 0.0f;
     l.alpha = max(m.roughness * m.roughness, WF_GGX_MIN_ALPHA);
+#endif
     float ior = bsdfRefractiveIor(m);
     l.indexMatched = abs(ior - 1.0f) < 1e-3f;
     l.etaRel = inside ? 1.0f / ior : ior;
@@ -527,7 +551,11 @@ WF_INLINE bool bsdfHasNonDelta(BsdfParams m) {
     if ((1.0f - m.metallic) * (1.0f - m.transmission) * albedo > 0.0f) {
         return true; // diffuse
     }
+#if WF_HAS_ANISOTROPY
+    if (m.roughness == 0.0f && m.anisotropy == 0.0f) {
+#else
     if (m.roughness == 0.0f) {
+#endif
         return false;
     }
     bool refracts = (1.0f - m.metallic) * m.transmission * albedo > 0.0f &&
