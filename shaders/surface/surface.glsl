@@ -47,6 +47,10 @@ struct SurfaceHit {
     float iridescenceIor;
     float iridescenceThickness; // nm: mix(minimum, maximum, texture G), or maximum
 #endif
+#if WF_HAS_ANISOTROPY
+    float anisotropy;             // KHR_materials_anisotropy strength x texture B
+    vec3 anisotropyDirection;     // world, in the surface's tangent plane; zero: none
+#endif
 };
 
 vec3 decodeUnit(uint packed) { return octDecode(unpackSnorm2x16(packed)); }
@@ -171,6 +175,44 @@ vec3 frontCoatNormal(Instance instance, uint triangleIndex, Material material, f
     }
 #endif
     return n;
+}
+#endif
+
+#if WF_HAS_ANISOTROPY
+// KHR_materials_anisotropy at the hit: the strength (factor x texture B) and the direction in
+// world space, (1, 0) or the texture's RG * 2 - 1 in the tangent frame, rotated by
+// anisotropyRotation. The frame is the normal map's (TANGENT or MikkTSpace, Gram-Schmidt
+// against the shading normal n); without tangent data, an arbitrary one around n.
+void anisotropyAt(Instance instance, uint triangleIndex, Material material, float b1, float b2,
+                  vec3 n, float footprint, out float strength, out vec3 direction) {
+    strength = material.anisotropyStrength;
+    vec2 d = vec2(1.0, 0.0);
+#if WF_HAS_TEXTURES
+    if (strength > 0.0 && material.anisotropyTexture != WF_NO_TEXTURE) {
+        vec3 texel = surfaceTexture(material.anisotropyTexture, triangleIndex, b1, b2,
+                                    footprint).rgb;
+        d = texel.rg * 2.0 - 1.0;
+        strength *= texel.b;
+    }
+#endif
+    vec2 r = material.anisotropyRotation; // (cos, sin): counter-clockwise
+    d = vec2(r.x * d.x - r.y * d.y, r.y * d.x + r.x * d.y);
+    vec3 t, b;
+    buildOrthonormalBasis(n, t, b);
+#if WF_HAS_TANGENTS || WF_HAS_NORMAL_MAPS
+    TriangleTangents frame = triangleTangentsAt(triangleIndex);
+    vec3 tangent = vectorToWorld(instance, (1.0 - b1 - b2) * decodeUnit(frame.t0) +
+                                               b1 * decodeUnit(frame.t1) +
+                                               b2 * decodeUnit(frame.t2));
+    tangent -= n * dot(n, tangent);
+    float tLen = length(tangent);
+    if (tLen > 1e-6) {
+        t = tangent / tLen;
+        bool flipped = ((frame.signs & 1u) != 0u) != instanceMirrors(instance);
+        b = cross(n, t) * (flipped ? -1.0 : 1.0);
+    }
+#endif
+    direction = t * d.x + b * d.y;
 }
 #endif
 
@@ -358,6 +400,10 @@ SurfaceHit loadSurface(uint instanceIndex, uint triangleIndex, float b1, float b
                                      surfaceTexture(material.iridescenceThicknessTexture,
                                                     triangleIndex, b1, b2, footprint).g);
 #endif
+#endif
+#if WF_HAS_ANISOTROPY
+    anisotropyAt(instance, triangleIndex, material, b1, b2, ns, footprint, s.anisotropy,
+                 s.anisotropyDirection);
 #endif
     s.baseColor = base.rgb;
     s.alpha = base.a;

@@ -129,6 +129,11 @@ Material materialAt(uint index) {
 #if WF_HAS_SHEEN_TEXTURES || WF_HAS_THICKNESS_TEXTURES
     t12 = wfTexel(materialTexels, base + 12u);
 #endif
+    // Anisotropy (texel 13): strength, texture, rotation (cos, sin).
+    uvec4 t13 = uvec4(0u, WF_NO_TEXTURE, floatBitsToUint(1.0), 0u);
+#if WF_HAS_ANISOTROPY
+    t13 = wfTexel(materialTexels, base + 13u);
+#endif
     return Material(uintBitsToFloat(t0), uintBitsToFloat(t1.xyz), t1.w, uintBitsToFloat(t2.x),
                     uintBitsToFloat(t2.y), uintBitsToFloat(t2.z), uintBitsToFloat(t2.w),
                     uintBitsToFloat(t3.xyz), uintBitsToFloat(t3.w), uintBitsToFloat(t4.x),
@@ -137,7 +142,8 @@ Material materialAt(uint index) {
                     uintBitsToFloat(t7.w), uintBitsToFloat(t8.xyz), uintBitsToFloat(t8.w),
                     uintBitsToFloat(t9.x), uintBitsToFloat(t9.y), uintBitsToFloat(t9.z),
                     uintBitsToFloat(t9.w), t10.x, t10.y, t10.z, t10.w,
-                    t11.x, t11.y, t11.z, uintBitsToFloat(t11.w), t12.x, t12.y, t12.z, t12.w);
+                    t11.x, t11.y, t11.z, uintBitsToFloat(t11.w), t12.x, t12.y, t12.z, t12.w,
+                    uintBitsToFloat(t13.x), t13.y, uintBitsToFloat(t13.zw));
 }
 
 #if WF_HAS_INSTANCES

@@ -44,7 +44,7 @@ vec4 vertexColorAt(uint triangle, float b1, float b2) {
 }
 #endif
 
-#if WF_HAS_NORMAL_MAPS
+#if WF_HAS_NORMAL_MAPS || WF_HAS_TANGENTS
 #define WF_PAGED_NAME tangentTexel
 #define WF_PAGED_FORMAT rgba32ui
 #define WF_PAGED_BINDING WF_BINDING_TANGENTS

@@ -135,6 +135,12 @@ struct Material {
     uint sheenRoughnessTexture;     // its A channel multiplies sheenRoughness
     uint thicknessTexture;          // its G channel multiplies thickness
     uint pad3;
+    // KHR_materials_anisotropy (texel 13; read by shaders only where WF_HAS_ANISOTROPY). Kept
+    // in a block of its own at the end.
+    float anisotropyStrength; // anisotropyStrength; 0: isotropic
+    uint anisotropyTexture;   // RG: direction in the tangent frame ([-1, 1]); B x strength
+    vec2 anisotropyRotation;  // (cos, sin) of anisotropyRotation: counter-clockwise from the
+                              // tangent towards the bitangent
 };
 
 // Per-scene switches for the material extensions (ShaderVariant), off in shaders compiled
@@ -166,6 +172,9 @@ struct Material {
 #endif
 #ifndef WF_HAS_THICKNESS_TEXTURES
 #define WF_HAS_THICKNESS_TEXTURES 0
+#endif
+#ifndef WF_HAS_ANISOTROPY
+#define WF_HAS_ANISOTROPY 0
 #endif
 #endif
 
@@ -204,7 +213,7 @@ struct Emitter {
 #define WF_INSTANCE_PAGES 1
 #define WF_INSTANCE_PAGE_SHIFT 31
 #endif
-#define WF_MATERIAL_TEXELS 13u
+#define WF_MATERIAL_TEXELS 14u
 #define WF_INSTANCE_TEXELS 7u
 
 #ifdef __cplusplus
@@ -221,7 +230,7 @@ static_assert(offsetof(wf::gpu_types::Triangle, p2) == 32);
 static_assert(sizeof(wf::gpu_types::BvhNode) == 32);
 static_assert(offsetof(wf::gpu_types::BvhNode, hi) == 16);
 static_assert(offsetof(wf::gpu_types::BvhNode, count) == 28);
-static_assert(sizeof(wf::gpu_types::Material) == 208);
+static_assert(sizeof(wf::gpu_types::Material) == 224);
 static_assert(offsetof(wf::gpu_types::Material, emission) == 16);
 static_assert(offsetof(wf::gpu_types::Material, flags) == 28);
 static_assert(offsetof(wf::gpu_types::Material, specularColor) == 48);
@@ -243,6 +252,9 @@ static_assert(offsetof(wf::gpu_types::Material, clearcoatNormalScale) == 188);
 static_assert(offsetof(wf::gpu_types::Material, sheenColorTexture) == 192);
 static_assert(offsetof(wf::gpu_types::Material, thicknessTexture) == 200);
 static_assert(offsetof(wf::gpu_types::Material, pad3) == 204);
+static_assert(offsetof(wf::gpu_types::Material, anisotropyStrength) == 208);
+static_assert(offsetof(wf::gpu_types::Material, anisotropyTexture) == 212);
+static_assert(offsetof(wf::gpu_types::Material, anisotropyRotation) == 216);
 static_assert(sizeof(wf::gpu_types::Emitter) == 16);
 static_assert(sizeof(wf::gpu_types::Instance) == 16 * WF_INSTANCE_TEXELS);
 static_assert(offsetof(wf::gpu_types::Instance, worldFromObject0) == 48);

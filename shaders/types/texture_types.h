@@ -25,6 +25,9 @@
 #ifndef WF_HAS_NORMAL_MAPS
 #define WF_HAS_NORMAL_MAPS 0
 #endif
+#ifndef WF_HAS_TANGENTS // tangent frames for KHR_materials_anisotropy
+#define WF_HAS_TANGENTS 0
+#endif
 #ifndef WF_HAS_ALPHA_MASK
 #define WF_HAS_ALPHA_MASK 0
 #endif

@@ -158,6 +158,9 @@ BsdfParams bsdfAt(SurfaceHit surface) {
     bsdf.iridescenceIor = surface.iridescenceIor;
     bsdf.iridescenceThickness = surface.iridescenceThickness;
 #endif
+#if WF_HAS_ANISOTROPY
+    bsdf.anisotropy = surface.anisotropy; // along the shading frame's x axis (below)
+#endif
     return bsdf;
 }
 
@@ -266,6 +269,15 @@ void shadePathVertex(inout PathVertex v) {
     vec3 geometricOutside = flip ? -surface.ng : surface.ng;
     vec3 tangent, bitangent;
     buildOrthonormalBasis(n, tangent, bitangent);
+#if WF_HAS_ANISOTROPY
+    // The anisotropic BSDF stretches its lobes along the frame's x axis (bsdf/anisotropy.h):
+    // the material's direction, made orthogonal to the shading normal.
+    vec3 stretch = surface.anisotropyDirection - n * dot(n, surface.anisotropyDirection);
+    if (surface.anisotropy > 0.0 && dot(stretch, stretch) > 1e-12) {
+        tangent = normalize(stretch);
+        bitangent = cross(n, tangent);
+    }
+#endif
     vec3 woLocal = vec3(dot(wo, tangent), dot(wo, bitangent), dot(wo, n));
 #if WF_BSDF_LAYERS && WF_HAS_CLEARCOAT && WF_HAS_CLEARCOAT_NORMAL_MAPS
     // The coat's own normal in this frame (flipped with it); (0, 0, 1) exactly without one.

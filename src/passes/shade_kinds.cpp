@@ -15,7 +15,8 @@ ShadeKind shadeKind(const gpu_types::Material& m) {
     // No diffuse lobe, whatever the textures: (1 - metallic)(1 - transmission) is 0.
     const bool metal = m.metallic >= 1.0f && m.metallicRoughnessTexture == WF_NO_TEXTURE;
     const bool clear = m.transmission >= 1.0f && m.transmissionTexture == WF_NO_TEXTURE;
-    if (m.roughness <= 0.0f && (metal || clear))
+    // Anisotropy stretches even roughness 0 into a lobe with a density (alpha_t = s^2).
+    if (m.roughness <= 0.0f && m.anisotropyStrength <= 0.0f && (metal || clear))
         return ShadeKind::Specular;
     return ShadeKind::General;
 }

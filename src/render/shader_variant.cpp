@@ -68,6 +68,7 @@ ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& se
         variant.clearcoat |= coat;
         variant.sheen |= sheen;
         variant.iridescence |= m.iridescence > 0.0f;
+        variant.anisotropy |= m.anisotropyStrength > 0.0f;
         variant.volume |= volume;
         variant.specularTextures |=
             m.specularTexture != WF_NO_TEXTURE || m.specularColorTexture != WF_NO_TEXTURE;
@@ -164,6 +165,10 @@ ShaderDefines ShaderVariant::defines() const {
         defines.emplace_back("WF_MOTION", "1");
     if (integrator != Integrator::Path)
         defines.emplace_back("WF_INTEGRATOR", std::to_string(static_cast<int>(integrator)));
+    if (anisotropy) { // defined only then, so isotropic scenes' shaders are as before
+        defines.emplace_back("WF_HAS_ANISOTROPY", "1");
+        defines.emplace_back("WF_HAS_TANGENTS", flag(surface.tangents));
+    }
     if (shadeKinds != 0) {
         defines.push_back({"WF_SHADE_BINS", std::to_string(shadeBins())});
         defines.push_back({"WF_LIGHT_HIT_BIN", std::to_string(lightHitBin(shadeKinds))});

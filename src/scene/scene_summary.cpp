@@ -71,6 +71,7 @@ SceneSummary summarize(const Scene& scene) {
         summary.alphaMaskMaterials += (m.flags & WF_MATERIAL_ALPHA_MASK) != 0;
         summary.alphaBlendMaterials += (m.flags & WF_MATERIAL_ALPHA_BLEND) != 0;
         summary.transmissiveMaterials += m.transmission > 0.0f;
+        summary.anisotropicMaterials += m.anisotropyStrength > 0.0f;
     }
     return summary;
 }
@@ -122,7 +123,8 @@ std::string describe(const SceneSummary& summary) {
     text += "; vertex data: " + (vertexData.empty() ? "positions only" : vertexData);
     text += "; materials with " + listCounts({{summary.alphaMaskMaterials, "alpha mask"},
                                               {summary.alphaBlendMaterials, "alpha blend"},
-                                              {summary.transmissiveMaterials, "transmission"}},
+                                              {summary.transmissiveMaterials, "transmission"},
+                                              {summary.anisotropicMaterials, "anisotropic"}},
                                              "no alpha or transmission");
     text += ".";
     const size_t lights = summary.pointLights + summary.spotLights + summary.directionalLights +

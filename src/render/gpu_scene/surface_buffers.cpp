@@ -131,8 +131,10 @@ SurfaceFeatures surfaceFeatures(const SurfaceData& surface, const std::vector<Ma
     f.texcoord1 = f.textures && !surface.uv1.empty();
     f.normalMaps = !surface.tangents.empty() && f.textures && f.normals;
     f.vertexColors = !surface.colors.empty();
-    for (const Material& m : materials)
+    for (const Material& m : materials) {
         f.alphaMask |= (m.flags & (WF_MATERIAL_ALPHA_MASK | WF_MATERIAL_ALPHA_BLEND)) != 0;
+        f.tangents |= m.anisotropyStrength > 0.0f && !surface.tangents.empty();
+    }
     if (f.textures)
         f.texelPages = uint32_t(planTexels(surface, pageBytes).pageTexels.size());
     return f;
@@ -142,7 +144,7 @@ SurfaceBuffers::SurfaceBuffers(const Context& context, const SurfaceData& surfac
                                const SurfaceFeatures& features, const TablePages& trianglePages) {
     if (features.normals)
         normals_ = uploadPages(context, "vertex normals", surface.normals, trianglePages);
-    if (features.normalMaps)
+    if (features.normalMaps || features.tangents)
         tangents_ = uploadPages(context, "vertex tangents", surface.tangents, trianglePages);
     if (features.vertexColors)
         colors_ = uploadPages(context, "vertex colours", surface.colors, trianglePages);

@@ -51,6 +51,9 @@ struct SurfaceFeatures {
     bool normals = false;
     bool texcoord1 = false;
     bool normalMaps = false;
+    // Tangent frames bound for KHR_materials_anisotropy's direction (WF_HAS_TANGENTS), where
+    // some material is anisotropic and the scene has them.
+    bool tangents = false;
     bool vertexColors = false; // COLOR_0
     bool alphaMask = false; // some material is MASK or BLEND
     uint32_t texelPages = 0;

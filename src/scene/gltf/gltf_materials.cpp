@@ -20,6 +20,7 @@ const std::set<std::string> SUPPORTED_EXTENSIONS = {
     "KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_materials_transmission",
     "KHR_materials_specular", "KHR_materials_clearcoat", "KHR_materials_sheen",
     "KHR_materials_volume", "KHR_materials_iridescence", "KHR_texture_transform", "KHR_lights_punctual",
+    "KHR_materials_anisotropy",
     "KHR_mesh_quantization", "KHR_draco_mesh_compression", "EXT_meshopt_compression",
     "KHR_meshopt_compression", "KHR_materials_unlit", "EXT_texture_webp",
     "EXT_mesh_gpu_instancing", "KHR_materials_pbrSpecularGlossiness"};
@@ -51,6 +52,8 @@ private:
                        MaterialNeeds& needs);
     void convertIridescence(const tinygltf::Material& m, const std::string& name, Material& out,
                             MaterialNeeds& needs);
+    void convertAnisotropy(const tinygltf::Material& m, const std::string& name, Material& out,
+                           MaterialNeeds& needs);
     Material convert(const tinygltf::Material& m, const std::string& name, MaterialNeeds& needs);
     void makeUnlit(Material& out) const;
 
@@ -188,6 +191,31 @@ void MaterialConverter::convertIridescence(const tinygltf::Material& m, const st
         textures_.inExtension(film, "iridescenceThicknessTexture", false, name, needs);
 }
 
+// KHR_materials_anisotropy: GGX stretched along a direction in the tangent frame
+// (bsdf/anisotropy.h). Primitives using it get tangent frames as normal-mapped ones do.
+void MaterialConverter::convertAnisotropy(const tinygltf::Material& m, const std::string& name,
+                                          Material& out, MaterialNeeds& needs) {
+    const tinygltf::Value& anisotropy = extensionIn(m.extensions, "KHR_materials_anisotropy");
+    if (!anisotropy.IsObject()) {
+        return;
+    }
+    const double strength = jsonNumber(anisotropy, "anisotropyStrength", 0.0);
+    const double rotation = jsonNumber(anisotropy, "anisotropyRotation", 0.0);
+    checkRange(name, "anisotropyStrength", strength, 0.0, 1.0);
+    if (!std::isfinite(rotation)) { // any angle is valid glTF; a string or null is not
+        fail(file_, name + ": anisotropyRotation must be a number (radians)");
+    }
+    out.anisotropyStrength = float(strength);
+    out.anisotropyRotation = glm::vec2(float(std::cos(rotation)), float(std::sin(rotation)));
+    out.anisotropyTexture =
+        textures_.inExtension(anisotropy, "anisotropyTexture", false, name, needs);
+    if (out.anisotropyStrength > 0.0f && needs.normalMapTexCoord < 0) {
+        const bool uv1 = out.anisotropyTexture != WF_NO_TEXTURE &&
+                         (tables_.refs[out.anisotropyTexture].flags & WF_TEXTURE_TEXCOORD1);
+        needs.normalMapTexCoord = uv1 ? 1 : 0; // the tangents' UV set (the normal map's wins)
+    }
+}
+
 Material MaterialConverter::convert(const tinygltf::Material& m, const std::string& name,
                                     MaterialNeeds& needs) {
     const auto& pbr = m.pbrMetallicRoughness;
@@ -290,6 +318,7 @@ Material MaterialConverter::convert(const tinygltf::Material& m, const std::stri
                                "sets; the tangents follow normalTexture's");
         needs.normalMapTexCoord = set;
     }
+    convertAnisotropy(m, name, out, needs);
     if (extensionIn(m.extensions, "KHR_materials_unlit").IsObject())
         makeUnlit(out);
     return out;
@@ -314,6 +343,8 @@ void MaterialConverter::makeUnlit(Material& out) const {
     out.iridescenceTexture = out.iridescenceThicknessTexture = WF_NO_TEXTURE;
     out.clearcoatTexture = out.clearcoatRoughnessTexture = out.clearcoatNormalTexture =
         out.sheenColorTexture = out.sheenRoughnessTexture = out.thicknessTexture = WF_NO_TEXTURE;
+    out.anisotropyStrength = 0.0f;
+    out.anisotropyTexture = WF_NO_TEXTURE;
 }
 
 MaterialTables MaterialConverter::run() {
@@ -339,7 +370,8 @@ std::vector<uint32_t*> textureFields(Material& m) {
             &m.emissiveTexture,      &m.transmissionTexture,      &m.specularTexture,
             &m.specularColorTexture, &m.iridescenceTexture,       &m.iridescenceThicknessTexture,
             &m.clearcoatTexture,     &m.clearcoatRoughnessTexture, &m.clearcoatNormalTexture,
-            &m.sheenColorTexture,    &m.sheenRoughnessTexture,    &m.thicknessTexture};
+            &m.sheenColorTexture,    &m.sheenRoughnessTexture,    &m.thicknessTexture,
+            &m.anisotropyTexture};
 }
 
 Material defaultMaterial() {
@@ -363,6 +395,9 @@ Material defaultMaterial() {
     m.clearcoatTexture = m.clearcoatRoughnessTexture = m.clearcoatNormalTexture =
         m.sheenColorTexture = m.sheenRoughnessTexture = m.thicknessTexture = WF_NO_TEXTURE;
     m.clearcoatNormalScale = 1.0f;
+    m.anisotropyStrength = 0.0f; // isotropic; the extension's defaults otherwise
+    m.anisotropyTexture = WF_NO_TEXTURE;
+    m.anisotropyRotation = glm::vec2(1.0f, 0.0f);
     return m;
 }
 

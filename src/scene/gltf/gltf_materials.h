@@ -24,7 +24,8 @@ bool isSupportedExtension(const std::string& name);
 struct MaterialNeeds {
     bool uv0 = false;           // some texture samples TEXCOORD_0
     bool uv1 = false;           // ... or TEXCOORD_1
-    int normalMapTexCoord = -1; // UV set that tangents follow, -1 without a normal map
+    int normalMapTexCoord = -1; // UV set that tangents follow (the normal map's, else
+                                // KHR_materials_anisotropy's), -1 when none is needed
 };
 
 // An image made at load from a decoded glTF image (KHR_materials_pbrSpecularGlossiness): a

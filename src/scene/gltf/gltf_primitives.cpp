@@ -195,8 +195,10 @@ void PrimitiveBuilder::add(const tinygltf::Primitive& primitive, const std::stri
         return &array;
     };
     const FloatArray* normals = optional("NORMAL", 3, true);
-    const FloatArray* uvs[2] = {optional("TEXCOORD_0", 2, needs.uv0 || needs.uv1),
-                                optional("TEXCOORD_1", 2, needs.uv1)};
+    // Tangent frames follow a UV set even where no texture reads it (KHR_materials_anisotropy).
+    const FloatArray* uvs[2] = {
+        optional("TEXCOORD_0", 2, needs.uv0 || needs.uv1 || needs.normalMapTexCoord == 0),
+        optional("TEXCOORD_1", 2, needs.uv1 || needs.normalMapTexCoord == 1)};
     const bool normalMap = needs.normalMapTexCoord >= 0;
     const FloatArray* tangents = optional("TANGENT", 4, normalMap);
     // COLOR_0 is RGB or RGBA (float, or normalized unsigned byte or short).
