@@ -1,0 +1,33 @@
+// The glTF BSDF as shaders compile it for scenes without KHR_materials_anisotropy
+// (WF_HAS_ANISOTROPY 0), for test_anisotropy.cpp: at strength 0 the anisotropic build must
+// give the same bits. Plain structs cross between the two builds (isotropic_bsdf.cpp).
+#pragma once
+#include <glm/glm.hpp>
+
+namespace wf::test {
+
+struct PlainMaterial {
+    glm::vec3 baseColor;
+    float metallic;
+    float roughness;
+    float ior;
+    float transmission;
+    float specular;
+    glm::vec3 specularColor;
+};
+
+struct PlainSample {
+    bool sampled;
+    glm::vec3 wi;
+    float pdf;
+    glm::vec3 weight;
+    bool isDelta;
+    float eta;
+};
+
+glm::vec3 isotropicEval(const PlainMaterial& m, glm::vec3 wo, glm::vec3 wi);
+float isotropicPdf(const PlainMaterial& m, glm::vec3 wo, glm::vec3 wi);
+PlainSample isotropicSample(const PlainMaterial& m, glm::vec3 wo, float uLobe, glm::vec2 u);
+bool isotropicHasNonDelta(const PlainMaterial& m);
+
+} // namespace wf::test
