@@ -556,6 +556,16 @@ m = g.material(pbrMetallicRoughness={"baseColorTexture": {"index": 0}},
                emissiveTexture={"index": 1}, emissiveFactor=[1, 1, 1])
 g.doc["extensionsUsed"] = ["KHR_texture_basisu"]
 case("valid/texture_basisu_without_fallback.gltf", "loads 2 images=0", quad(g, m))
+# KHR_materials_anisotropy: its texture (with KHR_texture_transform) and MikkTSpace tangents for
+# the primitive, which has no TANGENT and no normal map.
+g = Gltf()
+tex = g.texture(g.image(checker_png()))
+m = g.material(pbrMetallicRoughness={"metallicFactor": 1, "roughnessFactor": 0.4},
+               extensions={"KHR_materials_anisotropy": {
+                   "anisotropyStrength": 0.6, "anisotropyRotation": 0.5,
+                   "anisotropyTexture": {"index": tex, "extensions": {"KHR_texture_transform": {
+                       "scale": [3, 3]}}}}})
+case("valid/material_anisotropy.gltf", "loads 2 images=1 normals=1 tangents=1", quad(g, m))
 g = tri()
 g.doc["nodes"][0]["children"] = [1]
 g.doc["nodes"].append({"mesh": 0, "translation": [0, 0, 1]})
@@ -838,6 +848,14 @@ for name, key, film in [
          {"iridescenceFactor": 1, "iridescenceThicknessMinimum": -10})]:
     g = Gltf()
     m = g.material(extensions={"KHR_materials_iridescence": film})
+    broken(name, key, quad(g, m, uv=False))
+for name, key, anisotropy in [
+        ("anisotropy_strength_above_one.gltf", "anisotropyStrength", {"anisotropyStrength": 1.5}),
+        ("anisotropy_strength_negative.gltf", "anisotropyStrength", {"anisotropyStrength": -0.2}),
+        ("anisotropy_rotation_not_a_number.gltf", "anisotropyRotation",
+         {"anisotropyStrength": 0.5, "anisotropyRotation": "east"})]:
+    g = Gltf()
+    m = g.material(extensions={"KHR_materials_anisotropy": anisotropy})
     broken(name, key, quad(g, m, uv=False))
 
 

@@ -252,6 +252,27 @@ TEST(GltfFeatures, MaterialIridescence) {
     EXPECT_EQ(plain.iridescenceThicknessTexture, WF_NO_TEXTURE);
 }
 
+// KHR_materials_anisotropy reaches the Material: strength, rotation as (cos, sin), the texture
+// (linear, with its KHR_texture_transform); the primitive, which has neither TANGENT nor a
+// normal map, gets generated tangent frames. Without the extension: isotropic, no texture.
+TEST(GltfFeatures, MaterialAnisotropy) {
+    const Scene scene = load("material_anisotropy.gltf");
+    const Material& m = scene.materials[0];
+    EXPECT_FLOAT_EQ(m.anisotropyStrength, 0.6f);
+    EXPECT_FLOAT_EQ(m.anisotropyRotation.x, std::cos(0.5f));
+    EXPECT_FLOAT_EQ(m.anisotropyRotation.y, std::sin(0.5f));
+    ASSERT_NE(m.anisotropyTexture, WF_NO_TEXTURE);
+    EXPECT_FALSE(scene.surface.textureRefs[m.anisotropyTexture].flags & WF_TEXTURE_SRGB);
+    EXPECT_FLOAT_EQ(scene.surface.textureRefs[m.anisotropyTexture].uRow.x, 3.0f);
+    EXPECT_EQ(m.normalTexture, WF_NO_TEXTURE);
+    EXPECT_EQ(scene.surface.tangents.size(), scene.triangles.size());
+    const Material plain = load("material_extensions.gltf").materials[0];
+    EXPECT_EQ(plain.anisotropyStrength, 0.0f);
+    EXPECT_EQ(plain.anisotropyTexture, WF_NO_TEXTURE);
+    EXPECT_EQ(plain.anisotropyRotation, glm::vec2(1.0f, 0.0f));
+    EXPECT_TRUE(load("material_extensions.gltf").surface.tangents.empty());
+}
+
 TEST(GltfFeatures, UnknownExtensionsWarnOnceEach) {
     ::testing::internal::CaptureStderr();
     load("unknown_extensions_warn.gltf");

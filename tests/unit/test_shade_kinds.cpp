@@ -26,6 +26,15 @@ Material glass() {
     return m;
 }
 
+// KHR_materials_anisotropy stretches roughness 0 into a lobe with a density (alpha_t = s^2):
+// no longer the specular kind's Dirac-only BSDF.
+TEST(ShadeKinds, AnisotropicSmoothSurfacesAreGeneral) {
+    for (Material m : {mirror(), glass()}) {
+        m.anisotropyStrength = 0.3f;
+        EXPECT_EQ(shadeKind(m), ShadeKind::General);
+    }
+}
+
 TEST(ShadeKinds, MaterialsGetTheKindWhoseBsdfIsExactForThem) {
     EXPECT_EQ(shadeKind(lambert()), ShadeKind::Diffuse);
     EXPECT_EQ(shadeKind(mirror()), ShadeKind::Specular);

@@ -196,15 +196,13 @@ void MaterialConverter::convertIridescence(const tinygltf::Material& m, const st
 void MaterialConverter::convertAnisotropy(const tinygltf::Material& m, const std::string& name,
                                           Material& out, MaterialNeeds& needs) {
     const tinygltf::Value& anisotropy = extensionIn(m.extensions, "KHR_materials_anisotropy");
-    if (!anisotropy.IsObject()) {
+    if (!anisotropy.IsObject())
         return;
-    }
     const double strength = jsonNumber(anisotropy, "anisotropyStrength", 0.0);
     const double rotation = jsonNumber(anisotropy, "anisotropyRotation", 0.0);
     checkRange(name, "anisotropyStrength", strength, 0.0, 1.0);
-    if (!std::isfinite(rotation)) { // any angle is valid glTF; a string or null is not
+    if (!std::isfinite(rotation)) // any angle is valid glTF; a string or null is not
         fail(file_, name + ": anisotropyRotation must be a number (radians)");
-    }
     out.anisotropyStrength = float(strength);
     out.anisotropyRotation = glm::vec2(float(std::cos(rotation)), float(std::sin(rotation)));
     out.anisotropyTexture =
@@ -395,8 +393,7 @@ Material defaultMaterial() {
     m.clearcoatTexture = m.clearcoatRoughnessTexture = m.clearcoatNormalTexture =
         m.sheenColorTexture = m.sheenRoughnessTexture = m.thicknessTexture = WF_NO_TEXTURE;
     m.clearcoatNormalScale = 1.0f;
-    m.anisotropyStrength = 0.0f; // isotropic; the extension's defaults otherwise
-    m.anisotropyTexture = WF_NO_TEXTURE;
+    m.anisotropyTexture = WF_NO_TEXTURE; // strength 0: isotropic; rotation 0
     m.anisotropyRotation = glm::vec2(1.0f, 0.0f);
     return m;
 }

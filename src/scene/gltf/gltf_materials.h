@@ -24,8 +24,7 @@ bool isSupportedExtension(const std::string& name);
 struct MaterialNeeds {
     bool uv0 = false;           // some texture samples TEXCOORD_0
     bool uv1 = false;           // ... or TEXCOORD_1
-    int normalMapTexCoord = -1; // UV set that tangents follow (the normal map's, else
-                                // KHR_materials_anisotropy's), -1 when none is needed
+    int normalMapTexCoord = -1; // UV set of the tangent frames (normal map, anisotropy); -1: none
 };
 
 // An image made at load from a decoded glTF image (KHR_materials_pbrSpecularGlossiness): a
