@@ -157,6 +157,10 @@ TEST(SharedLayout, GlslOffsetsMatchCpp) {
              {"mat.thicknessTexture", offsetof(Material, thicknessTexture)},
              {"mat.pad3", offsetof(Material, pad3)}})
         expectOffset(name, materialBase, offset);
+    // Anisotropy (texel 13), after them.
+    expectOffset("mat.anisotropyStrength", materialBase, offsetof(Material, anisotropyStrength));
+    expectOffset("mat.anisotropyTexture", materialBase, offsetof(Material, anisotropyTexture));
+    expectOffset("mat.anisotropyRotation", materialBase, offsetof(Material, anisotropyRotation));
     expectOffset("em.alias", materialBase + sizeof(Material), offsetof(Emitter, alias));
     const size_t pairBase = materialBase + sizeof(Material) + sizeof(Emitter);
     expectOffset("pair.child0", pairBase, offsetof(BvhPair, child0));
