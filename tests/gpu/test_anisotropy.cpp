@@ -3,7 +3,7 @@
 // the mesh's tangent frame and turns with anisotropyRotation and anisotropyTexture, exactly as
 // the spec's frame and bsdf.h evaluated on the CPU predict (second moments of the image); white
 // anisotropic spheres never outshine the furnace; scenes without anisotropy compile none of
-// its code.
+// its code, and it compiles beside every switch that touches the BSDF or tangent frames.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -297,6 +297,37 @@ TEST(Anisotropy, SceneWithoutItCompilesNoneOfItsCode) {
                                   "anisotropyAt"))
             << pass;
     EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
+}
+
+// The switch compiles beside every other that touches the BSDF or the tangent frames: with
+// and without tangent data, textures and normal maps, the layered BSDF, path guiding, and in
+// the shade kinds' own BSDFs (Dirac only, Lambert only).
+TEST(Anisotropy, CompilesWithTheOtherMaterialSwitches) {
+    ShaderCompiler compiler(defaultShaderDir(), "");
+    for (int bits = 0; bits < 16; ++bits)
+        for (const char* pass : {"shade.comp", "megakernel.comp"}) {
+            const bool textures = bits & 2;
+            ShaderDefines defines = {{"WF_WORKGROUP_SIZE", "64"},
+                                     {"WF_HAS_EMITTERS", "1"},
+                                     {"WF_HAS_TRIANGLE_EMITTERS", "1"},
+                                     {"WF_LIGHT_SAMPLING", "2"},
+                                     {"WF_HAS_NORMALS", "1"},
+                                     {"WF_HAS_TEXTURES", textures ? "1" : "0"},
+                                     {"WF_TEXEL_PAGES", textures ? "1" : "0"},
+                                     {"WF_HAS_NORMAL_MAPS", textures ? "1" : "0"},
+                                     {"WF_RAY_CONES", textures ? "1" : "0"},
+                                     {"WF_HAS_CLEARCOAT", bits & 4 ? "1" : "0"},
+                                     {"WF_HAS_SHEEN", bits & 4 ? "1" : "0"},
+                                     {"WF_GUIDING", bits & 8 ? "1" : "0"},
+                                     {"WF_HAS_ANISOTROPY", "1"},
+                                     {"WF_HAS_TANGENTS", bits & 1 ? "1" : "0"}};
+            ASSERT_GT(compiler.compile(pass, defines).spirv.size(), 5u) << pass << " " << bits;
+        }
+    for (const char* only : {"WF_BSDF_DELTA_ONLY", "WF_BSDF_DIFFUSE_ONLY"}) {
+        ShaderDefines defines = {{"WF_WORKGROUP_SIZE", "64"}, {"WF_HAS_EMITTERS", "1"},
+                                 {"WF_HAS_ANISOTROPY", "1"}, {only, "1"}};
+        ASSERT_GT(compiler.compile("shade.comp", defines).spirv.size(), 5u) << only;
+    }
 }
 
 } // namespace
