@@ -195,6 +195,9 @@ void anisotropyAt(Instance instance, uint triangleIndex, Material material, floa
         strength *= texel.b;
     }
 #endif
+    direction = vec3(0.0);
+    if (!(strength > 0.0))
+        return; // isotropic here: no tangent frame to fetch
     vec2 r = material.anisotropyRotation; // (cos, sin): counter-clockwise
     d = vec2(r.x * d.x - r.y * d.y, r.y * d.x + r.x * d.y);
     vec3 t, b;
