@@ -21,8 +21,9 @@
 // layer reflects more at grazing angles than the isotropic one of its smaller roughness (by up to
 // 0.09 at r = 0.4, s = 1, mu = 0.005), so the bound is taken at the coupling roughness
 // r (1 - s^2 / 4) (anisotropyCouplingRoughness): over r, s in [0, 1], every mu and azimuth its
-// excess is at most 0.0008, against the isotropic fit's 0.0012 (numerical quadrature;
-// tests/unit/test_anisotropy.cpp checks the white furnace).
+// excess is at most ~0.0009, the isotropic fit's own (at s = 0; scripts/
+// anisotropy_coupling_bound.py measures both rules; tests/unit/test_anisotropy.cpp checks the
+// white furnace).
 #ifndef WF_ANISOTROPY_H
 #define WF_ANISOTROPY_H
 
