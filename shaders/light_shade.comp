@@ -109,18 +109,12 @@ void shadeLightVertex(inout LightVertex v) {
         lightDepths[v.path] = v.depth + 1u;
     }
 #endif
-    // The frame as path_vertex.glsl builds it, from the side the ray arrived on.
-    bool flip = surface.transmission > 0.0 && !surface.frontFace;
-    vec3 n = flip ? -surface.ns : surface.ns;
-    vec3 geometricOutside = flip ? -surface.ng : surface.ng;
-    vec3 tangent, bitangent;
-    buildOrthonormalBasis(n, tangent, bitangent);
-    vec3 toLightLocal = vec3(dot(toLight, tangent), dot(toLight, bitangent), dot(toLight, n));
+    // The path tracer's frame for this surface (shading_frame.glsl): an anisotropic BSDF
+    // depends on its x axis.
+    ShadingFrame frame = shadingFrameAt(surface);
+    vec3 toLightLocal = toShadingFrame(frame, toLight);
 #if WF_BSDF_LAYERS && WF_HAS_CLEARCOAT && WF_HAS_CLEARCOAT_NORMAL_MAPS
-    if (surface.coatNormal != surface.ns) { // as path_vertex.glsl
-        vec3 coat = flip ? -surface.coatNormal : surface.coatNormal;
-        layers.coatNormal = vec3(dot(coat, tangent), dot(coat, bitangent), dot(coat, n));
-    }
+    placeCoatNormal(layers, surface, frame);
 #endif
 
     // The connection to the camera makes a path of depth + 2 segments.
@@ -129,8 +123,7 @@ void shadeLightVertex(inout LightVertex v) {
         connectToCamera(surface.p,
                         lightVertexSample2D(v.pixel, v.sampleIndex, v.depth, WF_DIM_LIGHT_POINT),
                         c)) {
-        vec3 toCameraLocal =
-            vec3(dot(c.toCamera, tangent), dot(c.toCamera, bitangent), dot(c.toCamera, n));
+        vec3 toCameraLocal = toShadingFrame(frame, c.toCamera);
         // In the radiance order f(toCamera, toLight) is the path tracer's own BSDF (no
         // refraction factor); the shading-normal correction makes it f_s |toCamera.ng|.
 #if WF_BSDF_LAYERS
@@ -157,7 +150,7 @@ void shadeLightVertex(inout LightVertex v) {
         if (any(greaterThan(value, vec3(0.0))) || any(isnan(value))) {
             v.connects = true;
             v.splatOrigin =
-                offsetRayOrigin(surface.p, surface.pError, geometricOutside, c.toCamera);
+                offsetRayOrigin(surface.p, surface.pError, frame.outside, c.toCamera);
             v.splatSegment = c.lensPoint - v.splatOrigin;
             v.splatPixel = c.pixel;
             v.splat = value;
@@ -177,7 +170,7 @@ void shadeLightVertex(inout LightVertex v) {
     if (!bsdfSample(bsdf, toLightLocal, uLobe, uDirection, s))
         return;
 #endif
-    vec3 wi = normalize(tangent * s.wi.x + bitangent * s.wi.y + n * s.wi.z);
+    vec3 wi = fromShadingFrame(frame, s.wi);
 #if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
     float scatterReversePdf = s.pdf; // a Dirac bounce: the same lobe both ways
     if (!s.isDelta) {
@@ -204,7 +197,7 @@ void shadeLightVertex(inout LightVertex v) {
         beta = vec3(0.0);
     v.continues = any(greaterThan(beta, vec3(0.0)));
     if (v.continues) {
-        v.origin = offsetRayOrigin(surface.p, surface.pError, geometricOutside, wi);
+        v.origin = offsetRayOrigin(surface.p, surface.pError, frame.outside, wi);
         v.direction = wi;
         v.beta = beta;
     }

@@ -2,7 +2,8 @@
 // light subpath (bdpt_state.glsl) by one shadow ray, weighed among every strategy that makes
 // the path (vcm_mis.h). Included by wave/path_vertex.glsl, which fills a BdptCameraVertex at
 // each camera vertex, and called by shade.comp once per light bounce in uniform control flow
-// (its appends). Needs bsdf.h or bsdf_layers.h (WF_BSDF_LAYERS), surface.glsl, adjoint_bsdf.h.
+// (its appends). Needs bsdf.h or bsdf_layers.h (WF_BSDF_LAYERS), surface.glsl,
+// wave/shading_frame.glsl, adjoint_bsdf.h.
 #ifndef WF_BDPT_CONNECT_GLSL
 #define WF_BDPT_CONNECT_GLSL
 #include "bidir/adjoint_bsdf.h"
@@ -85,20 +86,13 @@ bool bdptConnect(BdptCameraVertex c, uint path, uint depth, uint d, out vec3 ori
 #if WF_BSDF_LAYERS
     BsdfLayers lightLayers = layersAt(s);
 #endif
-    // The light vertex's frame as light_shade.comp built it.
-    bool flip = s.transmission > 0.0 && !s.frontFace;
-    vec3 ln = flip ? -s.ns : s.ns;
-    vec3 lightOutside = flip ? -s.ng : s.ng;
-    vec3 lt, lb;
-    buildOrthonormalBasis(ln, lt, lb);
-    vec3 toLightLocal = vec3(dot(toLight, lt), dot(toLight, lb), dot(toLight, ln));
+    // The light vertex's frame as light_shade.comp built it (shading_frame.glsl).
+    ShadingFrame lightFrame = shadingFrameAt(s);
+    vec3 toLightLocal = toShadingFrame(lightFrame, toLight);
 #if WF_BSDF_LAYERS && WF_HAS_CLEARCOAT && WF_HAS_CLEARCOAT_NORMAL_MAPS
-    if (s.coatNormal != s.ns) { // as path_vertex.glsl
-        vec3 coat = flip ? -s.coatNormal : s.coatNormal;
-        lightLayers.coatNormal = vec3(dot(coat, lt), dot(coat, lb), dot(coat, ln));
-    }
+    placeCoatNormal(lightLayers, s, lightFrame);
 #endif
-    vec3 toCameraLocal = vec3(dot(-w, lt), dot(-w, lb), dot(-w, ln));
+    vec3 toCameraLocal = toShadingFrame(lightFrame, -w);
     vec3 wCamera = vec3(dot(w, c.tangent), dot(w, c.bitangent), dot(w, c.n));
 
     // Both BSDFs in the radiance order (wo towards the camera): the camera's as the path
@@ -123,7 +117,7 @@ bool bdptConnect(BdptCameraVertex c, uint path, uint depth, uint d, out vec3 ori
         abs(dot(w, c.ng)), abs(dot(w, s.ng)), dist2);
     value = clampContribution(value);
     origin = offsetRayOrigin(c.p, c.pError, c.outside, w);
-    segment = offsetRayOrigin(s.p, s.pError, lightOutside, -w) - origin;
+    segment = offsetRayOrigin(s.p, s.pError, lightFrame.outside, -w) - origin;
     return any(greaterThan(value, vec3(0.0))) || any(isnan(value));
 }
 

@@ -182,6 +182,7 @@ BsdfLayers layersAt(SurfaceHit surface) {
     return layers;
 }
 #endif
+#include "wave/shading_frame.glsl"
 #if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
 #include "bidir/bdpt_connect.glsl"
 // The last camera vertex shaded, for shade.comp's connections (bdpt_connect.glsl).
@@ -262,29 +263,15 @@ void shadePathVertex(inout PathVertex v) {
 #if WF_BSDF_LAYERS
     BsdfLayers layers = layersAt(surface);
 #endif
-    // Opaque surfaces shade two-sided (the frame faces the arriving ray); transmissive ones
-    // keep +z on the outside so that the BSDF knows which medium the ray is in.
-    bool flip = surface.transmission > 0.0 && !surface.frontFace;
-    vec3 n = flip ? -surface.ns : surface.ns;
-    vec3 geometricOutside = flip ? -surface.ng : surface.ng;
-    vec3 tangent, bitangent;
-    buildOrthonormalBasis(n, tangent, bitangent);
-#if WF_HAS_ANISOTROPY
-    // The anisotropic BSDF stretches its lobes along the frame's x axis (bsdf/anisotropy.h):
-    // the material's direction, made orthogonal to the shading normal.
-    vec3 stretch = surface.anisotropyDirection - n * dot(n, surface.anisotropyDirection);
-    if (surface.anisotropy > 0.0 && dot(stretch, stretch) > 1e-12) {
-        tangent = normalize(stretch);
-        bitangent = cross(n, tangent);
-    }
-#endif
-    vec3 woLocal = vec3(dot(wo, tangent), dot(wo, bitangent), dot(wo, n));
+    // The frame light subpaths and BDPT's light vertices build too (shading_frame.glsl).
+    ShadingFrame frame = shadingFrameAt(surface);
+    vec3 n = frame.n;
+    vec3 tangent = frame.tangent;
+    vec3 bitangent = frame.bitangent;
+    vec3 geometricOutside = frame.outside;
+    vec3 woLocal = toShadingFrame(frame, wo);
 #if WF_BSDF_LAYERS && WF_HAS_CLEARCOAT && WF_HAS_CLEARCOAT_NORMAL_MAPS
-    // The coat's own normal in this frame (flipped with it); (0, 0, 1) exactly without one.
-    if (surface.coatNormal != surface.ns) {
-        vec3 coat = flip ? -surface.coatNormal : surface.coatNormal;
-        layers.coatNormal = vec3(dot(coat, tangent), dot(coat, bitangent), dot(coat, n));
-    }
+    placeCoatNormal(layers, surface, frame);
 #endif
 #if WF_LIGHT_TREE
     // The light tree weighs lights by the side light can arrive from (both through glass).
