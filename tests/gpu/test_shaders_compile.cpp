@@ -2,6 +2,8 @@
 // on-disk cache off so that nothing stale hides an error.
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -17,12 +19,22 @@ TEST(Shaders, EveryPassCompilesInEveryVariant) {
     for (const auto& entry : std::filesystem::directory_iterator(compiler.shaderDir())) {
         if (entry.path().extension() != ".comp")
             continue;
-        for (const char* emitters : {"0", "1"}) {
-            if (entry.path().filename() == "shadow.comp" && emitters[0] == '0')
+        const std::string name = entry.path().filename().string();
+        const bool lightPass = name.rfind("light_", 0) == 0;
+        // Emitters off and on with the path tracer, and on with light tracing and BDPT (a
+        // scene without emitters traces paths whatever --integrator says).
+        for (const auto& [emitters, integrator] :
+             std::initializer_list<std::pair<const char*, const char*>>{
+                 {"0", nullptr}, {"1", nullptr}, {"1", "1"}, {"1", "2"}}) {
+            if (name == "shadow.comp" && emitters[0] == '0')
                 continue; // no emitters, no shadow rays: the host never builds this variant
+            if (lightPass && !integrator)
+                continue; // light subpaths' passes exist only for --integrator light and bdpt
             ShaderDefines defines = {{"WF_WORKGROUP_SIZE", std::to_string(kWorkgroupSize)},
                                      {"WF_HAS_EMITTERS", emitters}};
-            CompiledShader shader = compiler.compile(entry.path().filename().string(), defines);
+            if (integrator)
+                defines.emplace_back("WF_INTEGRATOR", integrator);
+            CompiledShader shader = compiler.compile(name, defines);
             EXPECT_FALSE(shader.fromCache);
             ASSERT_GT(shader.spirv.size(), 5u) << entry.path();
             EXPECT_EQ(shader.spirv[0], 0x07230203u);
