@@ -9,7 +9,7 @@
 #ifndef WF_BDPT_STATE_GLSL
 #define WF_BDPT_STATE_GLSL
 #include "bidir/vcm_mis.h"
-#include "bidir/camera_importance.h"
+#include "bidir/scene_camera.glsl"
 
 // 2: the power heuristic, 1: the balance heuristic.
 #ifndef WF_BDPT_MIS_EXPONENT
@@ -54,25 +54,9 @@ vec4 bdptStored(VcmSubpathMis mis) { return vec4(mis.dVCM, mis.dVC, mis.dVM, 0.0
 
 // The camera subpath's start: its ray's density per pixel, W H cameraDirectionPdf.
 VcmSubpathMis bdptStartCamera(vec3 lensPoint, vec3 direction) {
-    CameraGeometry camera;
-    camera.position = params.cameraPosition;
-    camera.tanHalfFovY = params.tanHalfFovY;
-    camera.forward = params.cameraForward;
-    camera.aspect = params.aspect;
-    camera.right = params.cameraRight;
-    camera.up = params.cameraUp;
-#if WF_THIN_LENS
-    camera.lensRadius = params.lensRadius;
-    camera.focusDistance = params.focusDistance;
-#else
-    camera.lensRadius = 0.0;
-    camera.focusDistance = 1.0;
-#endif
-    camera.width = params.width;
-    camera.height = params.height;
-    camera.orthoHalfHeight = params.orthoHalfHeight;
-    return vcmStartCamera(bdptMisConfig(), float(params.pixelCount) *
-                                               cameraDirectionPdf(camera, lensPoint, direction));
+    return vcmStartCamera(bdptMisConfig(),
+                          float(params.pixelCount) *
+                              cameraDirectionPdf(sceneCamera(), lensPoint, direction));
 }
 
 void bdptStoreLightVertex(uint path, uint depth, uvec4 hit, vec3 toLight, vec3 beta,

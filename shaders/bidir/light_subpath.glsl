@@ -14,7 +14,7 @@
 #ifndef WF_LIGHT_SUBPATH_GLSL
 #define WF_LIGHT_SUBPATH_GLSL
 #include "bidir/light_emission.h"
-#include "bidir/camera_importance.h"
+#include "bidir/scene_camera.glsl"
 
 #define WF_LIGHT_DIM_CHOICE 0u    // 1D: the emitter
 #define WF_LIGHT_DIM_POINT 1u     // 2D: the point on it (or on the scene's disk)
@@ -127,26 +127,6 @@ bool emitLightRay(uint pixel, uint sampleIndex, out EmittedRay ray) {
     return any(greaterThan(ray.beta, vec3(0.0)));
 }
 
-CameraGeometry sceneCamera() {
-    CameraGeometry camera;
-    camera.position = params.cameraPosition;
-    camera.tanHalfFovY = params.tanHalfFovY;
-    camera.forward = params.cameraForward;
-    camera.aspect = params.aspect;
-    camera.right = params.cameraRight;
-#if WF_THIN_LENS
-    camera.lensRadius = params.lensRadius;
-    camera.focusDistance = params.focusDistance;
-#else
-    camera.lensRadius = 0.0;
-    camera.focusDistance = 1.0;
-#endif
-    camera.up = params.cameraUp;
-    camera.width = params.width;
-    camera.height = params.height;
-    camera.orthoHalfHeight = params.orthoHalfHeight;
-    return camera;
-}
 
 // What a surface point p sends to the camera for importance-weighted value `valueToCamera`
 // (the light subpath's throughput times the BSDF towards the lens and its cosine, both
