@@ -144,6 +144,7 @@ std::string renderSettingsKey(const RenderSettings& s, const ParsedArgs& parsed)
     return std::string(numbers) + " " +
            (s.integrator == Integrator::Path ? "" : std::string("integrator ") +
                                                         integratorName(s.integrator) + " ") +
+           (s.bdptBalance ? "balance " : "") +
            lightSamplingName(s.lightSampling) + " " +
            lightSelectionName(s.lightSelection) + " triangle " +
            (s.triangleSolidAngle ? "solid-angle" : "area") + " sphere " +

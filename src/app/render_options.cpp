@@ -47,6 +47,8 @@ std::vector<OptionSpec> samplingOptions() {
                                      "trace whole samples of the image per wave and take "
                                      "neither --target-error, guiding, motion blur, "
                                      "--traversal rt nor an orthographic camera"},
+        {"--bdpt-heuristic", "", "NAME", "bdpt's MIS weights: power (the power heuristic, "
+                                         "beta 2; default) or balance (beta 1)"},
         {"--light-sampling", "", "MODE", "bsdf (emission found by BSDF rays), nee (light "
                                          "sampling only) or mis (default)"},
         {"--light-selection", "", "MODE", "how NEE picks a light: uniform, power or tree (the "
@@ -231,6 +233,10 @@ void applyRenderFlags(const ParsedArgs& parsed, uint32_t defaultMaxDepth,
     settings.seed = parsed.uintValue("--seed", 0, 0, 0xffffffffu);
     settings.integrator =
         parseIntegrator(parsed.choiceValue("--integrator", "path", {"path", "light", "bdpt"}));
+    settings.bdptBalance =
+        parsed.choiceValue("--bdpt-heuristic", "power", {"power", "balance"}) == "balance";
+    if (settings.bdptBalance && settings.integrator != Integrator::Bdpt)
+        throw UsageError("--bdpt-heuristic applies to --integrator bdpt");
     settings.lightSampling =
         parseLightSampling(parsed.choiceValue("--light-sampling", "mis", {"bsdf", "nee", "mis"}));
     if (parsed.has("--light-selection"))

@@ -40,6 +40,9 @@ struct RenderSettings {
     // land anywhere), and is refused with the megakernel, --traversal rt, guiding, pixel lists
     // (--target-error), motion blur and cameras without a lens (WavefrontRenderer).
     Integrator integrator = Integrator::Path;
+    // --bdpt-heuristic balance: bdpt weighs its strategies by the balance heuristic instead of
+    // the power heuristic (the default). Another image of the same expectation.
+    bool bdptBalance = false;
     LightSampling lightSampling = LightSampling::Mis;
     LightSelection lightSelection = LightSelection::Auto; // --light-selection
     bool triangleSolidAngle = true; // --triangle-sampling solid-angle (else area)

@@ -19,6 +19,7 @@ ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& se
     variant.integrator = settings.integrator == Integrator::Bdpt && lights.emitters.empty()
                              ? Integrator::Path
                              : settings.integrator;
+    variant.bdptBalance = variant.integrator == Integrator::Bdpt && settings.bdptBalance;
     // BDPT's strategies include next-event estimation, weighed by its own MIS.
     variant.lightSampling = settings.integrator == Integrator::Bdpt ? LightSampling::Mis
                                                                     : settings.lightSampling;
@@ -165,6 +166,8 @@ ShaderDefines ShaderVariant::defines() const {
         defines.emplace_back("WF_MOTION", "1");
     if (integrator != Integrator::Path)
         defines.emplace_back("WF_INTEGRATOR", std::to_string(static_cast<int>(integrator)));
+    if (integrator == Integrator::Bdpt && bdptBalance)
+        defines.emplace_back("WF_BDPT_MIS_EXPONENT", "1.0");
     if (anisotropy) { // defined only then, so isotropic scenes' shaders are as before
         defines.emplace_back("WF_HAS_ANISOTROPY", "1");
         defines.emplace_back("WF_HAS_TANGENTS", flag(surface.tangents));

@@ -29,6 +29,9 @@ constexpr uint32_t kLightTreeMinLights = 4;
 
 struct ShaderVariant {
     Integrator integrator = Integrator::Path; // WF_INTEGRATOR, defined only for light tracing
+    // WF_BDPT_MIS_EXPONENT, defined only where bdpt takes the balance heuristic (1; the power
+    // heuristic, 2, is bdpt_state.glsl's default).
+    bool bdptBalance = false;
     LightSampling lightSampling = LightSampling::Mis;
     bool nextEventEstimation = false; // a light table to sample, and shadow rays
     bool triangleEmitters = false;

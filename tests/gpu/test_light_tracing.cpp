@@ -46,14 +46,17 @@ RenderSettings settingsFor(Integrator integrator, uint32_t spp, uint32_t seed) {
 // directly); at least `minRegions` must be checked.
 void expectAgreement(Integrator integrator, const Scene& scene, uint32_t referenceSpp,
                      uint32_t spp, int seeds, int minRegions, const std::string& what,
-                     Integrator referenceIntegrator = Integrator::Path) {
+                     Integrator referenceIntegrator = Integrator::Path,
+                     bool balance = false) {
     RenderSettings reference = settingsFor(referenceIntegrator, referenceSpp, 9001);
     reference.aov = true; // the variance layer
     RenderResult path = renderScene(scene, reference);
     std::vector<std::vector<float>> images;
     const std::string name = what + " (" + integratorName(integrator) + ")";
     for (int seed = 0; seed < seeds; ++seed) {
-        RenderResult result = renderScene(scene, settingsFor(integrator, spp, 100 + seed));
+        RenderSettings settings = settingsFor(integrator, spp, 100 + seed);
+        settings.bdptBalance = balance;
+        RenderResult result = renderScene(scene, settings);
         EXPECT_EQ(result.stats.nonFiniteSamples, 0u) << name;
         for (float v : result.rgb)
             ASSERT_TRUE(std::isfinite(v)) << name;
@@ -244,6 +247,12 @@ TEST_P(Bidirectional, WhiteFurnaceSphereUnderAnEnvironment) {
     EXPECT_EQ(result.stats.nonFiniteSamples, 0u);
     EXPECT_NEAR(measured.mean, 0.5, 4.0 * measured.standardError + 1e-4);
     EXPECT_LT(measured.standardError, 0.02); // so that 4 of them still tell
+}
+
+TEST(Bdpt, BalanceHeuristicAgreesWithPath) {
+    // --bdpt-heuristic balance: the same strategies, other weights, still summing to 1.
+    expectAgreement(Integrator::Bdpt, laboratoryScene("cornell_box"), 1024, 64, 16, 16,
+                    "cornell, balance", Integrator::Path, true);
 }
 
 TEST(Bdpt, FloorUnderEveryLightKind) {
