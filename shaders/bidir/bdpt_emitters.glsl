@@ -1,6 +1,5 @@
-// BDPT's densities of emitter points (bidir/bdpt_state.glsl): what a strategy that samples
-// an emitter's point by next-event estimation or by emission would have had, for the light
-// subpath's first hit and for a camera subpath that finds an emitter. Needs lights.glsl.
+// BDPT's densities of emitter points (bidir/bdpt_state.glsl): what next-event estimation would
+// have had for the point a light subpath left, computed at its first hit. Needs lights.glsl.
 #ifndef WF_BDPT_EMITTERS_GLSL
 #define WF_BDPT_EMITTERS_GLSL
 #include "bidir/bdpt_state.glsl"
@@ -8,8 +7,9 @@
 // What the density of next-event estimation choosing an emitter point is, in area measure
 // seen from `receiver` (solid angle for infinite lights), and the light's kind: what
 // vcmStartLight needs. For triangles and spheres it depends on the receiver (spherical
-// triangles, cones), so a light subpath computes it at its first hit, and a camera subpath
-// where its ray found the emitter. t: distance from receiver to the point; cosAtLight there.
+// triangles, cones), so a light subpath computes it at its first hit (a camera subpath that
+// finds an emitter has it already: path_vertex.glsl's lightPdf). t: distance from receiver to
+// the point; cosAtLight there.
 struct EmitterDensity {
     float directPdfA;
     bool finite;

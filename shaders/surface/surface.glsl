@@ -98,11 +98,9 @@ vec4 surfaceTexture(uint ref, uint triangleIndex, float b1, float b2, float foot
 }
 #endif
 
-// The shading normal on the front (counter-clockwise) side: interpolated vertex normals, then
-// the normal map in the tangent frame. Falls back to the geometric normal wherever the data
+// The interpolated vertex normal on the front (counter-clockwise) side, or ng where the data
 // would give a zero or non-finite vector.
-vec3 frontShadingNormal(Instance instance, uint triangleIndex, Material material, float b1,
-                        float b2, vec3 ng, float footprint) {
+vec3 interpolatedNormal(Instance instance, uint triangleIndex, float b1, float b2, vec3 ng) {
     vec3 n = ng;
 #if WF_HAS_NORMALS
     TriangleNormals corners = triangleNormalsAt(triangleIndex);
@@ -113,66 +111,57 @@ vec3 frontShadingNormal(Instance instance, uint triangleIndex, Material material
     float len = length(sum);
     n = len > 1e-6 ? sum / len : ng;
 #endif
+    return n;
+}
+
 #if WF_HAS_NORMAL_MAPS
-    if (material.normalTexture != WF_NO_TEXTURE) {
-        TriangleTangents frame = triangleTangentsAt(triangleIndex);
-        vec3 t = vectorToWorld(instance, (1.0 - b1 - b2) * decodeUnit(frame.t0) +
-                                             b1 * decodeUnit(frame.t1) + b2 * decodeUnit(frame.t2));
-        t -= n * dot(n, t); // Gram-Schmidt against the interpolated normal
-        float tLen = length(t);
-        if (tLen > 1e-6) {
-            t /= tLen;
-            // A mirroring instance turns the frame's handedness (as the loader does when it
-            // flattens a mirrored mesh).
-            bool flipped = ((frame.signs & 1u) != 0u) != instanceMirrors(instance);
-            vec3 b = cross(n, t) * (flipped ? -1.0 : 1.0);
-            vec3 m = surfaceTexture(material.normalTexture, triangleIndex, b1, b2, footprint).xyz;
-            m = m * 2.0 - 1.0;
-            m.xy *= material.normalScale;
-            vec3 mapped = t * m.x + b * m.y + n * m.z;
-            float mLen = length(mapped);
-            n = mLen > 1e-6 ? mapped / mLen : n;
-        }
+// n perturbed by a tangent-space normal map (`texture`, its xy scaled by `scale`) in the
+// triangle's tangent frame; n itself where that frame or the result degenerates.
+vec3 normalMapped(Instance instance, uint triangleIndex, uint texture, float scale, float b1,
+                  float b2, vec3 n, float footprint) {
+    TriangleTangents frame = triangleTangentsAt(triangleIndex);
+    vec3 t = vectorToWorld(instance, (1.0 - b1 - b2) * decodeUnit(frame.t0) +
+                                         b1 * decodeUnit(frame.t1) + b2 * decodeUnit(frame.t2));
+    t -= n * dot(n, t); // Gram-Schmidt against the interpolated normal
+    float tLen = length(t);
+    if (tLen > 1e-6) {
+        t /= tLen;
+        // A mirroring instance turns the frame's handedness (as the loader does when it
+        // flattens a mirrored mesh).
+        bool flipped = ((frame.signs & 1u) != 0u) != instanceMirrors(instance);
+        vec3 b = cross(n, t) * (flipped ? -1.0 : 1.0);
+        vec3 m = surfaceTexture(texture, triangleIndex, b1, b2, footprint).xyz;
+        m = m * 2.0 - 1.0;
+        m.xy *= scale;
+        vec3 mapped = t * m.x + b * m.y + n * m.z;
+        float mLen = length(mapped);
+        n = mLen > 1e-6 ? mapped / mLen : n;
     }
+    return n;
+}
+#endif
+
+// The shading normal on the front side: interpolated vertex normals, then the normal map.
+vec3 frontShadingNormal(Instance instance, uint triangleIndex, Material material, float b1,
+                        float b2, vec3 ng, float footprint) {
+    vec3 n = interpolatedNormal(instance, triangleIndex, b1, b2, ng);
+#if WF_HAS_NORMAL_MAPS
+    if (material.normalTexture != WF_NO_TEXTURE)
+        n = normalMapped(instance, triangleIndex, material.normalTexture, material.normalScale,
+                         b1, b2, n, footprint);
 #endif
     return n;
 }
 
 #if WF_HAS_CLEARCOAT_NORMAL_MAPS
 // KHR_materials_clearcoat's clearcoatNormalTexture on the front side: the interpolated vertex
-// normal perturbed by the coat's own map (the base's normal map does not reach the coat), as
-// frontShadingNormal does for the base; written apart so scenes without coat maps keep that
-// function as it was.
+// normal perturbed by the coat's own map (the base's normal map does not reach the coat).
 vec3 frontCoatNormal(Instance instance, uint triangleIndex, Material material, float b1,
                      float b2, vec3 ng, float footprint) {
-    vec3 n = ng;
-#if WF_HAS_NORMALS
-    TriangleNormals corners = triangleNormalsAt(triangleIndex);
-    float b0 = 1.0 - b1 - b2;
-    vec3 sum = b0 * normalToWorld(instance, decodeUnit(corners.n0)) +
-               b1 * normalToWorld(instance, decodeUnit(corners.n1)) +
-               b2 * normalToWorld(instance, decodeUnit(corners.n2));
-    float len = length(sum);
-    n = len > 1e-6 ? sum / len : ng;
-#endif
+    vec3 n = interpolatedNormal(instance, triangleIndex, b1, b2, ng);
 #if WF_HAS_NORMAL_MAPS
-    TriangleTangents frame = triangleTangentsAt(triangleIndex);
-    vec3 t = vectorToWorld(instance, (1.0 - b1 - b2) * decodeUnit(frame.t0) +
-                                         b1 * decodeUnit(frame.t1) + b2 * decodeUnit(frame.t2));
-    t -= n * dot(n, t);
-    float tLen = length(t);
-    if (tLen > 1e-6) {
-        t /= tLen;
-        bool flipped = ((frame.signs & 1u) != 0u) != instanceMirrors(instance);
-        vec3 b = cross(n, t) * (flipped ? -1.0 : 1.0);
-        vec3 m = surfaceTexture(material.clearcoatNormalTexture, triangleIndex, b1, b2,
-                                footprint).xyz;
-        m = m * 2.0 - 1.0;
-        m.xy *= material.clearcoatNormalScale;
-        vec3 mapped = t * m.x + b * m.y + n * m.z;
-        float mLen = length(mapped);
-        n = mLen > 1e-6 ? mapped / mLen : n;
-    }
+    n = normalMapped(instance, triangleIndex, material.clearcoatNormalTexture,
+                     material.clearcoatNormalScale, b1, b2, n, footprint);
 #endif
     return n;
 }

@@ -22,7 +22,7 @@
 #endif
 #if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
 // --integrator bdpt: every emission, NEE and connection weighed among all strategies.
-#include "bidir/bdpt_emitters.glsl"
+#include "bidir/bdpt_state.glsl"
 #endif
 
 struct PathVertex {
@@ -243,11 +243,12 @@ void shadePathVertex(inout PathVertex v) {
         weight = 1.0; // seen directly, or an emitter no light subpath can leave
 #if WF_HAS_TRIANGLE_EMITTERS
         if (v.depth > 0u && surface.emitter != WF_NO_EMITTER) {
+            // NEE's density of this point from the last vertex, lightPdf, in area measure; 0
+            // after a Dirac bounce, where dVCM is 0 too and it weighs nothing.
             float cosLight = abs(dot(surface.ng, wo));
-            EmitterDensity e = emitterDensity(surface.emitter, v.origin, v.direction, t, cosLight);
             Triangle emitting = triangleAt(v.hit.w);
             weight = vcmWeightEmitterHit(
-                misConfig, mis, e.directPdfA,
+                misConfig, mis, lightPdf * cosLight / (t * t),
                 triangleEmissionPdfW(emitterAt(surface.emitter).pmf, emitting,
                                      materialAt(emitting.material), cosLight));
         }

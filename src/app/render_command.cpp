@@ -343,21 +343,20 @@ int runRenderCommand(const std::vector<std::string>& args) {
     statsContext.extraFields.push_back(traversalStatsField(renderer));
     statsContext.extraFields.push_back({"guidingDecision", jsonQuoted(guideDecision.reason)});
     if (settings.integrator != Integrator::Path) {
-        // Light subpaths reuse the camera paths' state; what they add is the light film.
-        const uint64_t filmBytesPerPath = 24;
+        // Light subpaths reuse the camera paths' state; what they add is the light film (and
+        // with bdpt the kept light vertices and a wider shadow queue).
+        const uint64_t waveBytes = renderer.lightSubpathBytes();
+        const uint64_t pathBytes = waveBytes / renderer.pathCapacity();
         statsContext.extraFields.push_back(
             {"integrator", jsonQuoted(integratorName(settings.integrator))});
         statsContext.extraFields.push_back(
-            {"lightSubpathMemory",
-             "{\"bytesPerPath\": " + std::to_string(filmBytesPerPath) +
-                 ", \"bytesPerWave\": " +
-                 std::to_string(filmBytesPerPath * renderer.pathCapacity()) + "}"});
+            {"lightSubpathMemory", "{\"bytesPerPath\": " + std::to_string(pathBytes) +
+                                       ", \"bytesPerWave\": " + std::to_string(waveBytes) + "}"});
         if (verbose)
-            std::fprintf(stderr, "wavefront: light tracing: light subpaths reuse the path state; "
-                                 "light film %llu bytes per path, %.1f MiB per wave of %u paths\n",
-                         (unsigned long long)filmBytesPerPath,
-                         double(filmBytesPerPath) * renderer.pathCapacity() / 1048576.0,
-                         renderer.pathCapacity());
+            std::fprintf(stderr, "wavefront: %s: light subpaths reuse the path state and add "
+                                 "%llu bytes per path, %.1f MiB per wave of %u paths\n",
+                         integratorName(settings.integrator), (unsigned long long)pathBytes,
+                         double(waveBytes) / 1048576.0, renderer.pathCapacity());
     }
     if (adaptive) {
         renderAdaptively(renderer, settings, targetError, run, verbose,

@@ -74,6 +74,18 @@ PathBuffers::PathBuffers(const Context& context, uint32_t pathCapacity, uint32_t
     shadowRadiance = Buffer(context, "shadow radiance", shadowEntries * 16);
 }
 
+uint64_t PathBuffers::lightSubpathBytes(uint32_t pathCapacity) const {
+    uint64_t bytes = 0;
+    for (const Buffer* buffer : {&lightFilm, &pathMis, &lightDepths, &lightVertexHits,
+                                 &lightVertexDirections, &lightVertexThroughputs})
+        if (*buffer)
+            bytes += buffer->size();
+    if (lightFilm && shadowOrigin) // BDPT's wider shadow queue
+        for (const Buffer* buffer : {&shadowOrigin, &shadowDirection, &shadowRadiance})
+            bytes += buffer->size() - uint64_t(pathCapacity) * 16;
+    return bytes;
+}
+
 void PathBuffers::appendBindings(DescriptorBindings& bindings) const {
     bindings.push_back({WF_BINDING_PARAMS, &params, BufferAccess::Uniform});
     const DescriptorBinding all[] = {

@@ -25,6 +25,9 @@ struct PathBuffers {
     // BDPT's light vertices per path (0 for the other integrators), and its shadow queue's
     // entries per path: a camera vertex's NEE and a connection to each light vertex.
     static uint32_t bdptLightVertices(const ShaderVariant& variant, uint32_t maxDepth);
+    // What light subpaths add to the path state (their own buffers, and the shadow queue's
+    // entries beyond one per path), in bytes: --verbose and the JSON's lightSubpathMemory.
+    uint64_t lightSubpathBytes(uint32_t pathCapacity) const;
 
     void appendBindings(DescriptorBindings& bindings) const;
     void appendMemoryReport(std::vector<std::pair<std::string, uint64_t>>& report) const;

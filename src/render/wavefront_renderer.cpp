@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 
 #include "errors.h"
 #include "gpu/compute_program.h"
@@ -50,8 +49,9 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
     if (lightTracing) {
         requireIntegratorSupport(settings, scene);
         if (pixels > maxPaths)
-            throw UsageError("--integrator light traces a whole sample of the image per wave: "
-                             "at most " + std::to_string(maxPaths) + " pixels");
+            throw UsageError(std::string("--integrator ") + integratorName(settings.integrator) +
+                             " traces a whole sample of the image per wave: at most " +
+                             std::to_string(maxPaths) + " pixels");
     }
     // Guided renders keep 4 training records of 64 bytes per path: at most 2^19 paths keep
     // them within a 128 MiB storage buffer.
@@ -401,6 +401,10 @@ FilmMoments WavefrontRenderer::readMoments() const {
 }
 
 AovImages WavefrontRenderer::readAovs() const { return readFilmAovs(*pathBuffers_, pixelCount_); }
+
+uint64_t WavefrontRenderer::lightSubpathBytes() const {
+    return pathBuffers_->lightSubpathBytes(pathCapacity_);
+}
 
 std::vector<std::pair<std::string, uint64_t>> WavefrontRenderer::memoryReport() const {
     std::vector<std::pair<std::string, uint64_t>> report;

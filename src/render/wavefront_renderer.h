@@ -120,6 +120,7 @@ public:
     PathGuide* guide() { return guide_.get(); }              // --guiding only, else null
     uint32_t pathsPerWave() const { return wavePaths_; }    // the current target
     std::vector<std::pair<std::string, uint64_t>> memoryReport() const;
+    uint64_t lightSubpathBytes() const; // PathBuffers::lightSubpathBytes; 0 for path tracing
     std::shared_ptr<const SceneBuffers> sceneBuffers() const { return sceneBuffers_; }
     // What intersect and shadow trace with, and the driver's structures where that is rt.
     Traversal traversal() const {

@@ -78,6 +78,27 @@ double rowEnvironmentIrradiance(uint32_t height, float (*rowRadiance)(uint32_t))
     return irradiance;
 }
 
+double addDiracLights(Scene& scene) {
+    scene.lights.push_back(pointLight({0.3f, 2.0f, -0.4f}, glm::vec3(5.0f)));
+    scene.lights.push_back(directionalLight({0.2f, -1.0f, 0.1f}, glm::vec3(2.0f)));
+    // A spot aimed at the origin (inside its inner cone: full intensity), and one aimed away
+    // (outside its outer cone: no light).
+    const glm::vec3 spotPosition(-0.2f, 1.5f, 0.1f);
+    PunctualLight spot = pointLight(spotPosition, glm::vec3(3.0f));
+    spot.type = WF_LIGHT_SPOT;
+    spot.direction = glm::normalize(-spotPosition);
+    spot.cosInner = std::cos(0.3f);
+    spot.cosOuter = std::cos(0.5f);
+    scene.lights.push_back(spot);
+    spot.direction = glm::normalize(glm::vec3(1.0f, -0.2f, 0.0f));
+    scene.lights.push_back(spot);
+    const double spotIrradiance = 3.0 * spotPosition.y / std::pow(glm::length(spotPosition), 3.0);
+    const glm::vec3 toPoint(0.3f, 2.0f, -0.4f);
+    const double pointIrradiance = 5.0 * toPoint.y / std::pow(glm::length(toPoint), 3.0);
+    const double directionalIrradiance = 2.0 * glm::normalize(glm::vec3(0.2f, -1.0f, 0.1f)).y * -1.0;
+    return pointIrradiance + directionalIrradiance + spotIrradiance;
+}
+
 Scene furnaceSphere(const Material& material, float environmentRadiance) {
     Scene scene;
     scene.materials.push_back(material);

@@ -19,6 +19,10 @@ PunctualLight sphereLight(glm::vec3 center, float radius, glm::vec3 intensity);
 PunctualLight pointLight(glm::vec3 position, glm::vec3 intensity);
 PunctualLight directionalLight(glm::vec3 direction, glm::vec3 illuminance);
 
+// Adds a point light, a directional light, a spot aimed at the origin and one aimed away from
+// it; returns their irradiance at the origin on an upward-facing surface (floorScene's).
+double addDiracLights(Scene& scene);
+
 // An equirectangular environment of width x height texels whose row r has radiance
 // rowRadiance(r) (grey).
 Environment rowEnvironment(uint32_t width, uint32_t height, float (*rowRadiance)(uint32_t));

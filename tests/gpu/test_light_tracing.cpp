@@ -256,31 +256,22 @@ TEST(Bdpt, BalanceHeuristicAgreesWithPath) {
 }
 
 TEST(Bdpt, FloorUnderEveryLightKind) {
-    // Closed forms (analytic_scenes.h): a point, a spot and a directional light, a sphere light
-    // and an environment over a Lambertian floor, at max depth 2, over three seeds.
+    // Closed forms (analytic_scenes.h): a point, a directional light and two spots (one aimed
+    // away), a sphere light and an environment over a Lambertian floor, at max depth 2, over
+    // three seeds.
     const float albedo = 0.5f;
     Scene scene = floorScene(albedo);
-    scene.lights.push_back(pointLight({0.3f, 2.0f, -0.4f}, glm::vec3(5.0f)));
-    scene.lights.push_back(directionalLight({0.2f, -1.0f, 0.1f}, glm::vec3(2.0f)));
-    const glm::vec3 spotPosition(-0.2f, 1.5f, 0.1f);
-    PunctualLight spot = pointLight(spotPosition, glm::vec3(3.0f));
-    spot.type = WF_LIGHT_SPOT;
-    spot.direction = glm::normalize(-spotPosition);
-    spot.cosInner = std::cos(0.3f);
-    spot.cosOuter = std::cos(0.5f);
-    scene.lights.push_back(spot);
     const float radius = 0.5f, height = 1.5f;
     scene.lights.push_back(sphereLight({-1.0f, height, 0.5f}, radius, glm::vec3(4.0f)));
     scene.environment = rowEnvironment(1, 1, nullptr);
     scene.environment.rgb = {0.25f, 0.25f, 0.25f};
-    const glm::vec3 toPoint(0.3f, 2.0f, -0.4f), toSphere(-1.0f, height, 0.5f);
+    const double diracIrradiance = addDiracLights(scene);
+    const glm::vec3 toSphere(-1.0f, height, 0.5f);
     const double sphereRadiance = 4.0 / (M_PI * radius * radius);
     const double sphereDistance = glm::length(toSphere);
     // A sphere wholly above the horizon: E = pi L (R / d)^2 cos(theta).
     const double irradiance =
-        5.0 * toPoint.y / std::pow(glm::length(toPoint), 3.0) +
-        2.0 * -glm::normalize(glm::vec3(0.2f, -1.0f, 0.1f)).y +
-        3.0 * spotPosition.y / std::pow(glm::length(spotPosition), 3.0) +
+        diracIrradiance +
         M_PI * sphereRadiance * radius * radius / (sphereDistance * sphereDistance) *
             (height / sphereDistance) +
         M_PI * 0.25;
