@@ -12,6 +12,11 @@ light transport). Each stays a small, self-contained glTF; run `python3 make_fai
   does not.
 - glass_caustic.gltf: a glass ball on a floor under a small sphere light. The caustic is found
   only by paths that bounce through the glass: shadow rays cannot pass a Dirac interface.
+- mirror_caustic.gltf: the glass caustic seen only in a mirror (camera, mirror, floor, glass,
+  glass, light: E S D S S L). The floor vertex cannot be joined to anything: shadow rays cannot
+  pass the glass, the light's vertices there lie on the same floor, and the camera sees that
+  floor only through the mirror. Only merging (--integrator vcm) samples it well; the path
+  tracer must hit the small light through the ball by chance.
 - many_lamps.gltf: 1,024 small lamps (6 cm octahedra shaded on top, lit below, 0.3-0.7 m above
   a floor, emission over 400:1) among a few blocks. Choosing a light by power sends most shadow rays to bright lamps
   metres away; the light tree picks the lamps near and facing each point.
@@ -194,6 +199,24 @@ def glass_caustic():
     return g
 
 
+def mirror_caustic():
+    g = GltfWriter()
+    white = material(g, "white", (0.8, 0.8, 0.8), lambert=True)
+    glass = material(g, "glass", (1.0, 1.0, 1.0), roughness=0.0, transmission=1.0, ior=1.5)
+    mirror = material(g, "mirror", (0.95, 0.95, 0.95), metallic=1.0, roughness=0.0)
+    g.node(name="floor", mesh=g.mesh("floor", [g.primitive(floor(6.0), white)]))
+    g.node(name="ball", mesh=g.mesh("ball", [triangle_primitive(
+        g, uv_sphere((0.0, 0.6, 0.0), 0.5), glass)]))
+    g.node(name="mirror", mesh=g.mesh("mirror", [g.primitive(
+        [rect((-1.5, 0.0, -1.6), (1.5, 0.0, -1.6), (1.5, 2.2, -1.6), (-1.5, 2.2, -1.6),
+              (0, 0, 1))], mirror)]))
+    sphere_light(g, "light", (0.6, 3.0, -0.4), 0.15, 30.0)
+    # Between the ball and the mirror, facing the mirror: the ball and its caustic (near
+    # (-0.15, 0, 0.1)) are behind the camera, in view only by way of the mirror.
+    camera(g, (0.3, 1.2, -0.7), (0.12, 0.8, -1.6), 0.8)
+    return g
+
+
 def octahedron(center, radius):
     """Eight triangles, counter-clockwise seen from outside: the upper four, then the lower."""
     cx, cy, cz = center
@@ -300,7 +323,8 @@ if __name__ == "__main__":
     here = os.path.dirname(os.path.abspath(__file__))
     for name, build in (("tiny_light", tiny_light), ("veach_mis", veach_mis),
                         ("sphere_near_floor", sphere_near_floor),
-                        ("glass_caustic", glass_caustic), ("many_lamps", many_lamps),
+                        ("glass_caustic", glass_caustic), ("mirror_caustic", mirror_caustic),
+                        ("many_lamps", many_lamps),
                         ("narrow_gap", narrow_gap)):
         doc = build()
         doc.doc["asset"]["generator"] = "scenes/make_failure_scenes.py"

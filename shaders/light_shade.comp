@@ -92,7 +92,7 @@ void shadeLightVertex(inout LightVertex v) {
     bool hasNonDelta = bsdfHasNonDelta(bsdf);
 #endif
 #if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
-    VcmMisConfig cfg = bdptMisConfig();
+    VcmMisConfig cfg = bdptMisConfig(v.sampleIndex);
     float cosHit = abs(dot(toLight, surface.ng));
     VcmSubpathMis mis;
     if (v.depth == 0u) {
@@ -101,11 +101,10 @@ void shadeLightVertex(inout LightVertex v) {
         mis = bdptMis(v.mis);
         vcmOnHit(cfg, mis, t * t, cosHit);
     }
-    // Kept for the camera subpath's connections where one can still reach it: a camera
-    // vertex at bounce 0 makes a path of depth + 3 segments.
-    if (v.depth + 3u <= params.maxDepth) {
-        bdptStoreLightVertex(v.path, v.depth, v.hit, toLight, hasNonDelta ? v.beta : vec3(0.0),
-                             mis);
+    // Kept for the camera subpath's connections (and merges) where one can still reach it.
+    if (bdptKeepsLightVertex(v.depth)) {
+        bdptStoreLightVertex(v.path, v.depth, v.hit, surface.p, toLight,
+                             hasNonDelta ? v.beta : vec3(0.0), mis, v.sampleIndex);
         lightDepths[v.path] = v.depth + 1u;
     }
 #endif

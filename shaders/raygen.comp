@@ -40,7 +40,7 @@ void main() {
     guideStartPath(path);
 #endif
 #if WF_INTEGRATOR == WF_INTEGRATOR_BDPT && WF_HAS_EMITTERS
-    pathMis[path] = bdptStored(bdptStartCamera(origin, direction));
+    pathMis[path] = bdptStored(bdptStartCamera(origin, direction, wavePathSample(pass, path)));
     // After the light subpaths, whose passes left the queue's arguments: the queue pass turns
     // this count into the camera rays' (wave_recorder.cpp).
     atomicAdd(counters.rayCount, 1u);

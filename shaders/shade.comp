@@ -137,5 +137,12 @@ void main() {
             shadowRadiance[slot] = wfPack(vec4(value, 0.0));
         }
     }
+#if WF_VCM
+    // Merges need no visibility test: straight into the path's light film entry.
+    if (inQueue && bdptVertex.connectable) {
+        LightFilmSum merged = vcmMerge(bdptVertex, path, pass.depth, pass.wavePixels);
+        lightFilmAddSum(path, merged);
+    }
+#endif
 #endif
 }

@@ -21,6 +21,7 @@ struct BdptCameraVertex {
     vec3 woLocal;       // towards the previous camera vertex
     vec3 beta;          // the camera subpath's throughput at the vertex
     VcmSubpathMis mis;  // after vcmOnHit here
+    uint sampleIndex;   // its MIS configuration's (and with WF_VCM, its merging radius's)
     BsdfParams bsdf;
 #if WF_BSDF_LAYERS
     BsdfLayers layers;
@@ -107,9 +108,9 @@ bool bdptConnect(BdptCameraVertex c, uint path, uint depth, uint d, out vec3 ori
     VcmSubpathMis lightMis;
     lightMis.dVCM = lightDirection.w;
     lightMis.dVC = lightThroughput.w;
-    lightMis.dVM = 0.0;
+    lightMis.dVM = 0.0; // the connection's weight reads dVCM and dVC only
     value *= vcmWeightConnect(
-        bdptMisConfig(), c.mis, lightMis,
+        bdptMisConfig(c.sampleIndex), c.mis, lightMis,
         bdptPdf(WF_BDPT_LOBES(c.bsdf, c.layers), c.woLocal, wCamera),
         bdptPdf(WF_BDPT_LOBES(c.bsdf, c.layers), wCamera, c.woLocal),
         bdptPdf(WF_BDPT_LOBES(lightBsdf, lightLayers), toLightLocal, toCameraLocal),
@@ -120,5 +121,9 @@ bool bdptConnect(BdptCameraVertex c, uint path, uint depth, uint d, out vec3 ori
     segment = offsetRayOrigin(s.p, s.pError, lightFrame.outside, -w) - origin;
     return any(greaterThan(value, vec3(0.0))) || any(isnan(value));
 }
+
+#if WF_VCM
+#include "bidir/vcm_merge.glsl"
+#endif
 
 #endif

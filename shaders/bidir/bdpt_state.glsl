@@ -10,6 +10,9 @@
 #define WF_BDPT_STATE_GLSL
 #include "bidir/vcm_mis.h"
 #include "bidir/scene_camera.glsl"
+#if WF_VCM
+#include "bidir/vcm_grid.glsl"
+#endif
 
 // 2: the power heuristic, 1: the balance heuristic.
 #ifndef WF_BDPT_MIS_EXPONENT
@@ -37,9 +40,16 @@ layout(std430, binding = WF_BINDING_LIGHT_VERTEX_THROUGHPUTS) buffer LightVertex
     vec4 lightVertexThroughputs[];
 };
 
-// Light subpaths per sample index: one per pixel (camera_importance.h's splat scale 1).
-VcmMisConfig bdptMisConfig() {
+// Light subpaths per sample index: one per pixel (camera_importance.h's splat scale 1). With
+// merging (WF_VCM), sample index i merges them within its own radius (vcm_grid.glsl).
+VcmMisConfig bdptMisConfig(uint sampleIndex) {
+#if WF_VCM
+    float radius = vcmMergeRadius(sampleIndex);
+    return makeVcmMisConfig(WF_BDPT_MIS_EXPONENT, float(params.pixelCount),
+                            WF_PI * radius * radius * float(params.pixelCount), true, true);
+#else
     return makeVcmMisConfig(WF_BDPT_MIS_EXPONENT, float(params.pixelCount), 0.0, true, false);
+#endif
 }
 
 VcmSubpathMis bdptMis(vec4 stored) {
@@ -53,18 +63,29 @@ VcmSubpathMis bdptMis(vec4 stored) {
 vec4 bdptStored(VcmSubpathMis mis) { return vec4(mis.dVCM, mis.dVC, mis.dVM, 0.0); }
 
 // The camera subpath's start: its ray's density per pixel, W H cameraDirectionPdf.
-VcmSubpathMis bdptStartCamera(vec3 lensPoint, vec3 direction) {
-    return vcmStartCamera(bdptMisConfig(),
+VcmSubpathMis bdptStartCamera(vec3 lensPoint, vec3 direction, uint sampleIndex) {
+    return vcmStartCamera(bdptMisConfig(sampleIndex),
                           float(params.pixelCount) *
                               cameraDirectionPdf(sceneCamera(), lensPoint, direction));
 }
 
-void bdptStoreLightVertex(uint path, uint depth, uvec4 hit, vec3 toLight, vec3 beta,
-                          VcmSubpathMis mis) {
+// Light bounces whose vertices are kept: a camera vertex at bounce 0 connects to bounce d as
+// a path of d + 3 segments, or merges with it as one of d + 2.
+bool bdptKeepsLightVertex(uint depth) {
+    return depth + (WF_VCM != 0 ? 2u : 3u) <= params.maxDepth;
+}
+
+// beta 0: a Dirac vertex, which nothing connects to or merges with.
+void bdptStoreLightVertex(uint path, uint depth, uvec4 hit, vec3 p, vec3 toLight, vec3 beta,
+                          VcmSubpathMis mis, uint sampleIndex) {
     uint slot = depth * params.pathCapacity + path;
     lightVertexHits[slot] = hit;
     lightVertexDirections[slot] = vec4(toLight, mis.dVCM);
     lightVertexThroughputs[slot] = vec4(beta, mis.dVC);
+#if WF_VCM
+    if (any(greaterThan(beta, vec3(0.0))))
+        vcmInsertLightVertex(slot, p, mis.dVM, sampleIndex);
+#endif
 }
 
 #endif

@@ -14,15 +14,19 @@ layout(std430, binding = WF_BINDING_LIGHT_FILM) buffer LightFilmBuffer {
     uint lightFilm[]; // 6 words per entry: r low, r high, g low, g high, b low, b high
 };
 
-void lightFilmAddChannel(uint word, float value) {
+// value in [0, 2^24): its whole part, and its fraction in 2^32 ulps rounded to nearest (the
+// fraction has at least 8 exact bits below the point).
+uvec2 lightFilmFixed(float value) {
     uint high = uint(value);
-    // 2^32 ulps of the fraction, rounded to nearest (value < 2^24, so the fraction has at
-    // least 8 exact bits below the point).
     float fraction = (value - float(high)) * 4294967296.0;
-    uint low = fraction >= 4294967295.0 ? 4294967295u : uint(fraction + 0.5);
-    if (low != 0u) {
-        uint old = atomicAdd(lightFilm[word], low);
-        if (old + low < old)
+    return uvec2(fraction >= 4294967295.0 ? 4294967295u : uint(fraction + 0.5), high);
+}
+
+void lightFilmAddChannel(uint word, uvec2 fixedValue) {
+    uint high = fixedValue.y;
+    if (fixedValue.x != 0u) {
+        uint old = atomicAdd(lightFilm[word], fixedValue.x);
+        if (old + fixedValue.x < old)
             high += 1u;
     }
     if (high != 0u)
@@ -31,9 +35,32 @@ void lightFilmAddChannel(uint word, float value) {
 
 // value: finite, each channel in [0, WF_LIGHT_FILM_MAX].
 void lightFilmAdd(uint entry, vec3 value) {
-    lightFilmAddChannel(6u * entry, value.r);
-    lightFilmAddChannel(6u * entry + 2u, value.g);
-    lightFilmAddChannel(6u * entry + 4u, value.b);
+    lightFilmAddChannel(6u * entry, lightFilmFixed(value.r));
+    lightFilmAddChannel(6u * entry + 2u, lightFilmFixed(value.g));
+    lightFilmAddChannel(6u * entry + 4u, lightFilmFixed(value.b));
+}
+
+// A sum kept in a shader's registers in the film's fixed point, so that terms found in any
+// order (vertex merging's grid lists) sum to the same bits. Its high words wrap past 2^32.
+struct LightFilmSum {
+    uvec3 low;
+    uvec3 high;
+};
+
+LightFilmSum lightFilmSumZero() { return LightFilmSum(uvec3(0u), uvec3(0u)); }
+
+void lightFilmSumAdd(inout LightFilmSum sum, vec3 value) {
+    for (int c = 0; c < 3; ++c) {
+        uvec2 v = lightFilmFixed(value[c]);
+        uint low = sum.low[c] + v.x;
+        sum.high[c] += v.y + (low < v.x ? 1u : 0u);
+        sum.low[c] = low;
+    }
+}
+
+void lightFilmAddSum(uint entry, LightFilmSum sum) {
+    for (uint c = 0u; c < 3u; ++c)
+        lightFilmAddChannel(6u * entry + 2u * c, uvec2(sum.low[c], sum.high[c]));
 }
 
 // The entry's sum, and zeroes it for the next wave.

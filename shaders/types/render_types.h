@@ -46,9 +46,12 @@ namespace wf::gpu_types {
 // tracer, whose shaders stay as they were.
 #define WF_INTEGRATOR_PATH 0
 #define WF_INTEGRATOR_LIGHT 1
-#define WF_INTEGRATOR_BDPT 2
+#define WF_INTEGRATOR_BDPT 2 // also --integrator vcm, which adds WF_VCM (bidir/vcm_grid.glsl)
 #ifndef WF_INTEGRATOR
 #define WF_INTEGRATOR WF_INTEGRATOR_PATH
+#endif
+#ifndef WF_VCM
+#define WF_VCM 0
 #endif
 
 // Scene data
@@ -102,6 +105,10 @@ namespace wf::gpu_types {
 #define WF_BINDING_LIGHT_VERTEX_HITS 107
 #define WF_BINDING_LIGHT_VERTEX_DIRECTIONS 108
 #define WF_BINDING_LIGHT_VERTEX_THROUGHPUTS 109
+// --integrator vcm (bidir/vcm_grid.glsl): per light vertex its position and dVM; the hash
+// grid's lists (per cell its first vertex, per vertex the next).
+#define WF_BINDING_LIGHT_VERTEX_POSITIONS 110
+#define WF_BINDING_MERGE_LISTS 111
 // WF_GUIDING (shaders/guiding/guide_bindings.glsl): the path guide's SD-tree and records.
 #define WF_BINDING_GUIDE_PARAMS 120   // GuideParams
 #define WF_BINDING_GUIDE_SPATIAL 121  // GuideSpatialNode[]
@@ -156,8 +163,10 @@ struct RenderParams {
     // (motion.glsl); 0 for a still camera, else 1 + its first key (3 vec4 per key).
     uint motionSegments;
     uint cameraMotionKeys;
-    uint pad2;
-    uint pad3;
+    // WF_VCM: the merging radius of sample index 0 in scene units (bidir/vcm_grid.glsl), and the
+    // hash grid's cells (a power of two).
+    float mergeRadius;
+    uint mergeCells;
     uint pad4;
 };
 

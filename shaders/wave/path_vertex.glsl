@@ -101,10 +101,11 @@ bool shadeLightHit(inout PathVertex v) {
 #if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
         // The emitter seen directly has no other strategy here (vcm_mis.h); the infinite
         // light takes the camera's quantities as they are, before any hit.
-        weight = v.depth == 0u ? 1.0
-                               : vcmWeightEmitterHit(bdptMisConfig(), bdptMis(v.mis), lightPdf,
-                                                     lightPdf / (WF_PI * params.sceneRadius *
-                                                                 params.sceneRadius));
+        weight = v.depth == 0u
+                     ? 1.0
+                     : vcmWeightEmitterHit(bdptMisConfig(v.sampleIndex), bdptMis(v.mis), lightPdf,
+                                           lightPdf / (WF_PI * params.sceneRadius *
+                                                       params.sceneRadius));
 #endif
         v.radiance += clampContribution(v.beta * environmentRadiance(v.direction) * weight);
 #endif
@@ -127,9 +128,9 @@ bool shadeLightHit(inout PathVertex v) {
 #if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
             if (v.depth > 0u && light.emitter != WF_NO_EMITTER) {
                 VcmSubpathMis mis = bdptMis(v.mis);
-                vcmOnHit(bdptMisConfig(), mis, t * t, cosLight);
+                vcmOnHit(bdptMisConfig(v.sampleIndex), mis, t * t, cosLight);
                 float pmf = emitterAt(light.emitter).pmf;
-                weight = vcmWeightEmitterHit(bdptMisConfig(), mis,
+                weight = vcmWeightEmitterHit(bdptMisConfig(v.sampleIndex), mis,
                                              lightPdf * cosLight / (t * t),
                                              sphereEmissionPdfW(pmf, light, cosLight));
             } else {
@@ -226,7 +227,7 @@ void shadePathVertex(inout PathVertex v) {
     v.aovNormal = surface.ns;
 #endif
 #if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
-    VcmMisConfig misConfig = bdptMisConfig();
+    VcmMisConfig misConfig = bdptMisConfig(v.sampleIndex);
     VcmSubpathMis mis = bdptMis(v.mis);
     vcmOnHit(misConfig, mis, t * t, abs(dot(wo, surface.ng)));
     bdptVertex.connectable = false;
@@ -389,6 +390,7 @@ void shadePathVertex(inout PathVertex v) {
     bdptVertex.woLocal = woLocal;
     bdptVertex.beta = v.beta;
     bdptVertex.mis = mis;
+    bdptVertex.sampleIndex = v.sampleIndex;
     bdptVertex.bsdf = bsdf;
 #endif
     if (v.depth + 1u >= params.maxDepth)

@@ -46,8 +46,8 @@ const CommandSpec& convergeSpec() {
                 {"--time", "", "T", "render seconds per method and seed: samples double until a "
                                     "checkpoint passes T (default 4)"},
                 {"--methods", "", "LIST", "comma-separated methods, each words joined by '+': a "
-                                          "sampler, bsdf|nee|mis or an integrator, light "
-                                          "or bdpt (--integrator; each sample's light "
+                                          "sampler, bsdf|nee|mis or an integrator, light, "
+                                          "bdpt or vcm (--integrator; each sample's light "
                                           "subpaths' time included), uniform|power|tree "
                                           "(light selection), no-randomize, triangle-area, "
                                           "sphere-area, adaptive (each checkpoint rendered "

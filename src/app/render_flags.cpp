@@ -145,6 +145,8 @@ std::string renderSettingsKey(const RenderSettings& s, const ParsedArgs& parsed)
            (s.integrator == Integrator::Path ? "" : std::string("integrator ") +
                                                         integratorName(s.integrator) + " ") +
            (s.bdptBalance ? "balance " : "") +
+           (s.integrator == Integrator::Vcm ? "vcm-radius " + std::to_string(s.vcmRadius) + " "
+                                            : std::string()) +
            lightSamplingName(s.lightSampling) + " " +
            lightSelectionName(s.lightSelection) + " triangle " +
            (s.triangleSolidAngle ? "solid-angle" : "area") + " sphere " +

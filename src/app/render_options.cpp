@@ -43,12 +43,21 @@ std::vector<OptionSpec> samplingOptions() {
                                      "(bidirectional path tracing: each pixel sample's camera "
                                      "and light subpaths, every connection between them "
                                      "weighed by MIS, the power heuristic; unbiased; keeps "
-                                     "max-depth - 2 light vertices per pixel). light and bdpt "
-                                     "trace whole samples of the image per wave and take "
-                                     "neither --target-error, guiding, motion blur, "
-                                     "--traversal rt nor an orthographic camera"},
-        {"--bdpt-heuristic", "", "NAME", "bdpt's MIS weights: power (the power heuristic, "
-                                         "beta 2; default) or balance (beta 1)"},
+                                     "max-depth - 2 light vertices per pixel) or vcm (vertex "
+                                     "connection and merging: bdpt plus merging each camera "
+                                     "vertex with the light vertices within --vcm-radius, all "
+                                     "weighed by MIS; CONSISTENT, NOT UNBIASED: its bias "
+                                     "shrinks as the samples grow, and its error estimate "
+                                     "measures variance, not that bias; keeps max-depth - 1 "
+                                     "light vertices per pixel). light, bdpt and vcm trace "
+                                     "whole samples of the image per wave and take neither "
+                                     "--target-error, guiding, motion blur, --traversal rt "
+                                     "nor an orthographic camera"},
+        {"--bdpt-heuristic", "", "NAME", "bdpt's and vcm's MIS weights: power (the power "
+                                         "heuristic, beta 2; default) or balance (beta 1)"},
+        {"--vcm-radius", "", "F", "vcm's merging radius at the first sample, as a fraction of "
+                                  "the scene's bounding-sphere radius (default 0.01); sample "
+                                  "i merges within that times (i + 1)^-1/8"},
         {"--light-sampling", "", "MODE", "bsdf (emission found by BSDF rays), nee (light "
                                          "sampling only) or mis (default)"},
         {"--light-selection", "", "MODE", "how NEE picks a light: uniform, power or tree (the "
@@ -232,11 +241,17 @@ void applyRenderFlags(const ParsedArgs& parsed, uint32_t defaultMaxDepth,
     settings.rrDepth = parsed.uintValue("--rr-depth", 3, 0, 1024);
     settings.seed = parsed.uintValue("--seed", 0, 0, 0xffffffffu);
     settings.integrator =
-        parseIntegrator(parsed.choiceValue("--integrator", "path", {"path", "light", "bdpt"}));
+        parseIntegrator(parsed.choiceValue("--integrator", "path",
+                                           {"path", "light", "bdpt", "vcm"}));
     settings.bdptBalance =
         parsed.choiceValue("--bdpt-heuristic", "power", {"power", "balance"}) == "balance";
-    if (settings.bdptBalance && settings.integrator != Integrator::Bdpt)
-        throw UsageError("--bdpt-heuristic applies to --integrator bdpt");
+    if (settings.bdptBalance && !bidirectional(settings.integrator))
+        throw UsageError("--bdpt-heuristic applies to --integrator bdpt or vcm");
+    // converge's methods name their integrators themselves (the word vcm).
+    if (parsed.has("--vcm-radius") && parsed.has("--integrator") &&
+        settings.integrator != Integrator::Vcm)
+        throw UsageError("--vcm-radius applies to --integrator vcm");
+    settings.vcmRadius = parsed.floatValue("--vcm-radius", settings.vcmRadius, 1e-6f, 1.0f);
     settings.lightSampling =
         parseLightSampling(parsed.choiceValue("--light-sampling", "mis", {"bsdf", "nee", "mis"}));
     if (parsed.has("--light-selection"))

@@ -27,7 +27,7 @@ std::string methodWords() {
     std::string words;
     for (const std::string& name : samplerNames())
         words += name + ", ";
-    return words + "bsdf, nee, mis, light, bdpt, uniform, power, tree, no-randomize, "
+    return words + "bsdf, nee, mis, light, bdpt, vcm, uniform, power, tree, no-randomize, "
                    "triangle-area, "
                    "sphere-area, adaptive, guided, replicates";
 }
@@ -47,7 +47,7 @@ ConvergenceMethod parseMethod(const std::string& text) {
         // The integrator replaces the path tracer's estimator: one word of the two.
         const bool isEstimator =
             word == "bsdf" || word == "nee" || word == "mis" || word == "light" ||
-            word == "bdpt";
+            word == "bdpt" || word == "vcm";
         const bool isSelection = word == "uniform" || word == "power" || word == "tree";
         if (!seen.insert(word).second || (isSampler && samplerSet) ||
             (isEstimator && estimatorSet) || (isSelection && selectionSet))
@@ -56,7 +56,7 @@ ConvergenceMethod parseMethod(const std::string& text) {
         if (isSampler) {
             method.sampler = parseSampler(word, "--methods");
             samplerSet = true;
-        } else if (word == "light" || word == "bdpt") {
+        } else if (word == "light" || word == "bdpt" || word == "vcm") {
             method.integrator = parseIntegrator(word);
             estimatorSet = true;
         } else if (isEstimator) {

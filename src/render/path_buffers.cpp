@@ -1,6 +1,7 @@
 #include "render/path_buffers.h"
 
 #include <algorithm>
+#include <bit>
 
 #include "shaders/types/render_types.h"
 
@@ -10,9 +11,18 @@ using gpu_types::QueueCounters;
 using gpu_types::RenderParams;
 
 uint32_t PathBuffers::bdptLightVertices(const ShaderVariant& variant, uint32_t maxDepth) {
-    return variant.lightSubpaths() && variant.integrator == Integrator::Bdpt && maxDepth > 2
-               ? maxDepth - 2
-               : 0;
+    if (!variant.lightSubpaths() || !bidirectional(variant.integrator))
+        return 0;
+    // Light bounce d connects to a camera vertex as a path of d + 3 segments or more, and
+    // merges with one as a path of d + 2 or more (bdptKeepsLightVertex).
+    const uint32_t shortest = variant.integrator == Integrator::Vcm ? 2 : 3;
+    return maxDepth >= shortest ? maxDepth - shortest + 1 : 0;
+}
+
+uint32_t PathBuffers::mergeCells(uint32_t pathCapacity, uint32_t lightVertices) {
+    // About one cell per light vertex (most lists short), a power of two for the hash's mask.
+    const uint64_t vertices = uint64_t(pathCapacity) * lightVertices;
+    return std::bit_ceil(uint32_t(std::clamp<uint64_t>(vertices, 1u << 10, 1u << 23)));
 }
 
 PathBuffers::PathBuffers(const Context& context, uint32_t pathCapacity, uint32_t pixelCount,
@@ -56,7 +66,7 @@ PathBuffers::PathBuffers(const Context& context, uint32_t pathCapacity, uint32_t
         lightFilm.upload(std::vector<uint32_t>(size_t(pathCapacity) * 6, 0u));
     }
     const uint64_t lightVertices = bdptLightVertices(variant, maxDepth);
-    if (variant.lightSubpaths() && variant.integrator == Integrator::Bdpt) {
+    if (variant.lightSubpaths() && bidirectional(variant.integrator)) {
         pathMis = Buffer(context, "path mis", uint64_t(pathCapacity) * 16);
         lightDepths = Buffer(context, "light depths", uint64_t(pathCapacity) * 4);
         // Zero entries still bind (a depth-2 render keeps no light vertex).
@@ -64,11 +74,20 @@ PathBuffers::PathBuffers(const Context& context, uint32_t pathCapacity, uint32_t
         lightVertexHits = Buffer(context, "light vertex hits", entries * 16);
         lightVertexDirections = Buffer(context, "light vertex directions", entries * 16);
         lightVertexThroughputs = Buffer(context, "light vertex throughputs", entries * 16);
+        if (variant.integrator == Integrator::Vcm) {
+            lightVertexPositions = Buffer(context, "light vertex positions", entries * 16);
+            mergeLists = Buffer(context, "merge lists",
+                                (mergeCells(pathCapacity, lightVertices) + entries) * 4);
+        }
     }
     if (use != PathStateUse::WavefrontWithShadowRays)
         return;
-    // BDPT queues a camera vertex's NEE and its connections in one bounce.
-    const uint64_t shadowEntries = uint64_t(pathCapacity) * (1 + lightVertices);
+    // BDPT queues a camera vertex's NEE and its connections in one bounce (VCM's last light
+    // vertex merges only).
+    const uint64_t connected =
+        variant.integrator == Integrator::Vcm && lightVertices > 0 ? lightVertices - 1
+                                                                   : lightVertices;
+    const uint64_t shadowEntries = uint64_t(pathCapacity) * (1 + connected);
     shadowOrigin = Buffer(context, "shadow origins", shadowEntries * 16);
     shadowDirection = Buffer(context, "shadow directions", shadowEntries * 16);
     shadowRadiance = Buffer(context, "shadow radiance", shadowEntries * 16);
@@ -77,7 +96,8 @@ PathBuffers::PathBuffers(const Context& context, uint32_t pathCapacity, uint32_t
 uint64_t PathBuffers::lightSubpathBytes(uint32_t pathCapacity) const {
     uint64_t bytes = 0;
     for (const Buffer* buffer : {&lightFilm, &pathMis, &lightDepths, &lightVertexHits,
-                                 &lightVertexDirections, &lightVertexThroughputs})
+                                 &lightVertexDirections, &lightVertexThroughputs,
+                                 &lightVertexPositions, &mergeLists})
         if (*buffer)
             bytes += buffer->size();
     if (lightFilm && shadowOrigin) // BDPT's wider shadow queue
@@ -126,6 +146,8 @@ void PathBuffers::appendBindings(DescriptorBindings& bindings) const {
         {WF_BINDING_LIGHT_VERTEX_HITS, &lightVertexHits},
         {WF_BINDING_LIGHT_VERTEX_DIRECTIONS, &lightVertexDirections},
         {WF_BINDING_LIGHT_VERTEX_THROUGHPUTS, &lightVertexThroughputs},
+        {WF_BINDING_LIGHT_VERTEX_POSITIONS, &lightVertexPositions},
+        {WF_BINDING_MERGE_LISTS, &mergeLists},
     };
     for (const DescriptorBinding& binding : all)
         if (*binding.buffer)
@@ -137,8 +159,9 @@ void PathBuffers::appendMemoryReport(
     for (const Buffer* buffer :
          {&params, &counters, &film, &rayOrigin, &rayDirection, &throughput, &radiance, &hits,
           &shadowOrigin, &shadowDirection, &shadowRadiance, &rayQueues, &aovPaths, &aovFilm,
-          &momentFilm, &replicateFilm, &activePixels, &rayCones, &kindQueues, &rayTime, &lightFilm, &pathMis, &lightDepths,
-          &lightVertexHits, &lightVertexDirections, &lightVertexThroughputs})
+          &momentFilm, &replicateFilm, &activePixels, &rayCones, &kindQueues, &rayTime,
+          &lightFilm, &pathMis, &lightDepths, &lightVertexHits, &lightVertexDirections,
+          &lightVertexThroughputs, &lightVertexPositions, &mergeLists})
         if (*buffer)
             report.emplace_back(buffer->name(), buffer->size());
 }

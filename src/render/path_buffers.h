@@ -19,12 +19,14 @@ enum class PathStateUse { Megakernel, Wavefront, WavefrontWithShadowRays };
 
 struct PathBuffers {
     // `variant` says which per-pixel extras exist (aov, secondMoment, adaptive).
-    // `maxDepth`: BDPT keeps maxDepth - 2 light vertices per path.
+    // `maxDepth`: BDPT keeps maxDepth - 2 light vertices per path, VCM maxDepth - 1.
     PathBuffers(const Context& context, uint32_t pathCapacity, uint32_t pixelCount,
                 PathStateUse use, const ShaderVariant& variant, uint32_t maxDepth);
-    // BDPT's light vertices per path (0 for the other integrators), and its shadow queue's
-    // entries per path: a camera vertex's NEE and a connection to each light vertex.
+    // BDPT's (and VCM's) light vertices per path (0 for the other integrators). The shadow
+    // queue holds per path a camera vertex's NEE and a connection to each it can connect to.
     static uint32_t bdptLightVertices(const ShaderVariant& variant, uint32_t maxDepth);
+    // VCM's hash grid: cells for that many light vertices (RenderParams::mergeCells).
+    static uint32_t mergeCells(uint32_t pathCapacity, uint32_t lightVertices);
     // What light subpaths add to the path state (their own buffers, and the shadow queue's
     // entries beyond one per path), in bytes: --verbose and the JSON's lightSubpathMemory.
     uint64_t lightSubpathBytes(uint32_t pathCapacity) const;
@@ -66,6 +68,10 @@ struct PathBuffers {
     Buffer lightVertexHits;
     Buffer lightVertexDirections;
     Buffer lightVertexThroughputs;
+    // VCM (bidir/vcm_grid.glsl): per light vertex its position and dVM; the hash grid's lists
+    // (mergeCells heads, cleared per wave, then one next link per light vertex).
+    Buffer lightVertexPositions;
+    Buffer mergeLists;
 };
 
 } // namespace wf

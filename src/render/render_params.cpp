@@ -6,6 +6,7 @@
 #include "errors.h"
 #include "gpu/context.h"
 #include "render/gpu_scene/scene_buffers.h"
+#include "render/path_buffers.h"
 
 namespace wf {
 
@@ -77,6 +78,11 @@ RenderParams renderParams(const PreparedScene& scene, const Camera& camera,
     params.motionSegments = scene.motionSegments;
     // A camera set since (the viewer's) has no keys: it stays where it is put.
     params.cameraMotionKeys = camera.motion.empty() ? 0u : scene.cameraMotionKeys;
+    if (variant.integrator == Integrator::Vcm) {
+        params.mergeRadius = settings.vcmRadius * scene.bounds.radius;
+        params.mergeCells = PathBuffers::mergeCells(
+            pathCapacity, PathBuffers::bdptLightVertices(variant, settings.maxDepth));
+    }
     return params;
 }
 

@@ -40,9 +40,12 @@ struct RenderSettings {
     // land anywhere), and is refused with the megakernel, --traversal rt, guiding, pixel lists
     // (--target-error), motion blur and cameras without a lens (WavefrontRenderer).
     Integrator integrator = Integrator::Path;
-    // --bdpt-heuristic balance: bdpt weighs its strategies by the balance heuristic instead of
-    // the power heuristic (the default). Another image of the same expectation.
+    // --bdpt-heuristic balance: bdpt (and vcm) weigh their strategies by the balance heuristic
+    // instead of the power heuristic (the default). Another image of the same expectation.
     bool bdptBalance = false;
+    // --vcm-radius: vcm's merging radius at sample index 0, as a fraction of the scene's
+    // bounding-sphere radius; sample index i merges within r (i + 1)^-1/8 (bidir/vcm_grid.glsl).
+    float vcmRadius = 0.01f;
     LightSampling lightSampling = LightSampling::Mis;
     LightSelection lightSelection = LightSelection::Auto; // --light-selection
     bool triangleSolidAngle = true; // --triangle-sampling solid-angle (else area)

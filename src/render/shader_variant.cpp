@@ -15,14 +15,14 @@ namespace wf {
 ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& settings) {
     const LightTable& lights = scene.lights;
     ShaderVariant variant;
-    // Without a light there is no light subpath: BDPT is then the path tracer.
-    variant.integrator = settings.integrator == Integrator::Bdpt && lights.emitters.empty()
+    // Without a light there is no light subpath: BDPT (and VCM) is then the path tracer.
+    variant.integrator = bidirectional(settings.integrator) && lights.emitters.empty()
                              ? Integrator::Path
                              : settings.integrator;
-    variant.bdptBalance = variant.integrator == Integrator::Bdpt && settings.bdptBalance;
+    variant.bdptBalance = bidirectional(variant.integrator) && settings.bdptBalance;
     // BDPT's strategies include next-event estimation, weighed by its own MIS.
-    variant.lightSampling = settings.integrator == Integrator::Bdpt ? LightSampling::Mis
-                                                                    : settings.lightSampling;
+    variant.lightSampling = bidirectional(settings.integrator) ? LightSampling::Mis
+                                                               : settings.lightSampling;
     // Light tracing reads the emitter table for its emission, whatever --light-sampling says
     // (its camera rays only add the emission they find).
     variant.nextEventEstimation =
@@ -165,8 +165,12 @@ ShaderDefines ShaderVariant::defines() const {
     if (motion) // defined only then, so still scenes' shaders are as before
         defines.emplace_back("WF_MOTION", "1");
     if (integrator != Integrator::Path)
-        defines.emplace_back("WF_INTEGRATOR", std::to_string(static_cast<int>(integrator)));
-    if (integrator == Integrator::Bdpt && bdptBalance)
+        defines.emplace_back("WF_INTEGRATOR",
+                             std::to_string(static_cast<int>(
+                                 bidirectional(integrator) ? Integrator::Bdpt : integrator)));
+    if (integrator == Integrator::Vcm)
+        defines.emplace_back("WF_VCM", "1");
+    if (bidirectional(integrator) && bdptBalance)
         defines.emplace_back("WF_BDPT_MIS_EXPONENT", "1.0");
     if (anisotropy) { // defined only then, so isotropic scenes' shaders are as before
         defines.emplace_back("WF_HAS_ANISOTROPY", "1");
@@ -226,13 +230,16 @@ Integrator parseIntegrator(const std::string& name) {
         return Integrator::Light;
     if (name == "bdpt")
         return Integrator::Bdpt;
-    throw UsageError("--integrator expects path, light or bdpt, got '" + name + "'");
+    if (name == "vcm")
+        return Integrator::Vcm;
+    throw UsageError("--integrator expects path, light, bdpt or vcm, got '" + name + "'");
 }
 
 const char* integratorName(Integrator integrator) {
     switch (integrator) {
     case Integrator::Light: return "light";
     case Integrator::Bdpt: return "bdpt";
+    case Integrator::Vcm: return "vcm";
     default: return "path";
     }
 }

@@ -17,9 +17,16 @@ enum class LightSampling { Bsdf = 0, Nee = 1, Mis = 2 };
 
 // --integrator: the path tracer; light tracing (camera rays find the emitters they see, light
 // subpaths connect to the camera for the rest; shaders/light_*.comp); bidirectional path
-// tracing (both subpaths, every connection weighed by MIS; bidir/bdpt_state.glsl). Values are
-// WF_INTEGRATOR's.
-enum class Integrator { Path = 0, Light = 1, Bdpt = 2 };
+// tracing (both subpaths, every connection weighed by MIS; bidir/bdpt_state.glsl); vertex
+// connection and merging (bdpt plus photon merges in the MIS, bidir/vcm_grid.glsl: consistent,
+// not unbiased). Path, light and bdpt are WF_INTEGRATOR's values; vcm compiles bdpt's shaders
+// with WF_VCM.
+enum class Integrator { Path = 0, Light = 1, Bdpt = 2, Vcm = 3 };
+
+// Both subpaths kept and connected (bdpt and vcm).
+constexpr bool bidirectional(Integrator integrator) {
+    return integrator == Integrator::Bdpt || integrator == Integrator::Vcm;
+}
 
 // How next-event estimation picks a light (--light-selection): uniformly, by power from one
 // alias table, or by the light tree's importance at the shading point. Auto: the tree where
@@ -29,8 +36,8 @@ constexpr uint32_t kLightTreeMinLights = 4;
 
 struct ShaderVariant {
     Integrator integrator = Integrator::Path; // WF_INTEGRATOR, defined only for light tracing
-    // WF_BDPT_MIS_EXPONENT, defined only where bdpt takes the balance heuristic (1; the power
-    // heuristic, 2, is bdpt_state.glsl's default).
+    // WF_BDPT_MIS_EXPONENT, defined only where bdpt or vcm take the balance heuristic (1; the
+    // power heuristic, 2, is bdpt_state.glsl's default).
     bool bdptBalance = false;
     LightSampling lightSampling = LightSampling::Mis;
     bool nextEventEstimation = false; // a light table to sample, and shadow rays

@@ -29,8 +29,10 @@ using gpu_types::QueueCounters;
 WaveRecorder::WaveRecorder(const Context& context, const ShaderCompiler& compiler,
                            const ShaderDefines& defines, const DescriptorTable& table,
                            const Buffer& counters, const ShaderVariant& variant,
-                           bool megakernel, uint32_t maxDepth, bool timePasses)
-    : counters_(counters), maxDepth_(maxDepth) {
+                           bool megakernel, uint32_t maxDepth, bool timePasses,
+                           const Buffer* mergeLists, uint32_t mergeCells)
+    : counters_(counters), mergeLists_(mergeLists), mergeCells_(mergeCells),
+      maxDepth_(maxDepth) {
     // Four passes per depth (with shade bins, a shade pass per bin), plus raygen and accumulate.
     // Light tracing: four more per light bounce (intersect, light_shade, queue, light_splat)
     // and two to start its subpaths.
@@ -77,16 +79,19 @@ void WaveRecorder::record(VkCommandBuffer cmd, const PassConstants& wave) const 
     for (DispatchArgs& args : initial.kindArgs)
         args = {0, 1, 1, 0}; // intersect raises groupsX
     vkCmdUpdateBuffer(cmd, counters_.handle(), 0, sizeof initial, &initial);
+    if (mergeLists_) // VCM: the grid's cells start empty (WF_VCM_END) each wave
+        vkCmdFillBuffer(cmd, mergeLists_->handle(), 0, uint64_t(mergeCells_) * 4, ~0u);
     computeBarrier(cmd);
 
     if (megakernel_) {
         megakernel_->record(cmd, wave);
     } else {
-        // BDPT's camera vertices connect to the light vertices its light subpaths keep.
-        if (lightRaygen_ && integrator_ == Integrator::Bdpt)
+        // BDPT's camera vertices connect to (VCM's also merge with) the light vertices its
+        // light subpaths keep.
+        if (lightRaygen_ && bidirectional(integrator_))
             recordLightSubpaths(cmd, wave);
         raygen_->record(cmd, wave);
-        if (integrator_ == Integrator::Bdpt)
+        if (bidirectional(integrator_))
             queue_->record(cmd, ~0u); // raygen's count: the light passes left the arguments
         // Light tracing's camera rays find the emitters they see and end.
         const uint32_t cameraDepth = integrator_ == Integrator::Light ? 1 : maxDepth_;
@@ -99,7 +104,7 @@ void WaveRecorder::record(VkCommandBuffer cmd, const PassConstants& wave) const 
             queue_->record(cmd, depth);
             if (shadow_)
                 shadow_->record(cmd, depth);
-            if (integrator_ == Integrator::Bdpt && lightSplat_)
+            if (bidirectional(integrator_) && lightSplat_)
                 lightSplat_->record(cmd, depth);
         }
         if (lightRaygen_ && integrator_ == Integrator::Light)

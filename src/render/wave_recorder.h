@@ -42,10 +42,13 @@ struct PassConstants;
 class WaveRecorder {
 public:
     // `counters` is the queue counter buffer every pass reads its indirect arguments from.
+    // `mergeLists`: VCM's hash grid (its first `mergeCells` words are cleared per wave), or
+    // null.
     WaveRecorder(const Context& context, const ShaderCompiler& compiler,
                  const ShaderDefines& defines, const DescriptorTable& table,
                  const Buffer& counters, const ShaderVariant& variant, bool megakernel,
-                 uint32_t maxDepth, bool timePasses);
+                 uint32_t maxDepth, bool timePasses, const Buffer* mergeLists = nullptr,
+                 uint32_t mergeCells = 0);
     ~WaveRecorder();
 
     void record(VkCommandBuffer cmd, const gpu_types::PassConstants& wave) const;
@@ -57,6 +60,8 @@ public:
 
 private:
     const Buffer& counters_;
+    const Buffer* mergeLists_;
+    uint32_t mergeCells_;
     uint32_t maxDepth_;
     std::unique_ptr<TimestampTimer> timer_;
     std::unique_ptr<RaygenPass> raygen_;

@@ -79,11 +79,19 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
                                    : variant_.nextEventEstimation
                                        ? PathStateUse::WavefrontWithShadowRays
                                        : PathStateUse::Wavefront;
-    if (variant_.integrator == Integrator::Bdpt) {
-        // Every light vertex field in one storage buffer; the shadow queue likewise.
+    if (bidirectional(variant_.integrator)) {
+        // Every light vertex field in one storage buffer; the shadow queue likewise. Waves
+        // shrink to fit (whole samples of the image still), down to one sample per pixel.
         const uint64_t perPath = 1 + PathBuffers::bdptLightVertices(variant_, settings.maxDepth);
+        const uint64_t fitting =
+            context.properties().limits.maxStorageBufferRange / (perPath * 16);
+        if (fitting >= pixelCount_ && pathCapacity_ > fitting) {
+            pathCapacity_ = static_cast<uint32_t>(fitting);
+            wavePaths_ = std::min(wavePaths_, pathCapacity_);
+        }
         if (uint64_t(pathCapacity_) * perPath * 16 > context.properties().limits.maxStorageBufferRange)
-            throw UsageError("--integrator bdpt keeps " + std::to_string(perPath - 1) +
+            throw UsageError(std::string("--integrator ") + integratorName(variant_.integrator) +
+                             " keeps " + std::to_string(perPath - 1) +
                              " light vertices per pixel at --max-depth " +
                              std::to_string(settings.maxDepth) + ": at " +
                              std::to_string(pixels) + " pixels that is over this device's "
@@ -106,7 +114,12 @@ WavefrontRenderer::WavefrontRenderer(const Context& context, const PreparedScene
     waves_ = std::make_unique<WaveRecorder>(context, compiler, defines_, *table_,
                                             pathBuffers_->counters, variant_,
                                             settings.megakernel, settings.maxDepth,
-                                            settings.timePasses);
+                                            settings.timePasses,
+                                            pathBuffers_->mergeLists ? &pathBuffers_->mergeLists
+                                                                     : nullptr,
+                                            PathBuffers::mergeCells(
+                                                pathCapacity_, PathBuffers::bdptLightVertices(
+                                                                   variant_, settings.maxDepth)));
 
     camera_ = scene.camera;
     uploadParams();

@@ -1,0 +1,79 @@
+// Vertex merging (--integrator vcm): a camera vertex gathers the light vertices of its own
+// sample index within that index's radius (vcm_grid.glsl), each a photon density estimate
+// weighed among every strategy that makes the path (vcm_mis.h's merge weight). Included by
+// bdpt_connect.glsl; shade.comp adds the sum to the path's light film entry. Consistent, not
+// unbiased: a merge blurs the light over the radius, which shrinks with the sample index.
+#ifndef WF_VCM_MERGE_GLSL
+#define WF_VCM_MERGE_GLSL
+#include "bidir/light_film.glsl"
+
+// The merges of camera vertex c at camera bounce `depth` of `path` (of a wave of
+// `wavePixels` pixels per sample slot), summed in the light film's fixed point (so their order
+// does not matter). Merges over WF_LIGHT_FILM_MAX or not
+// finite are dropped and counted with the NaN samples.
+LightFilmSum vcmMerge(BdptCameraVertex c, uint path, uint depth, uint wavePixels) {
+    LightFilmSum sum = lightFilmSumZero();
+    if (!c.connectable || depth + 2u > params.maxDepth)
+        return sum;
+    float radius = vcmMergeRadius(c.sampleIndex);
+    float radiusSq = radius * radius;
+    VcmMisConfig cfg = bdptMisConfig(c.sampleIndex);
+    // A photon's flux is its throughput over the light subpaths of the sample index; the
+    // estimate divides it by the disk it is gathered over.
+    float normalization = 1.0 / (WF_PI * radiusSq * float(params.pixelCount));
+    uint sampleSlot = path / wavePixels;
+    ivec3 low = vcmCell(c.p - vec3(radius), 2.0 * radius);
+    uint visited[8];
+    uint visitedCount = 0u;
+    for (uint corner = 0u; corner < 8u; ++corner) {
+        ivec3 cell = low + ivec3(corner & 1u, (corner >> 1u) & 1u, corner >> 2u);
+        uint bucket = vcmBucket(cell, c.sampleIndex);
+        // Two cells may share a bucket: read each list once, or its photons count twice.
+        bool seen = false;
+        for (uint i = 0u; i < visitedCount; ++i)
+            seen = seen || visited[i] == bucket;
+        if (seen)
+            continue;
+        visited[visitedCount++] = bucket;
+        for (uint slot = mergeLists[bucket]; slot != WF_VCM_END;
+             slot = mergeLists[params.mergeCells + slot]) {
+            vec4 position = lightVertexPositions[slot];
+            vec3 offset = position.xyz - c.p;
+            uint lightPath = slot % params.pathCapacity;
+            // Buckets hold other cells and other sample indices too.
+            if (dot(offset, offset) > radiusSq || lightPath / wavePixels != sampleSlot ||
+                depth + slot / params.pathCapacity + 2u > params.maxDepth)
+                continue;
+            vec4 lightDirection = lightVertexDirections[slot];
+            vec4 lightThroughput = lightVertexThroughputs[slot];
+            vec3 toLight = lightDirection.xyz;
+            vec3 wi = vec3(dot(toLight, c.tangent), dot(toLight, c.bitangent), dot(toLight, c.n));
+            float cosGeometric = abs(dot(toLight, c.ng));
+            if (!(cosGeometric > 0.0))
+                continue;
+            vec3 f = bdptEval(WF_BDPT_LOBES(c.bsdf, c.layers), c.woLocal, wi);
+            if (all(equal(f, vec3(0.0))))
+                continue;
+            VcmSubpathMis lightMis;
+            lightMis.dVCM = lightDirection.w;
+            lightMis.dVC = lightThroughput.w;
+            lightMis.dVM = position.w;
+            float weight = vcmWeightMerge(
+                cfg, c.mis, lightMis, bdptPdf(WF_BDPT_LOBES(c.bsdf, c.layers), c.woLocal, wi),
+                bdptPdf(WF_BDPT_LOBES(c.bsdf, c.layers), wi, c.woLocal));
+            // The photons arrive per unit of geometric area; the BSDF integrates against the
+            // shading normal's cosine (both 1 where the two normals agree).
+            vec3 value = clampContribution(c.beta * f * lightThroughput.rgb *
+                                           (weight * normalization * abs(wi.z) / cosGeometric));
+            bool storable = all(greaterThanEqual(value, vec3(0.0))) &&
+                            all(lessThanEqual(value, vec3(WF_LIGHT_FILM_MAX)));
+            if (storable)
+                lightFilmSumAdd(sum, value);
+            else
+                atomicAdd(counters.nonFiniteSamples, 1u);
+        }
+    }
+    return sum;
+}
+
+#endif
