@@ -90,8 +90,9 @@ class Renderer:
     guiding: "auto" (path guiding where the measured rule of docs/guiding.md predicts a gain),
     "on" or "off", as the CLI's --guiding: the default of every render(), which may override it
     (render(..., guiding="on")); each result's stats say what auto decided (guidingDecision).
-    integrator: "path" (the path tracer), "light" (light tracing) or "bdpt" (bidirectional path
-    tracing), as the CLI's --integrator:
+    integrator: "path" (the path tracer), "light" (light tracing), "bdpt" (bidirectional path
+    tracing) or "vcm" (vertex connection and merging: consistent, not unbiased; vcm_radius as
+    --vcm-radius), as the CLI's --integrator:
     the default of every render(), which may override it (render(..., integrator="path")).
     Raises DeviceError when there is no usable device.
     """
@@ -101,8 +102,9 @@ class Renderer:
         if guiding not in ("auto", "on", "off"):
             raise ValueError(f"guiding is 'auto', 'on' or 'off', not {guiding!r}")
         self._guiding = guiding
-        if integrator not in ("path", "light", "bdpt"):
-            raise ValueError(f"integrator is 'path', 'light' or 'bdpt', not {integrator!r}")
+        if integrator not in ("path", "light", "bdpt", "vcm"):
+            raise ValueError(
+                f"integrator is 'path', 'light', 'bdpt' or 'vcm', not {integrator!r}")
         self._integrator = integrator
         if device is not None and (isinstance(device, bool) or not isinstance(device, int)):
             raise ValueError(f"device is a device index or None, not {device!r}")
@@ -162,7 +164,8 @@ class Renderer:
                triangle_sampling=None, sphere_sampling=None, min_throughput=None, clamp=None,
                texture_filter=None, shade_split=None, no_randomize=False, spp_offset=None,
                spp_total=None, aov=(), time_limit=None, target_error=None, guiding=None,
-               error_replicates=None, integrator=None, bdpt_heuristic=None, progress=None):
+               error_replicates=None, integrator=None, bdpt_heuristic=None, vcm_radius=None,
+               progress=None):
         """Renders `scene` and returns a RenderOutput. None means the CLI's default (spp 64,
         width 512, height from the camera's aspect, seed 0, sampler "sobol", max_depth 16,
         light_sampling "mis", ...). aov: names among albedo, normal, depth, variance, samples.

@@ -31,6 +31,12 @@ namespace fs = std::filesystem;
 namespace wf {
 namespace {
 
+constexpr const char* kVcmEstimatorNote =
+    "consistent, not unbiased: vertex merging blurs light over mergeRadius, which shrinks as "
+    "samples grow (r (i + 1)^-1/8 at sample i)";
+constexpr const char* kVcmErrorNote =
+    "variance only: merging's bias is not included";
+
 // The layers as Cycles names its passes, one channel each.
 std::vector<ExrChannel> aovChannels(const std::vector<std::string>& names, const AovImages& aov,
                                     const std::vector<float>& sampleCounts) {
@@ -441,6 +447,22 @@ int runRenderCommand(const std::vector<std::string>& args) {
         statsContext.extraFields.push_back({"cameraSamples", std::to_string(samples)});
         statsContext.extraFields.push_back({"lightPaths", std::to_string(samples)});
     }
+    if (settings.integrator == Integrator::Vcm) {
+        // Merging is consistent, not unbiased: say so beside the image and its error figure.
+        const std::string radius = std::to_string(settings.vcmRadius);
+        const std::string mergeRadius =
+            std::to_string(settings.vcmRadius * prepared.bounds.radius);
+        guideAttributes.insert(guideAttributes.end(),
+                               {{"estimator", kVcmEstimatorNote},
+                                {"vcmRadius", radius},
+                                {"mergeRadius", mergeRadius},
+                                {"errorEstimateMeasures", kVcmErrorNote}});
+        statsContext.extraFields.push_back({"estimator", jsonQuoted(kVcmEstimatorNote)});
+        statsContext.extraFields.push_back({"unbiased", "false"});
+        statsContext.extraFields.push_back({"vcmRadius", radius});
+        statsContext.extraFields.push_back({"mergeRadius", mergeRadius});
+        statsContext.extraFields.push_back({"errorEstimateMeasures", jsonQuoted(kVcmErrorNote)});
+    }
     writeRenderPart(*output, finished, guideAttributes, true,
                     aovs.empty() ? std::vector<ExrChannel>{}
                                  : aovChannels(aovs, settings.aov ? renderer.readAovs()
@@ -462,6 +484,9 @@ int runRenderCommand(const std::vector<std::string>& args) {
                      stats.paths / std::max(stats.seconds, 1e-9),
                      describeErrorEstimate(estimate).c_str(),
                      estimate.reliable ? "" : (": " + estimate.reason).c_str());
+    if (!quiet && settings.integrator == Integrator::Vcm)
+        std::fprintf(stderr, "wavefront: vcm is consistent, not unbiased: that estimate "
+                             "measures variance, not merging's bias\n");
     return validationExitCode(context);
 }
 

@@ -96,9 +96,9 @@ void samplingRows(RenderSettings& render, OverlayActions& actions) {
         render.sampler = allSamplers()[size_t(sampler)];
         actions.renderChanged = true;
     }
-    // Integrator's order: path, light, bdpt.
+    // Integrator's order: path, light, bdpt, vcm.
     int integrator = int(render.integrator);
-    if (ImGui::Combo("--integrator", &integrator, "path\0light\0bdpt\0")) {
+    if (ImGui::Combo("--integrator", &integrator, "path\0light\0bdpt\0vcm\0")) {
         render.integrator = Integrator(integrator);
         actions.renderChanged = true;
     }

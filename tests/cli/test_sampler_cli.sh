@@ -111,13 +111,23 @@ expect "light and bdpt parts: one line" one_line_error
 check "light with --target-error" 2 "$wavefront" render "$cornell" -o "$work/x.exr" \
     --integrator light --target-error 0.01 --width 8
 expect "light with --target-error: one line" one_line_error
-check "unknown integrator" 2 "$wavefront" render "$cornell" -o "$work/x.exr" --integrator vcm
+check "unknown integrator" 2 "$wavefront" render "$cornell" -o "$work/x.exr" --integrator sppm
 expect "unknown integrator: one line" one_line_error
+# vcm: consistent, not unbiased, and labelled so in the EXR and JSON.
+check "render --integrator vcm" 0 "$wavefront" render "$cornell" -o "$work/vcm.exr" \
+    --spp 2 --width 8 --max-depth 4 --integrator vcm --vcm-radius 0.05 --json "$work/vcm.json" -q
+expect "vcm: labelled consistent in the EXR header" grep -qa "consistent, not unbiased" \
+    "$work/vcm.exr"
+expect "vcm: labelled in the JSON" json_has "$work/vcm.json" \
+    "d['integrator'] == 'vcm' and d['unbiased'] is False and d['vcmRadius'] == 0.05 and 'variance only' in d['errorEstimateMeasures']"
+check "--vcm-radius with bdpt" 2 "$wavefront" render "$cornell" -o "$work/x.exr" \
+    --integrator bdpt --vcm-radius 0.05 --width 8
+expect "--vcm-radius with bdpt: one line" one_line_error
 check "converge light" 0 "$wavefront" converge "$cornell" -o "$work/c5" \
-    --reference "$conv/reference.exr" --time 0.01 --max-spp 4 --methods sobol,sobol+light \
-    --max-depth 3 --no-plot -q
+    --reference "$conv/reference.exr" --time 0.01 --max-spp 4 \
+    --methods sobol,sobol+light,sobol+vcm --max-depth 3 --no-plot -q
 expect "converge light: a method of its own" json_has "$work/c5/convergence.json" \
-    "[(m['name'], m['integrator']) for m in d['methods']] == [('sobol+mis', 'path'), ('sobol+light', 'light')]"
+    "[(m['name'], m['integrator']) for m in d['methods']] == [('sobol+mis', 'path'), ('sobol+light', 'light'), ('sobol+vcm', 'vcm')]"
 check "converge: light and nee" 2 "$wavefront" converge "$cornell" -o "$work/c3" \
     --methods sobol+light+nee
 expect "light and nee: one line" one_line_error

@@ -221,4 +221,6 @@ def test_light_tracing_from_the_renderer_or_the_call(renderer, cornell):
         with pytest.raises(ValueError, match="target_error"):
             own.render(own.load(CORNELL), width=16, target_error=0.01)
     with pytest.raises(ValueError, match="integrator"):
-        wf.Renderer(integrator="vcm")
+        wf.Renderer(integrator="sppm")
+    vcm = renderer.render(cornell, width=16, spp=2, max_depth=4, integrator="vcm", vcm_radius=0.05)
+    assert np.isfinite(vcm.image).all() and vcm.image.mean() > 0.0
