@@ -141,6 +141,14 @@ struct Material {
     uint anisotropyTexture;   // RG: direction in the tangent frame ([-1, 1]); B x strength
     vec2 anisotropyRotation;  // (cos, sin) of anisotropyRotation: counter-clockwise from the
                               // tangent towards the bitangent
+    // KHR_materials_diffuse_transmission (texels 14-15; read by shaders only where
+    // WF_HAS_DIFFUSE_TRANSMISSION): the share of the diffuse base that crosses the surface.
+    vec3 diffuseTransmissionColor;        // diffuseTransmissionColorFactor, white by default
+    float diffuseTransmission;            // diffuseTransmissionFactor; 0: none
+    uint diffuseTransmissionTexture;      // its A channel multiplies diffuseTransmission
+    uint diffuseTransmissionColorTexture; // its RGB (sRGB) multiplies diffuseTransmissionColor
+    uint pad4;
+    uint pad5;
 };
 
 // Per-scene switches for the material extensions (ShaderVariant), off in shaders compiled
@@ -175,6 +183,9 @@ struct Material {
 #endif
 #ifndef WF_HAS_ANISOTROPY
 #define WF_HAS_ANISOTROPY 0
+#endif
+#ifndef WF_HAS_DIFFUSE_TRANSMISSION
+#define WF_HAS_DIFFUSE_TRANSMISSION 0
 #endif
 #endif
 
@@ -213,7 +224,7 @@ struct Emitter {
 #define WF_INSTANCE_PAGES 1
 #define WF_INSTANCE_PAGE_SHIFT 31
 #endif
-#define WF_MATERIAL_TEXELS 14u
+#define WF_MATERIAL_TEXELS 16u
 #define WF_INSTANCE_TEXELS 7u
 
 #ifdef __cplusplus
@@ -230,7 +241,7 @@ static_assert(offsetof(wf::gpu_types::Triangle, p2) == 32);
 static_assert(sizeof(wf::gpu_types::BvhNode) == 32);
 static_assert(offsetof(wf::gpu_types::BvhNode, hi) == 16);
 static_assert(offsetof(wf::gpu_types::BvhNode, count) == 28);
-static_assert(sizeof(wf::gpu_types::Material) == 224);
+static_assert(sizeof(wf::gpu_types::Material) == 256);
 static_assert(offsetof(wf::gpu_types::Material, emission) == 16);
 static_assert(offsetof(wf::gpu_types::Material, flags) == 28);
 static_assert(offsetof(wf::gpu_types::Material, specularColor) == 48);
@@ -255,6 +266,10 @@ static_assert(offsetof(wf::gpu_types::Material, pad3) == 204);
 static_assert(offsetof(wf::gpu_types::Material, anisotropyStrength) == 208);
 static_assert(offsetof(wf::gpu_types::Material, anisotropyTexture) == 212);
 static_assert(offsetof(wf::gpu_types::Material, anisotropyRotation) == 216);
+static_assert(offsetof(wf::gpu_types::Material, diffuseTransmissionColor) == 224);
+static_assert(offsetof(wf::gpu_types::Material, diffuseTransmission) == 236);
+static_assert(offsetof(wf::gpu_types::Material, diffuseTransmissionTexture) == 240);
+static_assert(offsetof(wf::gpu_types::Material, pad5) == 252);
 static_assert(sizeof(wf::gpu_types::Emitter) == 16);
 static_assert(sizeof(wf::gpu_types::Instance) == 16 * WF_INSTANCE_TEXELS);
 static_assert(offsetof(wf::gpu_types::Instance, worldFromObject0) == 48);

@@ -566,6 +566,17 @@ m = g.material(pbrMetallicRoughness={"metallicFactor": 1, "roughnessFactor": 0.4
                    "anisotropyTexture": {"index": tex, "extensions": {"KHR_texture_transform": {
                        "scale": [3, 3]}}}}})
 case("valid/material_anisotropy.gltf", "loads 2 images=1 normals=1 tangents=1", quad(g, m))
+# KHR_materials_diffuse_transmission: factor and colour, the factor's texture (A, with
+# KHR_texture_transform on TEXCOORD_0) and the colour's (sRGB RGB).
+g = Gltf()
+tex = g.texture(g.image(checker_png()))
+m = g.material(extensions={"KHR_materials_diffuse_transmission": {
+    "diffuseTransmissionFactor": 0.6, "diffuseTransmissionColorFactor": [1, 0.5, 0.25],
+    "diffuseTransmissionTexture": {"index": tex, "extensions": {"KHR_texture_transform": {
+        "offset": [0.5, 0], "scale": [2, 2]}}},
+    "diffuseTransmissionColorTexture": {"index": tex}}})
+g.doc["extensionsUsed"] = ["KHR_materials_diffuse_transmission", "KHR_texture_transform"]
+case("valid/material_diffuse_transmission.gltf", "loads 2 images=1", quad(g, m))
 g = tri()
 g.doc["nodes"][0]["children"] = [1]
 g.doc["nodes"].append({"mesh": 0, "translation": [0, 0, 1]})
@@ -856,6 +867,16 @@ for name, key, anisotropy in [
          {"anisotropyStrength": 0.5, "anisotropyRotation": "east"})]:
     g = Gltf()
     m = g.material(extensions={"KHR_materials_anisotropy": anisotropy})
+    broken(name, key, quad(g, m, uv=False))
+for name, key, dt in [
+        ("diffuse_transmission_above_one.gltf", "diffuseTransmissionFactor",
+         {"diffuseTransmissionFactor": 1.5}),
+        ("diffuse_transmission_color_above_one.gltf", "diffuseTransmissionColorFactor",
+         {"diffuseTransmissionFactor": 0.5, "diffuseTransmissionColorFactor": [1, 2, 1]}),
+        ("diffuse_transmission_texture_without_index.gltf", "diffuseTransmissionTexture",
+         {"diffuseTransmissionFactor": 0.5, "diffuseTransmissionTexture": {"texCoord": 0}})]:
+    g = Gltf()
+    m = g.material(extensions={"KHR_materials_diffuse_transmission": dt})
     broken(name, key, quad(g, m, uv=False))
 
 

@@ -7,6 +7,7 @@
 #include <glm/gtc/packing.hpp>
 
 #include "scene/gltf/gltf_loader.h"
+#include "scene/gltf/gltf_materials.h"
 #include "scene/gltf/gltf_primitives.h"
 
 namespace wf {
@@ -271,6 +272,33 @@ TEST(GltfFeatures, MaterialAnisotropy) {
     EXPECT_EQ(plain.anisotropyTexture, WF_NO_TEXTURE);
     EXPECT_EQ(plain.anisotropyRotation, glm::vec2(1.0f, 0.0f));
     EXPECT_TRUE(load("material_extensions.gltf").surface.tangents.empty());
+}
+
+// KHR_materials_diffuse_transmission reaches the Material: factor, colour, the factor's texture
+// (linear, A, with its KHR_texture_transform) and the colour's (sRGB). Without the extension:
+// factor 0, white, no textures.
+TEST(GltfFeatures, MaterialDiffuseTransmission) {
+    EXPECT_TRUE(gltf::isSupportedExtension("KHR_materials_diffuse_transmission"));
+    testing::internal::CaptureStderr();
+    const Scene scene = load("material_diffuse_transmission.gltf");
+    EXPECT_EQ(testing::internal::GetCapturedStderr(), ""); // no "ignoring glTF extension"
+    const Material& m = scene.materials[0];
+    EXPECT_FLOAT_EQ(m.diffuseTransmission, 0.6f);
+    EXPECT_EQ(m.diffuseTransmissionColor, glm::vec3(1.0f, 0.5f, 0.25f));
+    ASSERT_NE(m.diffuseTransmissionTexture, WF_NO_TEXTURE);
+    ASSERT_NE(m.diffuseTransmissionColorTexture, WF_NO_TEXTURE);
+    const TextureRef& factor = scene.surface.textureRefs[m.diffuseTransmissionTexture];
+    const TextureRef& colour = scene.surface.textureRefs[m.diffuseTransmissionColorTexture];
+    EXPECT_FALSE(factor.flags & WF_TEXTURE_SRGB);
+    EXPECT_TRUE(colour.flags & WF_TEXTURE_SRGB);
+    expectNear(factor.uRow, {2.0f, 0.0f, 0.5f});
+    expectNear(factor.vRow, {0.0f, 2.0f, 0.0f});
+    expectNear(colour.uRow, {1.0f, 0.0f, 0.0f});
+    const Material plain = load("material_extensions.gltf").materials[0];
+    EXPECT_EQ(plain.diffuseTransmission, 0.0f);
+    EXPECT_EQ(plain.diffuseTransmissionColor, glm::vec3(1.0f));
+    EXPECT_EQ(plain.diffuseTransmissionTexture, WF_NO_TEXTURE);
+    EXPECT_EQ(plain.diffuseTransmissionColorTexture, WF_NO_TEXTURE);
 }
 
 TEST(GltfFeatures, UnknownExtensionsWarnOnceEach) {

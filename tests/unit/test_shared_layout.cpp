@@ -161,6 +161,15 @@ TEST(SharedLayout, GlslOffsetsMatchCpp) {
     expectOffset("mat.anisotropyStrength", materialBase, offsetof(Material, anisotropyStrength));
     expectOffset("mat.anisotropyTexture", materialBase, offsetof(Material, anisotropyTexture));
     expectOffset("mat.anisotropyRotation", materialBase, offsetof(Material, anisotropyRotation));
+    // Diffuse transmission (texels 14-15), last.
+    expectOffset("mat.diffuseTransmissionColor", materialBase,
+                 offsetof(Material, diffuseTransmissionColor));
+    expectOffset("mat.diffuseTransmission", materialBase, offsetof(Material, diffuseTransmission));
+    expectOffset("mat.diffuseTransmissionTexture", materialBase,
+                 offsetof(Material, diffuseTransmissionTexture));
+    expectOffset("mat.diffuseTransmissionColorTexture", materialBase,
+                 offsetof(Material, diffuseTransmissionColorTexture));
+    expectOffset("mat.pad5", materialBase, offsetof(Material, pad5));
     expectOffset("em.alias", materialBase + sizeof(Material), offsetof(Emitter, alias));
     const size_t pairBase = materialBase + sizeof(Material) + sizeof(Emitter);
     expectOffset("pair.child0", pairBase, offsetof(BvhPair, child0));

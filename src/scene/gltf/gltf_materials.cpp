@@ -20,7 +20,7 @@ const std::set<std::string> SUPPORTED_EXTENSIONS = {
     "KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_materials_transmission",
     "KHR_materials_specular", "KHR_materials_clearcoat", "KHR_materials_sheen",
     "KHR_materials_volume", "KHR_materials_iridescence", "KHR_texture_transform", "KHR_lights_punctual",
-    "KHR_materials_anisotropy",
+    "KHR_materials_anisotropy", "KHR_materials_diffuse_transmission",
     "KHR_mesh_quantization", "KHR_draco_mesh_compression", "EXT_meshopt_compression",
     "KHR_meshopt_compression", "KHR_materials_unlit", "EXT_texture_webp",
     "EXT_mesh_gpu_instancing", "KHR_materials_pbrSpecularGlossiness"};
@@ -54,6 +54,8 @@ private:
                             MaterialNeeds& needs);
     void convertAnisotropy(const tinygltf::Material& m, const std::string& name, Material& out,
                            MaterialNeeds& needs);
+    void convertDiffuseTransmission(const tinygltf::Material& m, const std::string& name,
+                                    Material& out, MaterialNeeds& needs);
     Material convert(const tinygltf::Material& m, const std::string& name, MaterialNeeds& needs);
     void makeUnlit(Material& out) const;
 
@@ -191,6 +193,29 @@ void MaterialConverter::convertIridescence(const tinygltf::Material& m, const st
         textures_.inExtension(film, "iridescenceThicknessTexture", false, name, needs);
 }
 
+// KHR_materials_diffuse_transmission: the share of the diffuse base that leaves through the
+// other side as a Lambert lobe of its own colour (bsdf.h).
+void MaterialConverter::convertDiffuseTransmission(const tinygltf::Material& m,
+                                                   const std::string& name, Material& out,
+                                                   MaterialNeeds& needs) {
+    const tinygltf::Value& dt = extensionIn(m.extensions, "KHR_materials_diffuse_transmission");
+    if (!dt.IsObject())
+        return;
+    const double factor = jsonNumber(dt, "diffuseTransmissionFactor", 0.0);
+    checkRange(name, "diffuseTransmissionFactor", factor, 0.0, 1.0);
+    out.diffuseTransmission = float(factor);
+    const std::vector<double> color =
+        jsonNumbers(dt, "diffuseTransmissionColorFactor", 3, {1, 1, 1});
+    for (int c = 0; c < 3; ++c) {
+        checkRange(name, "diffuseTransmissionColorFactor", color[c], 0.0, 1.0);
+        out.diffuseTransmissionColor[c] = float(color[c]);
+    }
+    out.diffuseTransmissionTexture =
+        textures_.inExtension(dt, "diffuseTransmissionTexture", false, name, needs);
+    out.diffuseTransmissionColorTexture =
+        textures_.inExtension(dt, "diffuseTransmissionColorTexture", true, name, needs);
+}
+
 // KHR_materials_anisotropy: GGX stretched along a direction in the tangent frame
 // (bsdf/anisotropy.h). Primitives using it get tangent frames as normal-mapped ones do.
 void MaterialConverter::convertAnisotropy(const tinygltf::Material& m, const std::string& name,
@@ -317,6 +342,7 @@ Material MaterialConverter::convert(const tinygltf::Material& m, const std::stri
         needs.normalMapTexCoord = set;
     }
     convertAnisotropy(m, name, out, needs);
+    convertDiffuseTransmission(m, name, out, needs);
     if (extensionIn(m.extensions, "KHR_materials_unlit").IsObject())
         makeUnlit(out);
     return out;
@@ -343,6 +369,8 @@ void MaterialConverter::makeUnlit(Material& out) const {
         out.sheenColorTexture = out.sheenRoughnessTexture = out.thicknessTexture = WF_NO_TEXTURE;
     out.anisotropyStrength = 0.0f;
     out.anisotropyTexture = WF_NO_TEXTURE;
+    out.diffuseTransmission = 0.0f;
+    out.diffuseTransmissionTexture = out.diffuseTransmissionColorTexture = WF_NO_TEXTURE;
 }
 
 MaterialTables MaterialConverter::run() {
@@ -369,7 +397,8 @@ std::vector<uint32_t*> textureFields(Material& m) {
             &m.specularColorTexture, &m.iridescenceTexture,       &m.iridescenceThicknessTexture,
             &m.clearcoatTexture,     &m.clearcoatRoughnessTexture, &m.clearcoatNormalTexture,
             &m.sheenColorTexture,    &m.sheenRoughnessTexture,    &m.thicknessTexture,
-            &m.anisotropyTexture};
+            &m.anisotropyTexture,    &m.diffuseTransmissionTexture,
+            &m.diffuseTransmissionColorTexture};
 }
 
 Material defaultMaterial() {
@@ -395,6 +424,8 @@ Material defaultMaterial() {
     m.clearcoatNormalScale = 1.0f;
     m.anisotropyTexture = WF_NO_TEXTURE; // strength 0: isotropic; rotation 0
     m.anisotropyRotation = glm::vec2(1.0f, 0.0f);
+    m.diffuseTransmissionColor = glm::vec3(1.0f); // factor 0: no diffuse transmission
+    m.diffuseTransmissionTexture = m.diffuseTransmissionColorTexture = WF_NO_TEXTURE;
     return m;
 }
 

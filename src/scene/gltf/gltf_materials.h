@@ -1,8 +1,9 @@
 // glTF materials to the GPU's Material records: metallic-roughness factors and textures,
 // emission (KHR_materials_emissive_strength), alpha modes, KHR_materials_ior, _transmission,
-// _specular, _clearcoat, _sheen, _volume and _iridescence (factors and textures), the archived
-// KHR_materials_pbrSpecularGlossiness (mapped onto the same BSDF: docs/gltf.md), and one
-// TextureRef per texture use (gltf_texture_refs.h). Images are decoded later (gltf_images.h).
+// _specular, _clearcoat, _sheen, _volume, _iridescence, _anisotropy and _diffuse_transmission
+// (factors and textures), the archived KHR_materials_pbrSpecularGlossiness (mapped onto the
+// same BSDF: docs/gltf.md), and one TextureRef per texture use (gltf_texture_refs.h). Images
+// are decoded later (gltf_images.h).
 #pragma once
 #include <cstdint>
 #include <string>
