@@ -13,6 +13,8 @@
 //                cosine being, for the transmissive part, the one on the optically thinner side
 //                of the interface (F = specular beyond the critical angle: exact TIR)
 //   BTDF       = Walter et al. 2007, weighted 1 - max(F) at its microfacet.
+//   diffuse    = Lambert, split by KHR_materials_diffuse_transmission into a reflected and a
+//                transmitted Lambert lobe (diffuse_base.h)
 // GGX is Trowbridge-Reitz with height-correlated Smith G2, sampled by visible normals. Roughness
 // exactly 0 makes reflection and refraction Dirac lobes, with the same Schlick F. Anisotropic
 // materials stretch all three lobes' GGX along the frame's x axis (anisotropy.h).
@@ -64,6 +66,15 @@
 // KHR_materials_anisotropy: the lobes' GGX takes (alpha_t, alpha_b) along the frame's x and y
 // where some material is anisotropic (WF_HAS_ANISOTROPY; always in the C++ tests).
 #include "bsdf/anisotropy.h"
+// KHR_materials_diffuse_transmission splits the diffuse base (diffuse_base.h): compiled in only
+// where some material has it; always in the C++ tests.
+#ifndef WF_HAS_DIFFUSE_TRANSMISSION
+#ifdef __cplusplus
+#define WF_HAS_DIFFUSE_TRANSMISSION 1
+#else
+#define WF_HAS_DIFFUSE_TRANSMISSION 0
+#endif
+#endif
 
 #ifdef __cplusplus
 namespace wf::gpu_types {
@@ -94,6 +105,15 @@ struct BsdfParams {
     float anisotropy = 0.0f; // anisotropyStrength (x texture B) along the frame's +x axis
 #else
     float anisotropy;
+#endif
+#endif
+#if WF_HAS_DIFFUSE_TRANSMISSION
+#ifdef __cplusplus
+    float diffuseTransmission = 0.0f;            // factor (x texture A): 0 is opaque
+    vec3 diffuseTransmissionColor = vec3(1.0f);  // colour factor (x texture RGB)
+#else
+    float diffuseTransmission;
+    vec3 diffuseTransmissionColor;
 #endif
 #endif
 };
@@ -141,6 +161,10 @@ WF_INLINE BsdfParams bsdfSanitize(BsdfParams m) {
 #if WF_HAS_ANISOTROPY
     m.anisotropy = clamp(m.anisotropy, 0.0f, 1.0f);
 #endif
+#if WF_HAS_DIFFUSE_TRANSMISSION
+    m.diffuseTransmission = clamp(m.diffuseTransmission, 0.0f, 1.0f);
+    m.diffuseTransmissionColor = clamp(m.diffuseTransmissionColor, vec3(0.0f), vec3(1.0f));
+#endif
     return m;
 }
 
@@ -187,19 +211,8 @@ WF_INLINE BsdfLobes bsdfLobes(BsdfParams m, bool inside) {
     return l;
 }
 
-// 1 - w E(mu): the share of light at cosine mu that the specular layer leaves to the base.
-WF_INLINE float specularComplement(BsdfParams m, BsdfLobes l, float mu) {
-    float e = l.f0Max + (1.0f - l.f0Max) * l.kappa * pow(clamp(1.0f - mu, 0.0f, 1.0f), l.power);
-    return 1.0f - m.specular * e;
-}
-
-WF_INLINE vec3 diffuseLobe(BsdfParams m, BsdfLobes l, float muO, float muI) {
-    if (l.kDiffuse <= 0.0f || l.diffuseNorm <= 1e-6f) {
-        return vec3(0.0f);
-    }
-    return m.baseColor * (l.kDiffuse * WF_INV_PI * specularComplement(m, l, muO) *
-                          specularComplement(m, l, muI) / l.diffuseNorm);
-}
+// The diffuse base and its split; the Lambert-only BSDF of diffuse scenes (diffuse_base.h).
+#include "bsdf/diffuse_base.h"
 
 // Fresnel of the dielectric layer (F0 = l.f0) and of the metal (F0 = baseColor) at cosine c:
 // Schlick's, mixed by iridescenceFactor with the thin film's over the same F0.
@@ -265,9 +278,9 @@ WF_INLINE vec2 microChoice(BsdfParams m, BsdfLobes l, float c) {
 // keeps at least 1/11 whenever it exists: rough refraction can happen where the macro Fresnel
 // says TIR, and F0 = 0 (ior 1) still reflects at tilted microfacets.
 WF_INLINE float bsdfDiffuseProbability(BsdfParams m, BsdfLobes l, float muO) {
-    float eD = l.diffuseNorm > 1e-6f
-                   ? l.kDiffuse * averageComponent(m.baseColor) * specularComplement(m, l, muO)
-                   : 0.0f;
+    float eD = l.diffuseNorm > 1e-6f ? l.kDiffuse * averageComponent(diffuseAlbedo(m)) *
+                                           specularComplement(m, l, muO)
+                                     : 0.0f;
     float eM = averageComponent(microReflectance(m, l, muO) + microTransmittance(m, l, muO));
     bool microExists = m.metallic > 0.0f || m.specular > 0.0f ||
                        l.kTransmit * maxComponent(m.baseColor) > 0.0f;
@@ -302,9 +315,14 @@ WF_INLINE vec3 bsdfEvalMirrored(BsdfParams m, BsdfLobes l, vec3 wo, vec3 wi) {
         }
         return f;
     }
+#if WF_HAS_DIFFUSE_TRANSMISSION
+    vec3 fd = diffuseTransmittance(m) * diffuseShape(m, l, wo.z, -wi.z);
+#else
+    vec3 fd = vec3(0.0f);
+#endif
     vec3 h;
     if (l.delta || l.indexMatched || !refractionHalfVector(wo, wi, l.etaRel, h)) {
-        return vec3(0.0f);
+        return fd;
     }
     float co = dot(wo, h);
     float ci = dot(wi, h);
@@ -312,14 +330,18 @@ WF_INLINE vec3 bsdfEvalMirrored(BsdfParams m, BsdfLobes l, vec3 wo, vec3 wi) {
     // Fresnel takes the thin side's cosine as it is, not through Snell, which cancels
     // catastrophically near grazing and would break reciprocity.
     float denom = co + l.etaRel * ci;
-    return microTransmittanceThin(m, l, l.etaRel >= 1.0f ? co : -ci) *
-           (ggxD(h, l.alpha) * ggxG2OverCosines(wo, wi, l.alpha) * (-ci) * co / (denom * denom));
+    return fd + microTransmittanceThin(m, l, l.etaRel >= 1.0f ? co : -ci) *
+                    (ggxD(h, l.alpha) * ggxG2OverCosines(wo, wi, l.alpha) * (-ci) * co /
+                     (denom * denom));
 }
 
 // bsdfPdf in the mirrored frame, given the diffuse lobe's probability for this wo.
 WF_INLINE float bsdfPdfMirrored(BsdfParams m, BsdfLobes l, float pDiffuse, vec3 wo, vec3 wi) {
     if (wi.z > 0.0f) {
         float pdf = pDiffuse * cosineHemispherePdf(wi.z);
+#if WF_HAS_DIFFUSE_TRANSMISSION
+        pdf *= 1.0f - diffuseTransmitProbability(m);
+#endif
         if (!l.delta) {
             vec3 h = normalize(wo + wi);
             // Visible-normal pdf / (4 wo.h) = D / (2 (wo.z + L(wo))).
@@ -328,66 +350,21 @@ WF_INLINE float bsdfPdfMirrored(BsdfParams m, BsdfLobes l, float pDiffuse, vec3 
         }
         return pdf;
     }
+#if WF_HAS_DIFFUSE_TRANSMISSION
+    float pdfD = pDiffuse * diffuseTransmitProbability(m) * cosineHemispherePdf(-wi.z);
+#else
+    float pdfD = 0.0f;
+#endif
     vec3 h;
     if (l.delta || l.indexMatched || !refractionHalfVector(wo, wi, l.etaRel, h)) {
-        return 0.0f;
+        return pdfD;
     }
     float co = dot(wo, h);
     float ci = dot(wi, h);
     float denom = co + l.etaRel * ci; // d omega_h / d omega_i = eta^2 |wi.h| / denom^2
-    return (1.0f - pDiffuse) * microChoice(m, l, co).y * ggxVisibleNormalPdf(wo, h, l.alpha) *
-           l.etaRel * l.etaRel * (-ci) / (denom * denom);
-}
-
-WF_INLINE bool bsdfFinite(vec3 v) {
-    return !any(isnan(v)) && !any(isinf(v));
-}
-
-// Scenes whose every material is Lambertian (metallic, specular and transmission all 0, which
-// no texture can raise) compile with WF_BSDF_DIFFUSE_ONLY, and bsdfEval, bsdfPdf, bsdfSample
-// and bsdfHasNonDelta become these: what the general model reduces to for such materials,
-// without its layer (tests/unit/test_bsdf.cpp compares the two on random materials).
-WF_INLINE bool diffuseOnlySameSide(vec3 wo, vec3 wi) {
-    return wo.z != 0.0f && wi.z != 0.0f && (wo.z > 0.0f) == (wi.z > 0.0f);
-}
-
-WF_INLINE vec3 diffuseOnlyEval(BsdfParams m, vec3 wo, vec3 wi) {
-    return diffuseOnlySameSide(wo, wi) ? clamp(m.baseColor, vec3(0.0f), vec3(1.0f)) * WF_INV_PI
-                                       : vec3(0.0f);
-}
-
-WF_INLINE float diffuseOnlyPdf(BsdfParams m, vec3 wo, vec3 wi) {
-    bool scatters = averageComponent(clamp(m.baseColor, vec3(0.0f), vec3(1.0f))) > 0.0f;
-    return scatters && diffuseOnlySameSide(wo, wi) ? cosineHemispherePdf(abs(wi.z)) : 0.0f;
-}
-
-WF_INLINE bool diffuseOnlyHasNonDelta(BsdfParams m) {
-    return maxComponent(clamp(m.baseColor, vec3(0.0f), vec3(1.0f))) > 0.0f;
-}
-
-// The sample every sampler starts from and returns on failure: no direction, no weight.
-WF_INLINE void bsdfNoSample(WF_OUT(BsdfSample) s) {
-    s.wi = vec3(0.0f);
-    s.pdf = 0.0f;
-    s.weight = vec3(0.0f);
-    s.isDelta = false;
-    s.eta = 1.0f;
-}
-
-WF_INLINE bool diffuseOnlySample(BsdfParams m, vec3 wo, vec2 u, WF_OUT(BsdfSample) s) {
-    bsdfNoSample(s);
-    vec3 albedo = clamp(m.baseColor, vec3(0.0f), vec3(1.0f));
-    if (wo.z == 0.0f || !(averageComponent(albedo) > 0.0f)) {
-        return false;
-    }
-    vec3 wi = sampleCosineHemisphere(u);
-    s.pdf = cosineHemispherePdf(wi.z);
-    if (!(s.pdf > 0.0f)) {
-        return false;
-    }
-    s.weight = albedo * WF_INV_PI * (wi.z / s.pdf);
-    s.wi = vec3(wi.x, wi.y, wo.z < 0.0f ? -wi.z : wi.z);
-    return bsdfFinite(s.weight);
+    return pdfD + (1.0f - pDiffuse) * microChoice(m, l, co).y *
+                      ggxVisibleNormalPdf(wo, h, l.alpha) * l.etaRel * l.etaRel * (-ci) /
+                      (denom * denom);
 }
 
 // The specular kind's shade pass (WF_BSDF_DELTA_ONLY) shades only materials with Dirac lobes
@@ -492,6 +469,12 @@ WF_INLINE bool bsdfSample(BsdfParams m, vec3 wo, float uLobe, vec2 u, WF_OUT(Bsd
     vec3 wi;
     if (uLobe < pDiffuse) {
         wi = sampleCosineHemisphere(u);
+#if WF_HAS_DIFFUSE_TRANSMISSION
+        // The lobe's dimension, rescaled, picks reflection or transmission.
+        if (uLobe < pDiffuse * diffuseTransmitProbability(m)) {
+            wi.z = -wi.z;
+        }
+#endif
     } else {
         float uChoice = min((uLobe - pDiffuse) / (1.0f - pDiffuse), 0.99999994f);
         vec3 h = l.delta ? vec3(0.0f, 0.0f, 1.0f) : ggxSampleVisibleNormal(wo, l.alpha, u);
@@ -532,7 +515,13 @@ WF_INLINE bool bsdfSample(BsdfParams m, vec3 wo, float uLobe, vec2 u, WF_OUT(Bsd
         if (!(s.pdf > 0.0f)) {
             return false;
         }
-        s.weight = bsdfEvalMirrored(m, l, wo, wi) * (abs(wi.z) / s.pdf);
+        vec3 f = bsdfEvalMirrored(m, l, wo, wi);
+        s.weight = f * (abs(wi.z) / s.pdf);
+#if WF_HAS_DIFFUSE_TRANSMISSION
+        if (wi.z < 0.0f) {
+            s.eta = diffuseTransmissionEta(m, l, wo, wi, f);
+        }
+#endif
     }
     s.wi = vec3(wi.x, wi.y, side * wi.z);
     return s.pdf > 0.0f && bsdfFinite(s.weight) && bsdfFinite(vec3(s.pdf));
@@ -548,8 +537,8 @@ WF_INLINE bool bsdfHasNonDelta(BsdfParams m) {
 #endif
     m = bsdfSanitize(m);
     float albedo = maxComponent(m.baseColor);
-    if ((1.0f - m.metallic) * (1.0f - m.transmission) * albedo > 0.0f) {
-        return true; // diffuse
+    if ((1.0f - m.metallic) * (1.0f - m.transmission) * maxComponent(diffuseAlbedo(m)) > 0.0f) {
+        return true; // diffuse, reflected or transmitted
     }
 #if WF_HAS_ANISOTROPY
     if (m.roughness == 0.0f && m.anisotropy == 0.0f) {
@@ -566,7 +555,8 @@ WF_INLINE bool bsdfHasNonDelta(BsdfParams m) {
 // Whether the BSDF scatters only into Dirac lobes (a black, non-scattering BSDF is neither).
 WF_INLINE bool bsdfIsPureDelta(BsdfParams m) {
     m = bsdfSanitize(m);
-    bool scatters = m.metallic > 0.0f || m.specular > 0.0f || maxComponent(m.baseColor) > 0.0f;
+    bool scatters = m.metallic > 0.0f || m.specular > 0.0f || maxComponent(m.baseColor) > 0.0f ||
+                    maxComponent(diffuseTransmittance(m)) > 0.0f;
     return scatters && !bsdfHasNonDelta(m);
 }
 

@@ -186,9 +186,13 @@ WF_INLINE LayerLobes layerLobes(BsdfParams m, BsdfLayers layers, vec3 wo) {
     w.sheenAlpha = 1.0f;
 #endif
     // The base's share, by an albedo estimate that never starves a base that scatters at all.
-    bool baseScatters = m.metallic > 0.0f || m.specular > 0.0f || maxComponent(m.baseColor) > 0.0f;
-    float eBase = baseScatters ? (1.0f - eCoat - eSheen) * max(averageComponent(m.baseColor), 0.2f)
-                               : 0.0f;
+    // (diffuseAlbedo: the base colour, and with diffuse transmission what crosses too.)
+    bool baseScatters = m.metallic > 0.0f || m.specular > 0.0f ||
+                        maxComponent(m.baseColor) > 0.0f ||
+                        maxComponent(diffuseTransmittance(m)) > 0.0f;
+    float eBase = baseScatters
+                      ? (1.0f - eCoat - eSheen) * max(averageComponent(diffuseAlbedo(m)), 0.2f)
+                      : 0.0f;
     float total = eCoat + eSheen + eBase;
     w.pCoat = total > 0.0f ? eCoat / total : 0.0f;
     w.pSheen = total > 0.0f ? eSheen / total : 0.0f;

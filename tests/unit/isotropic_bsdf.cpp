@@ -1,13 +1,15 @@
-// bsdf.h without WF_HAS_ANISOTROPY (see isotropic_bsdf.h). It is included inside a namespace of
-// its own, so that its inline functions and structs, which differ from the anisotropic build's
-// of the same names, are other entities (one definition per program). What it includes and
-// does not depend on the switch (microfacet.h, iridescence.h) is included first, as usual.
+// bsdf.h without WF_HAS_ANISOTROPY and WF_HAS_DIFFUSE_TRANSMISSION (see isotropic_bsdf.h). It
+// is included inside a namespace of its own, so that its inline functions and structs, which
+// differ from the full build's of the same names, are other entities (one definition per
+// program). What it includes and does not depend on the switches (microfacet.h,
+// iridescence.h) is included first, as usual.
 #include "tests/unit/isotropic_bsdf.h"
 
 #include "shaders/bsdf/iridescence.h"
 #include "shaders/bsdf/microfacet.h"
 
 #define WF_HAS_ANISOTROPY 0
+#define WF_HAS_DIFFUSE_TRANSMISSION 0
 namespace wf::test::isotropic_build {
 using namespace ::wf::gpu_types;
 #include "shaders/bsdf/bsdf.h"

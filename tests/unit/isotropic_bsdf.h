@@ -1,6 +1,7 @@
-// The glTF BSDF as shaders compile it for scenes without KHR_materials_anisotropy
-// (WF_HAS_ANISOTROPY 0), for test_anisotropy.cpp: at strength 0 the anisotropic build must
-// give the same bits. Plain structs cross between the two builds (isotropic_bsdf.cpp).
+// The glTF BSDF as shaders compile it for scenes without KHR_materials_anisotropy and
+// _diffuse_transmission (WF_HAS_ANISOTROPY and WF_HAS_DIFFUSE_TRANSMISSION 0), for
+// test_anisotropy.cpp and test_diffuse_transmission.cpp: at strength or factor 0 the full
+// build must give the same bits. Plain structs cross between the two builds (isotropic_bsdf.cpp).
 #pragma once
 #include <glm/glm.hpp>
 
