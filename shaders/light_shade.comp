@@ -81,7 +81,7 @@ void shadeLightVertex(inout LightVertex v) {
     SurfaceHit surface = loadSurface(v.hit.x, v.hit.w, uintBitsToFloat(v.hit.y),
                                      uintBitsToFloat(v.hit.z), toLight, 0.0);
 #if WF_HAS_VOLUME
-    if (!surface.frontFace && surface.transmission > 0.0)
+    if (!surface.frontFace && surfaceTransmits(surface))
         v.beta *= exp(-surface.absorption * t); // as path_vertex.glsl: the same Beer-Lambert
 #endif
     BsdfParams bsdf = bsdfAt(surface);

@@ -7,7 +7,8 @@
 // metalness, G roughness; colour textures are sRGB-decoded in textures.glsl), and
 // WF_HAS_SPECULAR_TEXTURES the KHR_materials_specular maps. WF_HAS_CLEARCOAT, WF_HAS_SHEEN and
 // WF_HAS_VOLUME carry those extensions' factors, and WF_HAS_CLEARCOAT_TEXTURES,
-// _CLEARCOAT_NORMAL_MAPS, _SHEEN_TEXTURES and _THICKNESS_TEXTURES their textures.
+// _CLEARCOAT_NORMAL_MAPS, _SHEEN_TEXTURES and _THICKNESS_TEXTURES their textures;
+// WF_HAS_DIFFUSE_TRANSMISSION carries that extension's factors and textures.
 #include "surface/textures.glsl"
 
 struct SurfaceHit {
@@ -51,7 +52,21 @@ struct SurfaceHit {
     float anisotropy;             // KHR_materials_anisotropy strength x texture B
     vec3 anisotropyDirection;     // world, in the surface's tangent plane; zero: none
 #endif
+#if WF_HAS_DIFFUSE_TRANSMISSION
+    float diffuseTransmission;     // KHR_materials_diffuse_transmission factor x texture A
+    vec3 diffuseTransmissionColor; // colour factor x texture RGB (sRGB)
+#endif
 };
+
+// Whether light crosses the surface (KHR_materials_transmission, _diffuse_transmission): its
+// mesh has an inside, which absorbs (KHR_materials_volume), and lights on both sides reach it.
+bool surfaceTransmits(SurfaceHit s) {
+#if WF_HAS_DIFFUSE_TRANSMISSION
+    return s.transmission > 0.0 || s.diffuseTransmission > 0.0;
+#else
+    return s.transmission > 0.0;
+#endif
+}
 
 vec3 decodeUnit(uint packed) { return octDecode(unpackSnorm2x16(packed)); }
 
@@ -391,6 +406,21 @@ SurfaceHit loadSurface(uint instanceIndex, uint triangleIndex, float b1, float b
                                      material.iridescenceThicknessMaximum,
                                      surfaceTexture(material.iridescenceThicknessTexture,
                                                     triangleIndex, b1, b2, footprint).g);
+#endif
+#endif
+#if WF_HAS_DIFFUSE_TRANSMISSION
+    s.diffuseTransmission = material.diffuseTransmission;
+    s.diffuseTransmissionColor = material.diffuseTransmissionColor;
+#if WF_HAS_TEXTURES
+    // KHR_materials_diffuse_transmission: the factor in A, the colour in RGB (sRGB).
+    if (material.diffuseTransmission > 0.0 &&
+        material.diffuseTransmissionTexture != WF_NO_TEXTURE)
+        s.diffuseTransmission *= surfaceTexture(material.diffuseTransmissionTexture,
+                                                triangleIndex, b1, b2, footprint).a;
+    if (material.diffuseTransmission > 0.0 &&
+        material.diffuseTransmissionColorTexture != WF_NO_TEXTURE)
+        s.diffuseTransmissionColor *= surfaceTexture(material.diffuseTransmissionColorTexture,
+                                                     triangleIndex, b1, b2, footprint).rgb;
 #endif
 #endif
 #if WF_HAS_ANISOTROPY

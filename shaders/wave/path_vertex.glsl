@@ -162,6 +162,10 @@ BsdfParams bsdfAt(SurfaceHit surface) {
 #if WF_HAS_ANISOTROPY
     bsdf.anisotropy = surface.anisotropy; // along the shading frame's x axis (below)
 #endif
+#if WF_HAS_DIFFUSE_TRANSMISSION
+    bsdf.diffuseTransmission = surface.diffuseTransmission;
+    bsdf.diffuseTransmissionColor = surface.diffuseTransmissionColor;
+#endif
     return bsdf;
 }
 
@@ -216,7 +220,7 @@ void shadePathVertex(inout PathVertex v) {
     // KHR_materials_volume, Beer-Lambert: a ray that meets a transmissive surface from behind
     // has crossed that mesh's inside over t (world units). Exact for closed meshes that hold
     // no other surface; see README's Materials section for the rule's limits.
-    if (!surface.frontFace && surface.transmission > 0.0)
+    if (!surface.frontFace && surfaceTransmits(surface))
         v.beta *= exp(-surface.absorption * t);
 #endif
 #if WF_GUIDING
@@ -276,8 +280,9 @@ void shadePathVertex(inout PathVertex v) {
     placeCoatNormal(layers, surface, frame);
 #endif
 #if WF_LIGHT_TREE
-    // The light tree weighs lights by the side light can arrive from (both through glass).
-    float receiver = surface.transmission > 0.0 ? 0.0 : encodeReceiverNormal(n);
+    // The light tree weighs lights by the side light can arrive from (both through glass or a
+    // diffuse-transmitting sheet).
+    float receiver = surfaceTransmits(surface) ? 0.0 : encodeReceiverNormal(n);
 #else
     float receiver = 0.0;
 #endif

@@ -10,7 +10,8 @@ ShadeKind shadeKind(const gpu_types::Material& m) {
                          std::max({m.sheenColor.x, m.sheenColor.y, m.sheenColor.z}) > 0.0f;
     if (layered)
         return ShadeKind::General;
-    if (m.metallic <= 0.0f && m.specular <= 0.0f && m.transmission <= 0.0f)
+    if (m.metallic <= 0.0f && m.specular <= 0.0f && m.transmission <= 0.0f &&
+        m.diffuseTransmission <= 0.0f)
         return ShadeKind::Diffuse;
     // No diffuse lobe, whatever the textures: (1 - metallic)(1 - transmission) is 0.
     const bool metal = m.metallic >= 1.0f && m.metallicRoughnessTexture == WF_NO_TEXTURE;

@@ -49,7 +49,8 @@ ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& se
     // Texture factors multiply these, so zero factors stay zero whatever the textures hold.
     variant.diffuseOnly = std::all_of(
         scene.materials.begin(), scene.materials.end(), [](const Material& m) {
-            return m.metallic <= 0.0f && m.specular <= 0.0f && m.transmission <= 0.0f;
+            return m.metallic <= 0.0f && m.specular <= 0.0f && m.transmission <= 0.0f &&
+                   m.diffuseTransmission <= 0.0f;
         });
     // One shade pass per kind only where the scene holds two kinds or more: a scene of one kind
     // keeps its single shade pass and shaders. Set for the megakernel too, which ignores it, so
@@ -60,16 +61,19 @@ ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& se
                              : shadeKindsFor(shadeKindsPresent(scene.materials),
                                              settings.shadeSplit);
     // Material extensions compile in only where some material uses them (zero factors stay
-    // zero whatever their textures hold; absorption acts only inside transmissive meshes).
+    // zero whatever their textures hold; absorption acts only inside transmissive meshes,
+    // diffuse transmission's included).
     for (const Material& m : scene.materials) {
         const bool coat = m.clearcoat > 0.0f;
         const bool sheen = std::max({m.sheenColor.x, m.sheenColor.y, m.sheenColor.z}) > 0.0f;
-        const bool volume = m.transmission > 0.0f && m.thickness > 0.0f &&
+        const bool transmits = m.transmission > 0.0f || m.diffuseTransmission > 0.0f;
+        const bool volume = transmits && m.thickness > 0.0f &&
                             std::max({m.attenuation.x, m.attenuation.y, m.attenuation.z}) > 0.0f;
         variant.clearcoat |= coat;
         variant.sheen |= sheen;
         variant.iridescence |= m.iridescence > 0.0f;
         variant.anisotropy |= m.anisotropyStrength > 0.0f;
+        variant.diffuseTransmission |= m.diffuseTransmission > 0.0f;
         variant.volume |= volume;
         variant.specularTextures |=
             m.specularTexture != WF_NO_TEXTURE || m.specularColorTexture != WF_NO_TEXTURE;
@@ -176,6 +180,8 @@ ShaderDefines ShaderVariant::defines() const {
         defines.emplace_back("WF_HAS_ANISOTROPY", "1");
         defines.emplace_back("WF_HAS_TANGENTS", flag(surface.tangents));
     }
+    if (diffuseTransmission) // defined only then, as anisotropy
+        defines.emplace_back("WF_HAS_DIFFUSE_TRANSMISSION", "1");
     if (shadeKinds != 0) {
         defines.push_back({"WF_SHADE_BINS", std::to_string(shadeBins())});
         defines.push_back({"WF_LIGHT_HIT_BIN", std::to_string(lightHitBin(shadeKinds))});

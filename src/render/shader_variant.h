@@ -56,6 +56,8 @@ struct ShaderVariant {
     bool sheen = false;               // WF_HAS_SHEEN: some material has a sheen
     bool iridescence = false;         // WF_HAS_IRIDESCENCE: some material has a thin film
     bool anisotropy = false;          // WF_HAS_ANISOTROPY (defined only then): anisotropic GGX
+    // WF_HAS_DIFFUSE_TRANSMISSION (defined only then): a Lambert lobe through the surface
+    bool diffuseTransmission = false;
     bool volume = false;              // WF_HAS_VOLUME: some transmissive material absorbs
     bool specularTextures = false;    // WF_HAS_SPECULAR_TEXTURES: KHR_materials_specular maps
     // The layers' and volume's textures (issue 48), each only where a material with the layer

@@ -72,6 +72,7 @@ SceneSummary summarize(const Scene& scene) {
         summary.alphaBlendMaterials += (m.flags & WF_MATERIAL_ALPHA_BLEND) != 0;
         summary.transmissiveMaterials += m.transmission > 0.0f;
         summary.anisotropicMaterials += m.anisotropyStrength > 0.0f;
+        summary.diffuseTransmissionMaterials += m.diffuseTransmission > 0.0f;
     }
     return summary;
 }
@@ -124,7 +125,9 @@ std::string describe(const SceneSummary& summary) {
     text += "; materials with " + listCounts({{summary.alphaMaskMaterials, "alpha mask"},
                                               {summary.alphaBlendMaterials, "alpha blend"},
                                               {summary.transmissiveMaterials, "transmission"},
-                                              {summary.anisotropicMaterials, "anisotropic"}},
+                                              {summary.anisotropicMaterials, "anisotropic"},
+                                              {summary.diffuseTransmissionMaterials,
+                                               "diffuse transmission"}},
                                              "no alpha or transmission");
     text += ".";
     const size_t lights = summary.pointLights + summary.spotLights + summary.directionalLights +

@@ -34,6 +34,7 @@ struct SceneSummary {
     bool normalMaps = false;
     size_t alphaMaskMaterials = 0, alphaBlendMaterials = 0, transmissiveMaterials = 0;
     size_t anisotropicMaterials = 0; // KHR_materials_anisotropy (WF_HAS_ANISOTROPY)
+    size_t diffuseTransmissionMaterials = 0; // KHR_materials_diffuse_transmission
     double loadSeconds = 0.0; // reading and converting the file; set by whoever timed it
 };
 

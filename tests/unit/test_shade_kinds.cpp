@@ -35,6 +35,17 @@ TEST(ShadeKinds, AnisotropicSmoothSurfacesAreGeneral) {
     }
 }
 
+// KHR_materials_diffuse_transmission sends Lambert light through the surface, which the
+// diffuse kind's same-side Lambert BSDF cannot; the clear glass keeps no diffuse base to split.
+TEST(ShadeKinds, DiffuseTransmissionIsGeneral) {
+    Material m = lambert();
+    m.diffuseTransmission = 0.5f;
+    EXPECT_EQ(shadeKind(m), ShadeKind::General);
+    Material g = glass();
+    g.diffuseTransmission = 0.5f;
+    EXPECT_EQ(shadeKind(g), ShadeKind::Specular);
+}
+
 TEST(ShadeKinds, MaterialsGetTheKindWhoseBsdfIsExactForThem) {
     EXPECT_EQ(shadeKind(lambert()), ShadeKind::Diffuse);
     EXPECT_EQ(shadeKind(mirror()), ShadeKind::Specular);
