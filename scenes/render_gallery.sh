@@ -34,6 +34,11 @@ for method in mis guided; do
     mv "$tmp/narrow_gap-$method.png" "$out/narrow_gap_$method.png"
 done
 echo "wrote $(ls "$out" | wc -l) images to $out"
+# KHR_materials_diffuse_transmission beside the same paper without it (docs/gltf.md).
+mkdir -p docs/images/materials
+"$wavefront" render scenes/lamp_shades.gltf -o "$tmp/lamp_shades.exr" --width 300 --spp 256 \
+    --seed 1 --quiet
+mv "$tmp/lamp_shades.png" docs/images/materials/lamp_shades.png
 # The animated scene at three times (render --frames: frames 0, 12 and 24 at 24 fps).
 anim=docs/images/animation
 mkdir -p "$anim"
