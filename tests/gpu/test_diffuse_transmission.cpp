@@ -2,9 +2,10 @@
 // a point light behind it glows on the camera's side exactly as bsdf.h evaluated on the CPU
 // predicts (and lit from the front, reflects the rest), with the colour texture read in sRGB;
 // lights behind the sheet are reached by next-event estimation, the only strategy that finds a
-// point light; light tracing and BDPT agree with the path tracer through the sheet; a white
-// diffuse-transmitting sphere in the furnace vanishes when lossless and never outshines it;
-// scenes without the extension compile none of it.
+// point light, and the light tree picks lights on both sides of it; light tracing and BDPT
+// agree with the path tracer through the sheet; a white diffuse-transmitting sphere in the
+// furnace vanishes when lossless and never outshines it; scenes without the extension compile
+// none of it.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -45,6 +46,7 @@ struct Sheet {
     float lightY;     // the point light at (0, lightY, 0): below the sheet is behind it
     bool texture;     // diffuseTransmissionColorTexture = TEXEL_PNG
     bool perspective; // a pinhole camera (light tracing needs a lens), else orthographic
+    bool twoLights = false; // a second light on the other side, at (0.7, -lightY, -0.4)
 };
 
 // A quad at y = 0 facing +y (the camera's side), the camera above looking down, one point
@@ -87,6 +89,14 @@ std::string sheetGltf(const TempDir& dir, const Sheet& s) {
                    R"(,0],"rotation":[-0.70710678,0,0,0.70710678]})",
                light};
     g.scenes = R"([{"nodes":[0,1,2]}])";
+    if (s.twoLights) {
+        std::snprintf(light, sizeof light,
+                      R"({"extensions":{"KHR_lights_punctual":{"light":0}},)"
+                      R"("translation":[0.7,%g,-0.4]})",
+                      -s.lightY);
+        g.nodes.push_back(light);
+        g.scenes = R"([{"nodes":[0,1,2,3]}])";
+    }
     g.extra = R"(,"extensionsUsed":["KHR_materials_diffuse_transmission","KHR_lights_punctual"],)"
               R"("extensions":{"KHR_lights_punctual":{"lights":[{"type":"point","intensity":1}]}})";
     return g.write(dir);
@@ -189,6 +199,31 @@ TEST(DiffuseTransmission, LightTracingAndBdptAgreeThroughTheSheet) {
             EXPECT_NEAR(mean, path, 5.0 * error + 0.003 * path) << integratorName(integrator);
         }
     }
+    EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
+}
+
+// The light tree weighs lights by the side they light a receiver from; a diffuse-transmitting
+// surface receives from both, so the tree's choice (a light on each side of the sheet) gives
+// the image that choosing by power does.
+TEST(DiffuseTransmission, LightTreeReachesLightsBehindTheSheet) {
+    TempDir dir;
+    const Scene scene =
+        loadGltf(sheetGltf(dir, {"a light on each side", -LIGHT_DISTANCE, false, false, true}));
+    MeanAndError means[2];
+    for (int tree = 0; tree < 2; ++tree) {
+        RenderSettings settings = sheetSettings(Integrator::Path, 64, 9);
+        settings.lightSelection = tree ? LightSelection::Tree : LightSelection::Power;
+        const RenderResult r = renderScene(scene, settings);
+        EXPECT_EQ(r.stats.nonFiniteSamples, 0u);
+        means[tree] = imageMean(r.rgb);
+    }
+    std::printf("diffuse transmission, a light on each side: power %.5f +- %.5f, tree %.5f +- "
+                "%.5f\n",
+                means[0].mean, means[0].standardError, means[1].mean, means[1].standardError);
+    ASSERT_GT(means[0].mean, 0.01);
+    EXPECT_NEAR(means[1].mean, means[0].mean,
+                4.0 * std::hypot(means[0].standardError, means[1].standardError) +
+                    0.002 * means[0].mean);
     EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
 }
 
