@@ -9,7 +9,7 @@ needs `pip install mitsuba` (into a virtual environment of your own, not the pro
     /tmp/mi/bin/python bench/mitsuba_peer.py [--variant scalar_rgb|llvm_ad_rgb|cuda_ad_rgb]
         [--scene cornell|mirror-glass|mesh|tiny-light|lamps|instances|glass-caustic] [--wavefront build/wavefront] [--width 256]
         [--spp 64] [--max-depth 8] [--reference-spp 512] [--repeats 3] [--sampler NAME]
-        [--guiding on|off] [--integrator path|light|bdpt] [--json bench/results/peer.json]
+        [--guiding on|off] [--integrator path|light|bdpt|vcm] [--json bench/results/peer.json]
 
 `llvm_ad_rgb` (Dr.Jit's LLVM JIT, vectorised: what a CPU user would pick) needs an LLVM that
 Dr.Jit can drive: on Debian 12 `apt install libllvm19`; the script points DRJIT_LIBLLVM_PATH at
@@ -28,9 +28,10 @@ A third row times Wavefront with Mitsuba's own estimator (`--sampler independent
 path integrator does), so that paths/s compares the same work; its relMSE is measured against
 Wavefront's reference (the same expectation).
 
-`--integrator light|bdpt` renders Wavefront's timed row and its reference with light tracing or
-bidirectional path tracing (the matched-estimator row, measured against that reference, stays
-the path tracer); `light` is then also timed against Mitsuba's own light tracer (`ptracer`, its
+`--integrator light|bdpt|vcm` renders Wavefront's timed row and its reference with light tracing
+or bidirectional path tracing (the matched-estimator row, measured against that reference, stays
+the path tracer); vcm is consistent, not unbiased, so its reference is bdpt's (the path tracer's
+expectation), and its relMSE includes merging's bias; `light` is then also timed against Mitsuba's own light tracer (`ptracer`, its
 relMSE against a ptracer reference: a light tracer leaves Dirac surfaces seen directly black)
 as a fourth row.
 
@@ -241,7 +242,7 @@ def main():
                         "Mitsuba's is independent)")
     parser.add_argument("--guiding", default="off", choices=["off", "on"],
                         help="Wavefront's --guiding for its timed row (default off)")
-    parser.add_argument("--integrator", default="path", choices=["path", "light", "bdpt"],
+    parser.add_argument("--integrator", default="path", choices=["path", "light", "bdpt", "vcm"],
                         help="Wavefront's --integrator for its timed row (default path)")
     parser.add_argument("--repeats", type=int, default=3,
                         help="timed renders of each, alternating (median time, mean relMSE)")
@@ -274,10 +275,12 @@ def main():
                                           args.rr_depth + 1, ref_seed)
         # With the timed row's integrator: the same expectation as the path tracer's, and on
         # scenes of specular chains far less noise at the same samples.
+        # vcm's own reference would carry its bias: bdpt's is unbiased.
+        ref_integrator = "bdpt" if args.integrator == "vcm" else args.integrator
         wf_ref, wf_ref_s = render_wavefront(mi, args.wavefront, gltf, folder, w, h,
                                             args.reference_spp, depth, args.rr_depth,
                                             "reference", ref_seed, args.sampler,
-                                            flags=["--integrator", args.integrator])
+                                            flags=["--integrator", ref_integrator])
         # Timed renders alternate between the two, each with its own seed, so that a drift in
         # the machine's speed (other tenants) falls on both; times are medians, errors means.
         mi_runs, wf_runs, matched_runs, ptracer_runs = [], [], [], []

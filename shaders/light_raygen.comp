@@ -35,6 +35,13 @@ void main() {
     bool emits = false;
     if (path < pass.pathCount) {
         EmittedRay ray;
+#if WF_MOTION
+        // The camera subpath's time (camera_ray.glsl's dimension): both subpaths of a sample,
+        // and every connection between them, see the scene at one instant.
+        wfRayTime = sample1D(wavePathPixel(pass, path), wavePathSample(pass, path), WF_DIM_TIME,
+                             params.seed);
+        rayTime[path] = wfRayTime;
+#endif
         emits = emitLightRay(wavePathPixel(pass, path), wavePathSample(pass, path), ray);
         if (emits) {
             rayOrigin[path] = wfPack(vec4(ray.origin, 0.0));

@@ -210,6 +210,9 @@ void main() {
     v.continues = false;
     v.connects = false;
     if (inQueue) {
+#if WF_MOTION
+        wfRayTime = rayTime[path];
+#endif
         v.pixel = wavePathPixel(pass, path);
         v.sampleIndex = wavePathSample(pass, path);
         v.depth = pass.depth;
@@ -245,6 +248,7 @@ void main() {
         uint entry = (v.sampleIndex - pass.sampleBase) * pass.wavePixels + v.splatPixel;
         shadowOrigin[splatSlot] = wfPack(uvec4(floatBitsToUint(v.splatOrigin), entry));
         shadowDirection[splatSlot] = wfPack(vec4(v.splatSegment, 0.0));
-        shadowRadiance[splatSlot] = wfPack(vec4(v.splat, 0.0));
+        // w: the subpath's time, at which light_splat tests the segment (WF_MOTION).
+        shadowRadiance[splatSlot] = wfPack(vec4(v.splat, pathTime()));
     }
 }

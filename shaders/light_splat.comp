@@ -20,7 +20,11 @@ void main() {
     if (index >= counters.shadowArgs.count)
         return;
     uvec4 origin = shadowOriginAt(index);
-    vec3 value = shadowRadianceAt(index).rgb;
+    vec4 radianceAndTime = shadowRadianceAt(index);
+    vec3 value = radianceAndTime.rgb;
+#if WF_MOTION
+    wfRayTime = radianceAndTime.w; // the connection's path's time (light_shade, shade)
+#endif
     // Written as a test that NaN fails, so that no fast-math folding can let one through.
     bool storable = all(greaterThanEqual(value, vec3(0.0))) &&
                     all(lessThanEqual(value, vec3(WF_LIGHT_FILM_MAX)));

@@ -119,7 +119,8 @@ void main() {
         shadowOrigin[shadowSlot] = wfPack(uvec4(floatBitsToUint(v.shadowOrigin), path));
         shadowDirection[shadowSlot] =
             wfPack(vec4(v.shadowSegment, float(v.shadowSphere + 1u)));
-        shadowRadiance[shadowSlot] = wfPack(vec4(v.shadowRadiance, 0.0));
+        // w: the path's time, for bdpt's light_splat (shadow.comp reads it by path).
+        shadowRadiance[shadowSlot] = wfPack(vec4(v.shadowRadiance, pathTime()));
     }
 #endif
 #if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
@@ -134,7 +135,7 @@ void main() {
         if (connects) {
             shadowOrigin[slot] = wfPack(uvec4(floatBitsToUint(origin), path));
             shadowDirection[slot] = wfPack(vec4(segment, 0.0));
-            shadowRadiance[slot] = wfPack(vec4(value, 0.0));
+            shadowRadiance[slot] = wfPack(vec4(value, pathTime()));
         }
     }
 #if WF_VCM

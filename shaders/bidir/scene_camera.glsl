@@ -1,5 +1,6 @@
 // The render's camera (params) as camera_importance.h's CameraGeometry: what light subpaths
-// connect to and BDPT's camera subpaths start from. Needs bindings.glsl (params).
+// connect to and BDPT's camera subpaths start from; with WF_MOTION, a moving camera where it
+// is at the path's time, as camera_ray.glsl places it. Needs bindings.glsl (params).
 #ifndef WF_SCENE_CAMERA_GLSL
 #define WF_SCENE_CAMERA_GLSL
 #include "bidir/camera_importance.h"
@@ -19,6 +20,15 @@ CameraGeometry sceneCamera() {
     camera.focusDistance = 1.0;
 #endif
     camera.up = params.cameraUp;
+#if WF_MOTION
+    if (params.cameraMotionKeys != 0u) {
+        uint first = params.cameraMotionKeys - 1u;
+        camera.position = motionKeyAt(first, 3u, 0u).xyz;
+        camera.forward = normalize(motionKeyAt(first, 3u, 1u).xyz);
+        camera.right = normalize(cross(camera.forward, motionKeyAt(first, 3u, 2u).xyz));
+        camera.up = cross(camera.right, camera.forward);
+    }
+#endif
     camera.width = params.width;
     camera.height = params.height;
     camera.orthoHalfHeight = params.orthoHalfHeight;

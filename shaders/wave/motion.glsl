@@ -26,6 +26,9 @@ layout(std430, binding = WF_BINDING_RAY_TIME) buffer RayTimeBuffer {
 
 float wfRayTime = 0.0;
 
+// The time of the path being worked on, for records that carry it to a later pass.
+float pathTime() { return wfRayTime; }
+
 // The key segment holding `time` and the fraction along it.
 uint motionSegment(float time, out float along) {
     float x = clamp(time, 0.0, 1.0) * float(params.motionSegments);
@@ -40,6 +43,8 @@ vec4 motionKeyAt(uint first, uint stride, uint row) {
     uint key = first + motionSegment(wfRayTime, along) * stride + row;
     return mix(motionKeys[key], motionKeys[key + stride], along);
 }
+#else
+float pathTime() { return 0.0; } // nothing moves: every path is at the shutter's one instant
 #endif
 
 #if WF_HAS_INSTANCES

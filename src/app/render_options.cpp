@@ -39,7 +39,7 @@ std::vector<OptionSpec> samplingOptions() {
                                      "default), light (light tracing: light subpaths "
                                      "connect each vertex to the camera, camera rays add the "
                                      "emitters they see; unbiased, leaves black what only "
-                                     "Dirac surfaces seen directly show) or bdpt "
+                                     "Dirac surfaces seen directly show), bdpt "
                                      "(bidirectional path tracing: each pixel sample's camera "
                                      "and light subpaths, every connection between them "
                                      "weighed by MIS, the power heuristic; unbiased; keeps "
@@ -50,9 +50,10 @@ std::vector<OptionSpec> samplingOptions() {
                                      "shrinks as the samples grow, and its error estimate "
                                      "measures variance, not that bias; keeps max-depth - 1 "
                                      "light vertices per pixel). light, bdpt and vcm trace "
-                                     "whole samples of the image per wave and take neither "
-                                     "--target-error, guiding, motion blur, --traversal rt "
-                                     "nor an orthographic camera"},
+                                     "whole samples of the image per wave (each sample's two "
+                                     "subpaths at one time within --shutter) and take neither "
+                                     "--target-error, guiding, --traversal rt nor an "
+                                     "orthographic camera"},
         {"--bdpt-heuristic", "", "NAME", "bdpt's and vcm's MIS weights: power (the power "
                                          "heuristic, beta 2; default) or balance (beta 1)"},
         {"--vcm-radius", "", "F", "vcm's merging radius at the first sample, as a fraction of "
@@ -116,8 +117,8 @@ OptionSpec traversalOption() {
             "auto (default: rt where the device has ray-tracing pipelines and is a GPU, else "
             "bvh; on lavapipe bvh measured faster), bvh (the project's BVH in compute) or rt "
             "(the driver's acceleration structures through ray-tracing pipelines; refused "
-            "where the device has none, and with --shutter or --integrator light|bdpt; auto takes "
-            "bvh with them)"};
+            "where the device has none, and with --shutter or --integrator light|bdpt|vcm; auto "
+            "takes bvh with them)"};
 }
 
 RayTracingRequest traversalRequest(const ParsedArgs& parsed) {

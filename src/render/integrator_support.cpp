@@ -26,8 +26,6 @@ void requireIntegratorSupport(const RenderSettings& settings, const PreparedScen
     if (settings.pixelList)
         refuse("--target-error and adaptive sampling need per-pixel sample counts, which light "
                "splats do not keep; render a fixed --spp");
-    if (scene.motionSegments > 0)
-        refuse("motion blur (--shutter) is not traced by light subpaths yet");
     for (const Material& m : scene.materials)
         if (m.clearcoat > 0.0f && m.clearcoatNormalTexture != WF_NO_TEXTURE)
             refuse("a clear coat with its own normal map is not reciprocal, and light subpaths "
