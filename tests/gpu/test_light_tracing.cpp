@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <stb_image_write.h>
 
 #include "errors.h"
 #include "analytic_scenes.h"
@@ -131,6 +132,22 @@ TEST_P(Bidirectional, AgreesWithPathOnInstancedNormalMappedMeshes) {
     TempDir dir;
     expectAgreement(GetParam(), loadGltf(writeNormalMappedInstancedScene(dir)), 1024, 64, 16,
                     16, "instances");
+}
+
+TEST_P(Bidirectional, AgreesWithPathThroughTexturedAlphaCutOuts) {
+    // The instanced blobs textured by an RGBA image whose alpha (filtered across its texels)
+    // cuts out about half of each blob (alphaMode MASK): light subpaths, their splats' and
+    // connections' shadow rays, and merges must pass the cut-outs as camera rays do.
+    TempDir dir;
+    const std::vector<uint8_t> texels = {230, 60, 40, 255, 40, 200, 90, 0,
+                                         40, 90, 220, 0, 240, 220, 60, 255};
+    ASSERT_TRUE(stbi_write_png(dir.file("cutout.png").c_str(), 2, 2, 4, texels.data(), 8));
+    const std::string file = writeInstancedScene(
+        dir, R"({"pbrMetallicRoughness":{"baseColorTexture":{"index":0},"metallicFactor":0,
+        "roughnessFactor":0.5},"alphaMode":"MASK","doubleSided":true})", "cutout.png");
+    const Scene scene = loadGltf(file);
+    ASSERT_EQ(scene.materials[0].flags & WF_MATERIAL_ALPHA_MASK, WF_MATERIAL_ALPHA_MASK);
+    expectAgreement(GetParam(), scene, 1024, 64, 16, 16, "textured alpha cut-outs");
 }
 
 TEST_P(Bidirectional, AgreesWithPathOnAnisotropicMeshes) {
