@@ -3,9 +3,17 @@
 // test_anisotropy.cpp and test_diffuse_transmission.cpp: at strength or factor 0 the full
 // build must give the same bits. Plain structs cross between the two builds (isotropic_bsdf.cpp).
 #pragma once
+#include <cstring>
+
 #include <glm/glm.hpp>
 
 namespace wf::test {
+
+// Equal bit patterns (so 0 and -0 differ, and NaN equals itself): what "bit for bit" means.
+inline bool sameBits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+inline bool sameBits(glm::vec3 a, glm::vec3 b) {
+    return sameBits(a.x, b.x) && sameBits(a.y, b.y) && sameBits(a.z, b.z);
+}
 
 struct PlainMaterial {
     glm::vec3 baseColor;

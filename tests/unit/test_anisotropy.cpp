@@ -206,13 +206,7 @@ TEST(AnisotropicBsdf, ReciprocalUpToEtaSquared) {
     }
 }
 
-bool sameBits(float a, float b) {
-    return std::memcmp(&a, &b, sizeof a) == 0;
-}
-
-bool sameBits(vec3 a, vec3 b) {
-    return sameBits(a.x, b.x) && sameBits(a.y, b.y) && sameBits(a.z, b.z);
-}
+using wf::test::sameBits;
 
 // Strength 0 is the isotropic BSDF exactly: the same bits as bsdf.h built without the switch,
 // which is what scenes without anisotropy run, for random materials of every kind (roughness

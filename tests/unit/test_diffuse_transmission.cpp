@@ -213,13 +213,7 @@ TEST(DiffuseTransmissionBsdf, WhiteFurnaceAtMostOne) {
     EXPECT_GT(maxSeen, 0.9); // the furnace measured something
 }
 
-bool sameBits(float a, float b) {
-    return std::memcmp(&a, &b, sizeof a) == 0;
-}
-
-bool sameBits(vec3 a, vec3 b) {
-    return sameBits(a.x, b.x) && sameBits(a.y, b.y) && sameBits(a.z, b.z);
-}
+using wf::test::sameBits;
 
 // Factor 0 (whatever the colour) is the BSDF that scenes without the extension compile, bit for
 // bit, for random materials of every kind, directions on both sides and the same numbers.
