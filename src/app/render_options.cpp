@@ -52,8 +52,7 @@ std::vector<OptionSpec> samplingOptions() {
                                      "light vertices per pixel). light, bdpt and vcm trace "
                                      "whole samples of the image per wave (each sample's two "
                                      "subpaths at one time within --shutter) and take neither "
-                                     "--target-error, guiding, --traversal rt nor an "
-                                     "orthographic camera"},
+                                     "--target-error, guiding nor an orthographic camera"},
         {"--bdpt-heuristic", "", "NAME", "bdpt's and vcm's MIS weights: power (the power "
                                          "heuristic, beta 2; default) or balance (beta 1)"},
         {"--vcm-radius", "", "F", "vcm's merging radius at the first sample, as a fraction of "
@@ -116,19 +115,18 @@ OptionSpec traversalOption() {
     return {"--traversal", "", "MODE",
             "auto (default: rt where the device has ray-tracing pipelines and is a GPU, else "
             "bvh; on lavapipe bvh measured faster), bvh (the project's BVH in compute) or rt "
-            "(the driver's acceleration structures through ray-tracing pipelines; refused "
-            "where the device has none, and with --shutter or --integrator light|bdpt|vcm; auto "
-            "takes bvh with them)"};
+            "(the driver's acceleration structures through ray-tracing pipelines: every "
+            "extension ray, the light subpaths' too, while light_splat's shadow rays walk the "
+            "BVH; refused where the device has none, and with --shutter, where auto takes "
+            "bvh)"};
 }
 
 RayTracingRequest traversalRequest(const ParsedArgs& parsed) {
     const std::string mode = parsed.choiceValue("--traversal", "auto", {"auto", "bvh", "rt"});
-    // Motion blur and light subpaths run in the project's BVH only (motion.glsl,
-    // light_splat.comp), so auto takes it there.
-    const bool lightSubpaths = parsed.value("--integrator").value_or("path") != "path";
-    return mode == "rt" ? RayTracingRequest::Required
-           : mode == "bvh" || parsed.has("--shutter") || lightSubpaths ? RayTracingRequest::Off
-                                                                      : RayTracingRequest::Auto;
+    // Motion blur runs in the project's BVH only (motion.glsl), so auto takes it there.
+    return mode == "rt"                                    ? RayTracingRequest::Required
+           : mode == "bvh" || parsed.has("--shutter") ? RayTracingRequest::Off
+                                                          : RayTracingRequest::Auto;
 }
 
 Traversal traversalFor(const Context& context) {

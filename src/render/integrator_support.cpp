@@ -19,8 +19,6 @@ void requireIntegratorSupport(const RenderSettings& settings, const PreparedScen
     };
     if (settings.megakernel)
         refuse("no megakernel of it exists; bench it without --compare-megakernel");
-    if (settings.traversal == Traversal::RayTracing)
-        refuse("its passes trace by the project's BVH only; use --traversal bvh");
     if (settings.guiding)
         refuse("path guiding is not combined with light subpaths; use --guiding off");
     if (settings.pixelList)

@@ -161,10 +161,7 @@ bool Viewer::fitWindow(bool force) {
 void Viewer::rebuildTargets() {
     RenderSettings render = settings_.render;
     // The context enabled ray tracing only where --traversal (or auto's rule) picked it.
-    // Light subpaths trace by the project's BVH only (integrator_support.cpp).
-    render.traversal = context_.rayTracingEnabled() && render.integrator == Integrator::Path
-                           ? Traversal::RayTracing
-                           : Traversal::Bvh;
+    render.traversal = context_.rayTracingEnabled() ? Traversal::RayTracing : Traversal::Bvh;
     if (samplerIsFiniteSet(render.sampler)) // the set is what the viewer will accumulate
         render.sampleSetSize = settings_.effectiveSppLimit();
     ViewerGuide::resolve(render, scene_.prepared);

@@ -126,17 +126,20 @@ RenderSettings smallRender(uint32_t spp, uint32_t seed, Traversal traversal) {
 }
 
 // rt renders over four seeds against a BVH reference of another seed, per 8 x 8 region.
-void expectSameImage(const Scene& scene, const std::string& what) {
+void expectSameImage(const Scene& scene, const std::string& what,
+                     Integrator integrator = Integrator::Path) {
     Context* context = rayTracingContext();
     if (!context)
         GTEST_SKIP() << "the device has no ray-tracing pipelines";
     RenderSettings reference = smallRender(256, 1000, Traversal::Bvh);
     reference.aov = true; // the reference's per-pixel variance
+    reference.integrator = integrator;
     const RenderResult bvh = renderScene(scene, reference, *context);
     std::vector<std::vector<float>> images;
     for (uint32_t seed = 1; seed <= 4; ++seed) {
-        RenderResult rt = renderScene(scene, smallRender(64, seed, Traversal::RayTracing),
-                                      *context);
+        RenderSettings settings = smallRender(64, seed, Traversal::RayTracing);
+        settings.integrator = integrator;
+        RenderResult rt = renderScene(scene, settings, *context);
         EXPECT_EQ(rt.stats.nonFiniteSamples, 0u) << what;
         EXPECT_GT(rt.stats.extensionRays, 0u) << what;
         images.push_back(std::move(rt.rgb));
@@ -179,6 +182,18 @@ TEST(TraversalRt, TinySphereLightImageMatchesBvh) {
 
 TEST(TraversalRt, AlphaMaskAndStochasticAlphaImageMatchesBvh) {
     expectSameImage(alphaScene(), "alpha mask and stochastic alpha");
+}
+
+// Light subpaths extend through the same ray-traced intersect pass (their splats' and
+// connections' shadow rays walk the BVH in light_splat): light tracing, bdpt and vcm each
+// give the BVH's image, on the glass caustic and through alpha cut-outs.
+TEST(TraversalRt, LightSubpathsImageMatchesBvh) {
+    for (Integrator integrator : {Integrator::Light, Integrator::Bdpt, Integrator::Vcm}) {
+        const std::string name = integratorName(integrator);
+        expectSameImage(loadScene(sceneFile("glass_caustic.gltf")), "glass caustic, " + name,
+                        integrator);
+        expectSameImage(alphaScene(), "alpha, " + name, integrator);
+    }
 }
 
 // The same rays through both traversals: rays from random points of the scene's box (and the
