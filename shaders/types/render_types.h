@@ -81,7 +81,8 @@ namespace wf::gpu_types {
 #define WF_BINDING_AOV_FILM 35  // --aov: per pixel, sums of those (2 vec4)
 #define WF_BINDING_MOMENT_FILM 36   // --aov variance, --target-error: per pixel, radiance^2 sums
 #define WF_BINDING_ACTIVE_PIXELS 37 // --target-error: the pixels a wave's pixel range lists
-#define WF_BINDING_REPLICATE_FILM 26 // --error-replicates K: per pixel, replicates 1 .. K-1's sums
+#define WF_BINDING_REPLICATE_FILM 130 // --error-replicates K: per pixel, replicates 1 .. K-1's sums
+// (not 26: texel pages 1-3 take 26-28, texture_types.h)
 #define WF_BINDING_RAY_CONES 38       // WF_RAY_CONES: per path, the ray's cone (ray_cones.glsl)
 #define WF_BINDING_RAY_CONE_TEXELS 39 // the same, read as RG32UI texels
 #define WF_BINDING_TRIANGLE_PAGE1 49 // pages 1-7 of the triangles (49 .. 55)
@@ -106,9 +107,10 @@ namespace wf::gpu_types {
 #define WF_BINDING_LIGHT_VERTEX_DIRECTIONS 108
 #define WF_BINDING_LIGHT_VERTEX_THROUGHPUTS 109
 // --integrator vcm (bidir/vcm_grid.glsl): per light vertex its position and dVM; the hash
-// grid's lists (per cell its first vertex, per vertex the next).
-#define WF_BINDING_LIGHT_VERTEX_POSITIONS 110
-#define WF_BINDING_MERGE_LISTS 111
+// grid's lists (per cell its first vertex, per vertex the next). After the guide's (120-127):
+// 110-117 are the vertex colours' (texture_types.h).
+#define WF_BINDING_LIGHT_VERTEX_POSITIONS 128
+#define WF_BINDING_MERGE_LISTS 129
 // WF_GUIDING (shaders/guiding/guide_bindings.glsl): the path guide's SD-tree and records.
 #define WF_BINDING_GUIDE_PARAMS 120   // GuideParams
 #define WF_BINDING_GUIDE_SPATIAL 121  // GuideSpatialNode[]

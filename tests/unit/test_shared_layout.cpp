@@ -12,6 +12,8 @@
 #include <gtest/gtest.h>
 
 #include "shaders/types/render_types.h"
+#include "shaders/types/texture_types.h"
+#include "shaders/sampling/sampler_tables.h"
 #include "shaders/types/light_types.h"
 #include "shaders/types/scene_types.h"
 #include "shaders/types/texture_types.h"
@@ -217,3 +219,81 @@ TEST(SharedLayout, GlslOffsetsMatchCpp) {
 
 } // namespace
 } // namespace wf
+
+namespace {
+
+// Every binding of the shared descriptor set, with the pages a paged table takes after its
+// first: no two may share a number (vcm's first bindings once took the vertex colours').
+TEST(SharedLayout, BindingNumbersAreDistinct) {
+    struct Range {
+        const char* name;
+        int first;
+        int count;
+    };
+    const Range ranges[] = {
+        {"TRIANGLES", WF_BINDING_TRIANGLES, 1}, {"BVH_NODES", WF_BINDING_BVH_NODES, 1},
+        {"MATERIALS", WF_BINDING_MATERIALS, 1}, {"EMITTERS", WF_BINDING_EMITTERS, 1},
+        {"INSTANCES", WF_BINDING_INSTANCES, 1}, {"PARAMS", WF_BINDING_PARAMS, 1},
+        {"COUNTERS", WF_BINDING_COUNTERS, 1}, {"FILM", WF_BINDING_FILM, 1},
+        {"RAY_ORIGIN", WF_BINDING_RAY_ORIGIN, 1}, {"RAY_DIRECTION", WF_BINDING_RAY_DIRECTION, 1},
+        {"THROUGHPUT", WF_BINDING_THROUGHPUT, 1}, {"RADIANCE", WF_BINDING_RADIANCE, 1},
+        {"HITS", WF_BINDING_HITS, 1}, {"SHADOW_ORIGIN", WF_BINDING_SHADOW_ORIGIN, 1},
+        {"SHADOW_DIRECTION", WF_BINDING_SHADOW_DIRECTION, 1},
+        {"SHADOW_RADIANCE", WF_BINDING_SHADOW_RADIANCE, 1},
+        {"RAY_QUEUES", WF_BINDING_RAY_QUEUES, 1}, {"LIGHT_TREE", WF_BINDING_LIGHT_TREE, 1},
+        {"LIGHT_TREE_TRAILS", WF_BINDING_LIGHT_TREE_TRAILS, 1},
+        {"AOV_PATHS", WF_BINDING_AOV_PATHS, 1}, {"AOV_FILM", WF_BINDING_AOV_FILM, 1},
+        {"MOMENT_FILM", WF_BINDING_MOMENT_FILM, 1},
+        {"ACTIVE_PIXELS", WF_BINDING_ACTIVE_PIXELS, 1},
+        {"REPLICATE_FILM", WF_BINDING_REPLICATE_FILM, 1}, {"RAY_CONES", WF_BINDING_RAY_CONES, 1},
+        {"RAY_CONE_TEXELS", WF_BINDING_RAY_CONE_TEXELS, 1},
+        {"TRIANGLE_PAGE1", WF_BINDING_TRIANGLE_PAGE1, 7},
+        {"BVH_PAGE1", WF_BINDING_BVH_PAGE1, 7}, {"INSTANCE_PAGE1", WF_BINDING_INSTANCE_PAGE1, 7},
+        {"KIND_QUEUES", WF_BINDING_KIND_QUEUES, 1},
+        {"KIND_QUEUE_TEXELS", WF_BINDING_KIND_QUEUE_TEXELS, 1},
+        {"TOP_LEVEL", WF_BINDING_TOP_LEVEL, 1}, {"MOTION_KEYS", WF_BINDING_MOTION_KEYS, 1},
+        {"RAY_TIME", WF_BINDING_RAY_TIME, 1}, {"LIGHT_FILM", WF_BINDING_LIGHT_FILM, 1},
+        {"PATH_MIS", WF_BINDING_PATH_MIS, 1}, {"LIGHT_DEPTHS", WF_BINDING_LIGHT_DEPTHS, 1},
+        {"LIGHT_VERTEX_HITS", WF_BINDING_LIGHT_VERTEX_HITS, 1},
+        {"LIGHT_VERTEX_DIRECTIONS", WF_BINDING_LIGHT_VERTEX_DIRECTIONS, 1},
+        {"LIGHT_VERTEX_THROUGHPUTS", WF_BINDING_LIGHT_VERTEX_THROUGHPUTS, 1},
+        {"LIGHT_VERTEX_POSITIONS", WF_BINDING_LIGHT_VERTEX_POSITIONS, 1},
+        {"MERGE_LISTS", WF_BINDING_MERGE_LISTS, 1}, {"GUIDE_PARAMS", WF_BINDING_GUIDE_PARAMS, 1},
+        {"GUIDE_SPATIAL", WF_BINDING_GUIDE_SPATIAL, 1},
+        {"GUIDE_SAMPLING", WF_BINDING_GUIDE_SAMPLING, 1},
+        {"GUIDE_BUILDING", WF_BINDING_GUIDE_BUILDING, 1},
+        {"GUIDE_SPLATS", WF_BINDING_GUIDE_SPLATS, 1},
+        {"GUIDE_LEAF_SAMPLES", WF_BINDING_GUIDE_LEAF_SAMPLES, 1},
+        {"GUIDE_RECORDS", WF_BINDING_GUIDE_RECORDS, 1},
+        {"GUIDE_COUNTS", WF_BINDING_GUIDE_COUNTS, 1}, {"LIGHTS", WF_BINDING_LIGHTS, 1},
+        {"ENVIRONMENT", WF_BINDING_ENVIRONMENT, 1},
+        {"ENVIRONMENT_ALIAS", WF_BINDING_ENVIRONMENT_ALIAS, 1},
+        {"RAY_ORIGIN_TEXELS", WF_BINDING_RAY_ORIGIN_TEXELS, 1},
+        {"RAY_DIRECTION_TEXELS", WF_BINDING_RAY_DIRECTION_TEXELS, 1},
+        {"THROUGHPUT_TEXELS", WF_BINDING_THROUGHPUT_TEXELS, 1},
+        {"RADIANCE_TEXELS", WF_BINDING_RADIANCE_TEXELS, 1},
+        {"HITS_TEXELS", WF_BINDING_HITS_TEXELS, 1},
+        {"SHADOW_ORIGIN_TEXELS", WF_BINDING_SHADOW_ORIGIN_TEXELS, 1},
+        {"SHADOW_DIRECTION_TEXELS", WF_BINDING_SHADOW_DIRECTION_TEXELS, 1},
+        {"SHADOW_RADIANCE_TEXELS", WF_BINDING_SHADOW_RADIANCE_TEXELS, 1},
+        {"RAY_QUEUE_TEXELS", WF_BINDING_RAY_QUEUE_TEXELS, 1},
+        {"TEXTURE_REFS", WF_BINDING_TEXTURE_REFS, 1}, {"NORMALS", WF_BINDING_NORMALS, 1},
+        {"TANGENTS", WF_BINDING_TANGENTS, 1}, {"TEXCOORDS0", WF_BINDING_TEXCOORDS0, 1},
+        {"TEXCOORDS1", WF_BINDING_TEXCOORDS1, 1}, {"TEXELS0", WF_BINDING_TEXELS0, 4},
+        {"NORMAL_PAGE1", WF_BINDING_NORMAL_PAGE1, 7},
+        {"TANGENT_PAGE1", WF_BINDING_TANGENT_PAGE1, 7},
+        {"TEXCOORD0_PAGE1", WF_BINDING_TEXCOORD0_PAGE1, 7},
+        {"TEXCOORD1_PAGE1", WF_BINDING_TEXCOORD1_PAGE1, 7},
+        {"VERTEX_COLORS", WF_BINDING_VERTEX_COLORS, 1},
+        {"VERTEX_COLOR_PAGE1", WF_BINDING_VERTEX_COLOR_PAGE1, 7},
+        {"SAMPLER_TABLES", WF_BINDING_SAMPLER_TABLES, 1},
+    };
+    std::map<int, std::string> owner;
+    for (const Range& r : ranges)
+        for (int b = r.first; b < r.first + r.count; ++b) {
+            const auto [it, fresh] = owner.emplace(b, r.name);
+            EXPECT_TRUE(fresh) << "binding " << b << ": " << r.name << " and " << it->second;
+        }
+}
+
+} // namespace
