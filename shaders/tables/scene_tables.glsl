@@ -134,11 +134,14 @@ Material materialAt(uint index) {
 #if WF_HAS_ANISOTROPY
     t13 = wfTexel(materialTexels, base + 13u);
 #endif
-    // Diffuse transmission (texels 14-15): colour and factor, then the two textures.
+    // Diffuse transmission (texels 14-15): colour and factor, then the two textures; then
+    // dispersion (texel 15's z).
     uvec4 t14 = uvec4(floatBitsToUint(1.0), floatBitsToUint(1.0), floatBitsToUint(1.0), 0u);
     uvec4 t15 = uvec4(WF_NO_TEXTURE, WF_NO_TEXTURE, 0u, 0u);
 #if WF_HAS_DIFFUSE_TRANSMISSION
     t14 = wfTexel(materialTexels, base + 14u);
+#endif
+#if WF_HAS_DIFFUSE_TRANSMISSION || WF_HAS_DISPERSION
     t15 = wfTexel(materialTexels, base + 15u);
 #endif
     return Material(uintBitsToFloat(t0), uintBitsToFloat(t1.xyz), t1.w, uintBitsToFloat(t2.x),
@@ -151,7 +154,7 @@ Material materialAt(uint index) {
                     uintBitsToFloat(t9.w), t10.x, t10.y, t10.z, t10.w,
                     t11.x, t11.y, t11.z, uintBitsToFloat(t11.w), t12.x, t12.y, t12.z, t12.w,
                     uintBitsToFloat(t13.x), t13.y, uintBitsToFloat(t13.zw),
-                    uintBitsToFloat(t14.xyz), uintBitsToFloat(t14.w), t15.x, t15.y, t15.z, t15.w);
+                    uintBitsToFloat(t14.xyz), uintBitsToFloat(t14.w), t15.x, t15.y, uintBitsToFloat(t15.z), t15.w);
 }
 
 #if WF_HAS_INSTANCES

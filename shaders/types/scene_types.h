@@ -147,7 +147,9 @@ struct Material {
     float diffuseTransmission;            // diffuseTransmissionFactor; 0: none
     uint diffuseTransmissionTexture;      // its A channel multiplies diffuseTransmission
     uint diffuseTransmissionColorTexture; // its RGB (sRGB) multiplies diffuseTransmissionColor
-    uint pad4;
+    // KHR_materials_dispersion (texel 15's z; read by shaders only where WF_HAS_DISPERSION):
+    // 20 / Abbe number; 0: no dispersion (the ior is n_d at every wavelength).
+    float dispersion;
     uint pad5;
 };
 
@@ -186,6 +188,9 @@ struct Material {
 #endif
 #ifndef WF_HAS_DIFFUSE_TRANSMISSION
 #define WF_HAS_DIFFUSE_TRANSMISSION 0
+#endif
+#ifndef WF_HAS_DISPERSION
+#define WF_HAS_DISPERSION 0
 #endif
 #endif
 
@@ -235,6 +240,13 @@ static_assert(offsetof(wf::gpu_types::BvhPair, child0) == 12);
 static_assert(offsetof(wf::gpu_types::BvhPair, child1) == 44);
 static_assert(sizeof(wf::gpu_types::Material) == 16 * WF_MATERIAL_TEXELS);
 static_assert(sizeof(wf::gpu_types::Triangle) == 48);
+namespace wf::gpu_types {
+// KHR_materials_dispersion acts where light refracts: on transmissive materials only
+// (WF_HAS_DISPERSION, the integrators' refusal, --verbose's count).
+inline bool materialDisperses(const Material& m) {
+    return m.dispersion > 0.0f && m.transmission > 0.0f;
+}
+} // namespace wf::gpu_types
 static_assert(offsetof(wf::gpu_types::Triangle, p1) == 16);
 static_assert(offsetof(wf::gpu_types::Triangle, emitter) == 28);
 static_assert(offsetof(wf::gpu_types::Triangle, p2) == 32);
@@ -269,6 +281,7 @@ static_assert(offsetof(wf::gpu_types::Material, anisotropyRotation) == 216);
 static_assert(offsetof(wf::gpu_types::Material, diffuseTransmissionColor) == 224);
 static_assert(offsetof(wf::gpu_types::Material, diffuseTransmission) == 236);
 static_assert(offsetof(wf::gpu_types::Material, diffuseTransmissionTexture) == 240);
+static_assert(offsetof(wf::gpu_types::Material, dispersion) == 248);
 static_assert(offsetof(wf::gpu_types::Material, pad5) == 252);
 static_assert(sizeof(wf::gpu_types::Emitter) == 16);
 static_assert(sizeof(wf::gpu_types::Instance) == 16 * WF_INSTANCE_TEXELS);

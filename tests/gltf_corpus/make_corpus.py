@@ -577,6 +577,14 @@ m = g.material(extensions={"KHR_materials_diffuse_transmission": {
     "diffuseTransmissionColorTexture": {"index": tex}}})
 g.doc["extensionsUsed"] = ["KHR_materials_diffuse_transmission", "KHR_texture_transform"]
 case("valid/material_diffuse_transmission.gltf", "loads 2 images=1", quad(g, m))
+# KHR_materials_dispersion: 20 / Abbe number on glass (transmission, ior).
+g = Gltf()
+m = g.material(extensions={"KHR_materials_dispersion": {"dispersion": 0.5},
+                           "KHR_materials_transmission": {"transmissionFactor": 1},
+                           "KHR_materials_ior": {"ior": 1.6}})
+g.doc["extensionsUsed"] = ["KHR_materials_dispersion", "KHR_materials_transmission",
+                           "KHR_materials_ior"]
+case("valid/material_dispersion.gltf", "loads 2", quad(g, m, uv=False))
 g = tri()
 g.doc["nodes"][0]["children"] = [1]
 g.doc["nodes"].append({"mesh": 0, "translation": [0, 0, 1]})
@@ -878,6 +886,10 @@ for name, key, dt in [
     g = Gltf()
     m = g.material(extensions={"KHR_materials_diffuse_transmission": dt})
     broken(name, key, quad(g, m, uv=False))
+for name, value in [("dispersion_negative.gltf", -0.5), ("dispersion_not_a_number.gltf", "x")]:
+    g = Gltf()
+    m = g.material(extensions={"KHR_materials_dispersion": {"dispersion": value}})
+    broken(name, "dispersion", quad(g, m, uv=False))
 
 
 # --- Time: animations, skins and morph targets (issue 35). ---

@@ -301,6 +301,20 @@ TEST(GltfFeatures, MaterialDiffuseTransmission) {
     EXPECT_EQ(plain.diffuseTransmissionColorTexture, WF_NO_TEXTURE);
 }
 
+TEST(GltfFeatures, MaterialDispersion) {
+    EXPECT_TRUE(gltf::isSupportedExtension("KHR_materials_dispersion"));
+    testing::internal::CaptureStderr();
+    const Scene scene = load("material_dispersion.gltf");
+    EXPECT_EQ(testing::internal::GetCapturedStderr(), ""); // no "ignoring glTF extension"
+    const Material& m = scene.materials[0];
+    EXPECT_FLOAT_EQ(m.dispersion, 0.5f);
+    EXPECT_FLOAT_EQ(m.ior, 1.6f);
+    EXPECT_TRUE(gpu_types::materialDisperses(m));
+    const Material plain = load("material_extensions.gltf").materials[0];
+    EXPECT_EQ(plain.dispersion, 0.0f);
+    EXPECT_FALSE(gpu_types::materialDisperses(plain));
+}
+
 TEST(GltfFeatures, UnknownExtensionsWarnOnceEach) {
     ::testing::internal::CaptureStderr();
     load("unknown_extensions_warn.gltf");

@@ -171,6 +171,7 @@ TEST(SharedLayout, GlslOffsetsMatchCpp) {
                  offsetof(Material, diffuseTransmissionTexture));
     expectOffset("mat.diffuseTransmissionColorTexture", materialBase,
                  offsetof(Material, diffuseTransmissionColorTexture));
+    expectOffset("mat.dispersion", materialBase, offsetof(Material, dispersion));
     expectOffset("mat.pad5", materialBase, offsetof(Material, pad5));
     expectOffset("em.alias", materialBase + sizeof(Material), offsetof(Emitter, alias));
     const size_t pairBase = materialBase + sizeof(Material) + sizeof(Emitter);

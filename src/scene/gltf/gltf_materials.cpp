@@ -20,7 +20,7 @@ const std::set<std::string> SUPPORTED_EXTENSIONS = {
     "KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_materials_transmission",
     "KHR_materials_specular", "KHR_materials_clearcoat", "KHR_materials_sheen",
     "KHR_materials_volume", "KHR_materials_iridescence", "KHR_texture_transform", "KHR_lights_punctual",
-    "KHR_materials_anisotropy", "KHR_materials_diffuse_transmission",
+    "KHR_materials_anisotropy", "KHR_materials_diffuse_transmission", "KHR_materials_dispersion",
     "KHR_mesh_quantization", "KHR_draco_mesh_compression", "EXT_meshopt_compression",
     "KHR_meshopt_compression", "KHR_materials_unlit", "EXT_texture_webp",
     "EXT_mesh_gpu_instancing", "KHR_materials_pbrSpecularGlossiness"};
@@ -343,6 +343,16 @@ Material MaterialConverter::convert(const tinygltf::Material& m, const std::stri
     }
     convertAnisotropy(m, name, out, needs);
     convertDiffuseTransmission(m, name, out, needs);
+    // KHR_materials_dispersion: 20 / Abbe number, any value >= 0 (bsdf/dispersion.h); it acts
+    // where the material refracts (gpu_types::materialDisperses).
+    const tinygltf::Value& dispersion = extensionIn(m.extensions, "KHR_materials_dispersion");
+    if (dispersion.IsObject()) {
+        const double value = jsonNumber(dispersion, "dispersion", 0.0);
+        if (!(value >= 0.0 && value <= 1e6)) // NaN fails too
+            fail(file_, name + ": KHR_materials_dispersion dispersion must be a number in "
+                               "[0, 1e6] (20 / Abbe number)");
+        out.dispersion = float(value);
+    }
     if (extensionIn(m.extensions, "KHR_materials_unlit").IsObject())
         makeUnlit(out);
     return out;
@@ -371,6 +381,7 @@ void MaterialConverter::makeUnlit(Material& out) const {
     out.anisotropyTexture = WF_NO_TEXTURE;
     out.diffuseTransmission = 0.0f;
     out.diffuseTransmissionTexture = out.diffuseTransmissionColorTexture = WF_NO_TEXTURE;
+    out.dispersion = 0.0f;
 }
 
 MaterialTables MaterialConverter::run() {
