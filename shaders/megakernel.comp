@@ -52,6 +52,9 @@ void main() {
         v.previousNormal = 0.0;
         v.beta = vec3(1.0);
         v.etaScale = 1.0;
+#if WF_HAS_DISPERSION
+        v.wavelength = 0.0; // RGB until its first dispersive vertex
+#endif
 #if WF_RAY_CONES
         v.cone = cameraCone();
 #endif

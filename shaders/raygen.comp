@@ -36,6 +36,9 @@ void main() {
 #if WF_MOTION
     rayTime[path] = wfRayTime; // drawn by cameraRay
 #endif
+#if WF_HAS_DISPERSION
+    pathWavelength[path] = 0.0; // RGB until its first dispersive vertex
+#endif
 #if WF_GUIDING
     guideStartPath(path);
 #endif

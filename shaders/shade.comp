@@ -71,6 +71,9 @@ void main() {
         vec4 pathThroughput = throughputAt(path);
         v.beta = pathThroughput.rgb;
         v.etaScale = pathThroughput.w;
+#if WF_HAS_DISPERSION
+        v.wavelength = pathWavelength[path];
+#endif
 #if WF_RAY_CONES
         v.cone = rayConeAt(path);
 #endif
@@ -93,6 +96,9 @@ void main() {
             rayOrigin[path] = wfPack(vec4(v.origin, v.previousPdf));
             rayDirection[path] = wfPack(vec4(v.direction, v.previousNormal));
             throughput[path] = wfPack(vec4(v.beta, v.etaScale));
+#if WF_HAS_DISPERSION
+            pathWavelength[path] = v.wavelength;
+#endif
 #if WF_RAY_CONES
             rayCone[path] = v.cone;
 #endif

@@ -20,6 +20,9 @@
 //     5               Russian roulette
 //     6               BSDF lobe choice
 //     7               light extra (environment texel choice)
+//     8               with dispersion only (WF_HAS_DISPERSION): the wavelength a path picks
+//                     at its first dispersive vertex (bsdf/dispersion.h); 9 unused, so that
+//                     bounces still start on a pair and other scenes keep their numbering
 #ifndef WF_RNG_H
 #define WF_RNG_H
 
@@ -69,13 +72,21 @@ namespace wf::gpu_types {
 #else
 #define WF_DIM_BOUNCE_BASE WF_DIM_TIME
 #endif
+#ifndef WF_HAS_DISPERSION
+#define WF_HAS_DISPERSION 0
+#endif
+#if WF_HAS_DISPERSION
+#define WF_DIMS_PER_BOUNCE 10u
+#else
 #define WF_DIMS_PER_BOUNCE 8u
+#endif
 #define WF_DIM_LIGHT_CHOICE 0u
 #define WF_DIM_LIGHT_POINT 1u
 #define WF_DIM_BSDF 3u
 #define WF_DIM_ROULETTE 5u
 #define WF_DIM_BSDF_LOBE 6u
 #define WF_DIM_LIGHT_EXTRA 7u
+#define WF_DIM_WAVELENGTH 8u
 
 // `independent`: a fresh hash of (pixel, sample, dimension, seed) per call.
 WF_INLINE vec2 independentSample2D(uint pixel, uint sampleIndex, uint dimension, uint seed) {

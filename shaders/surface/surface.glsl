@@ -8,7 +8,8 @@
 // WF_HAS_SPECULAR_TEXTURES the KHR_materials_specular maps. WF_HAS_CLEARCOAT, WF_HAS_SHEEN and
 // WF_HAS_VOLUME carry those extensions' factors, and WF_HAS_CLEARCOAT_TEXTURES,
 // _CLEARCOAT_NORMAL_MAPS, _SHEEN_TEXTURES and _THICKNESS_TEXTURES their textures;
-// WF_HAS_DIFFUSE_TRANSMISSION carries that extension's factors and textures.
+// WF_HAS_DIFFUSE_TRANSMISSION carries that extension's factors and textures, WF_HAS_DISPERSION
+// KHR_materials_dispersion's 20 / Abbe number.
 #include "surface/textures.glsl"
 
 struct SurfaceHit {
@@ -55,6 +56,9 @@ struct SurfaceHit {
 #if WF_HAS_DIFFUSE_TRANSMISSION
     float diffuseTransmission;     // KHR_materials_diffuse_transmission factor x texture A
     vec3 diffuseTransmissionColor; // colour factor x texture RGB (sRGB)
+#endif
+#if WF_HAS_DISPERSION
+    float dispersion; // KHR_materials_dispersion: 20 / Abbe number; 0: none
 #endif
 };
 
@@ -422,6 +426,9 @@ SurfaceHit loadSurface(uint instanceIndex, uint triangleIndex, float b1, float b
         s.diffuseTransmissionColor *= surfaceTexture(material.diffuseTransmissionColorTexture,
                                                      triangleIndex, b1, b2, footprint).rgb;
 #endif
+#endif
+#if WF_HAS_DISPERSION
+    s.dispersion = material.dispersion;
 #endif
 #if WF_HAS_ANISOTROPY
     anisotropyAt(instance, triangleIndex, material, b1, b2, ns, footprint, s.anisotropy,

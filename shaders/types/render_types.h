@@ -111,6 +111,8 @@ namespace wf::gpu_types {
 // 110-117 are the vertex colours' (texture_types.h).
 #define WF_BINDING_LIGHT_VERTEX_POSITIONS 128
 #define WF_BINDING_MERGE_LISTS 129
+// WF_HAS_DISPERSION: per path, the wavelength it carries (nm; 0 while it is still RGB).
+#define WF_BINDING_PATH_WAVELENGTH 118 // after the vertex colours' pages (110 .. 117)
 // WF_GUIDING (shaders/guiding/guide_bindings.glsl): the path guide's SD-tree and records.
 #define WF_BINDING_GUIDE_PARAMS 120   // GuideParams
 #define WF_BINDING_GUIDE_SPATIAL 121  // GuideSpatialNode[]

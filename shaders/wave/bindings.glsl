@@ -68,6 +68,11 @@ layout(std430, binding = WF_BINDING_ACTIVE_PIXELS) readonly buffer ActivePixelBu
     uint activePixels[]; // image pixel indices, in the order waves cover them
 };
 #endif
+#if WF_HAS_DISPERSION
+layout(std430, binding = WF_BINDING_PATH_WAVELENGTH) buffer PathWavelengthBuffer {
+    float pathWavelength[]; // nm; 0 while the path is RGB (bsdf/dispersion.h)
+};
+#endif
 #if WF_RAY_CONES
 layout(std430, binding = WF_BINDING_RAY_CONES) buffer RayConeBuffer {
     vec2 rayCone[]; // x: the cone's width at the ray's origin, y: its spread angle (radians)

@@ -20,6 +20,9 @@
 #else
 #define WF_BSDF_LAYERS 0
 #endif
+#if WF_HAS_DISPERSION
+#include "bsdf/dispersion.h"
+#endif
 #if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
 // --integrator bdpt: every emission, NEE and connection weighed among all strategies.
 #include "bidir/bdpt_state.glsl"
@@ -41,6 +44,9 @@ struct PathVertex {
     float previousNormal; // encodeReceiverNormal at the vertex it left (light tree MIS; 0: none)
     vec3 beta;         // throughput
     float etaScale;    // product of eta^2 over refractions, so that RR ignores radiance scaling
+#if WF_HAS_DISPERSION
+    float wavelength;  // nm, from the path's first dispersive vertex on; 0 while it is RGB
+#endif
 #if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
     vec4 mis;          // pathMis: the camera subpath's MIS quantities (bdpt_state.glsl)
 #endif
@@ -266,6 +272,18 @@ void shadePathVertex(inout PathVertex v) {
 #endif
 
     BsdfParams bsdf = bsdfAt(surface);
+#if WF_HAS_DISPERSION
+    // KHR_materials_dispersion (bsdf/dispersion.h): the path picks its wavelength at its first
+    // dispersive vertex, before next-event estimation and the BSDF sample, so that both (and
+    // every dispersive vertex after) bend it by n(lambda); the weight averages to (1, 1, 1).
+    if (surface.dispersion > 0.0 && surface.transmission > 0.0) {
+        if (v.wavelength == 0.0) {
+            v.wavelength = sampleWavelength(vertexSample1D(v, WF_DIM_WAVELENGTH));
+            v.beta *= dispersionWeight(v.wavelength);
+        }
+        bsdf.ior = dispersionIor(bsdf.ior, surface.dispersion, v.wavelength);
+    }
+#endif
 #if WF_BSDF_LAYERS
     BsdfLayers layers = layersAt(surface);
 #endif

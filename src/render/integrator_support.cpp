@@ -28,6 +28,10 @@ void requireIntegratorSupport(const RenderSettings& settings, const PreparedScen
         if (m.clearcoat > 0.0f && m.clearcoatNormalTexture != WF_NO_TEXTURE)
             refuse("a clear coat with its own normal map is not reciprocal, and light subpaths "
                    "do not sample its adjoint yet");
+    for (const Material& m : scene.materials)
+        if (gpu_types::materialDisperses(m))
+            refuse("KHR_materials_dispersion is traced by the path tracer only (light subpaths "
+                   "carry no wavelength); use --integrator path");
     gpu_types::CameraGeometry camera{};
     camera.tanHalfFovY = std::tan(0.5f * scene.camera.yfov);
     camera.orthoHalfHeight = scene.camera.orthoHalfHeight;

@@ -58,6 +58,8 @@ PathBuffers::PathBuffers(const Context& context, uint32_t pathCapacity, uint32_t
     rayQueues = Buffer(context, "ray queues", uint64_t(pathCapacity) * 2 * 4);
     if (variant.motion)
         rayTime = Buffer(context, "ray times", uint64_t(pathCapacity) * 4);
+    if (variant.dispersion)
+        pathWavelength = Buffer(context, "path wavelengths", uint64_t(pathCapacity) * 4);
     if (variant.shadeKinds != 0) // at most 3 x 4 bytes x 4 M paths: within 128 MiB
         kindQueues =
             Buffer(context, "shade bins", uint64_t(pathCapacity) * variant.shadeBins() * 4);
@@ -140,6 +142,7 @@ void PathBuffers::appendBindings(DescriptorBindings& bindings) const {
         {WF_BINDING_KIND_QUEUES, &kindQueues},
         {WF_BINDING_KIND_QUEUE_TEXELS, &kindQueues, BufferAccess::Uint1Texels},
         {WF_BINDING_RAY_TIME, &rayTime},
+        {WF_BINDING_PATH_WAVELENGTH, &pathWavelength},
         {WF_BINDING_LIGHT_FILM, &lightFilm},
         {WF_BINDING_PATH_MIS, &pathMis},
         {WF_BINDING_LIGHT_DEPTHS, &lightDepths},
@@ -159,7 +162,7 @@ void PathBuffers::appendMemoryReport(
     for (const Buffer* buffer :
          {&params, &counters, &film, &rayOrigin, &rayDirection, &throughput, &radiance, &hits,
           &shadowOrigin, &shadowDirection, &shadowRadiance, &rayQueues, &aovPaths, &aovFilm,
-          &momentFilm, &replicateFilm, &activePixels, &rayCones, &kindQueues, &rayTime,
+          &momentFilm, &replicateFilm, &activePixels, &rayCones, &kindQueues, &rayTime, &pathWavelength,
           &lightFilm, &pathMis, &lightDepths, &lightVertexHits, &lightVertexDirections,
           &lightVertexThroughputs, &lightVertexPositions, &mergeLists})
         if (*buffer)

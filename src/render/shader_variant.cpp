@@ -74,6 +74,7 @@ ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& se
         variant.iridescence |= m.iridescence > 0.0f;
         variant.anisotropy |= m.anisotropyStrength > 0.0f;
         variant.diffuseTransmission |= m.diffuseTransmission > 0.0f;
+        variant.dispersion |= gpu_types::materialDisperses(m);
         variant.volume |= volume;
         variant.specularTextures |=
             m.specularTexture != WF_NO_TEXTURE || m.specularColorTexture != WF_NO_TEXTURE;
@@ -182,6 +183,8 @@ ShaderDefines ShaderVariant::defines() const {
     }
     if (diffuseTransmission) // defined only then, as anisotropy
         defines.emplace_back("WF_HAS_DIFFUSE_TRANSMISSION", "1");
+    if (dispersion) // defined only then: other scenes keep their shaders and sample numbering
+        defines.emplace_back("WF_HAS_DISPERSION", "1");
     if (shadeKinds != 0) {
         defines.push_back({"WF_SHADE_BINS", std::to_string(shadeBins())});
         defines.push_back({"WF_LIGHT_HIT_BIN", std::to_string(lightHitBin(shadeKinds))});

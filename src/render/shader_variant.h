@@ -58,6 +58,9 @@ struct ShaderVariant {
     bool anisotropy = false;          // WF_HAS_ANISOTROPY (defined only then): anisotropic GGX
     // WF_HAS_DIFFUSE_TRANSMISSION (defined only then): a Lambert lobe through the surface
     bool diffuseTransmission = false;
+    // WF_HAS_DISPERSION (defined only then): glass with KHR_materials_dispersion; a path
+    // carries one wavelength from its first dispersive vertex on (bsdf/dispersion.h)
+    bool dispersion = false;
     bool volume = false;              // WF_HAS_VOLUME: some transmissive material absorbs
     bool specularTextures = false;    // WF_HAS_SPECULAR_TEXTURES: KHR_materials_specular maps
     // The layers' and volume's textures (issue 48), each only where a material with the layer

@@ -73,6 +73,7 @@ SceneSummary summarize(const Scene& scene) {
         summary.transmissiveMaterials += m.transmission > 0.0f;
         summary.anisotropicMaterials += m.anisotropyStrength > 0.0f;
         summary.diffuseTransmissionMaterials += m.diffuseTransmission > 0.0f;
+        summary.dispersiveMaterials += gpu_types::materialDisperses(m);
     }
     return summary;
 }
@@ -127,7 +128,8 @@ std::string describe(const SceneSummary& summary) {
                                               {summary.transmissiveMaterials, "transmission"},
                                               {summary.anisotropicMaterials, "anisotropic"},
                                               {summary.diffuseTransmissionMaterials,
-                                               "diffuse transmission"}},
+                                               "diffuse transmission"},
+                                              {summary.dispersiveMaterials, "dispersion"}},
                                              "no alpha or transmission");
     text += ".";
     const size_t lights = summary.pointLights + summary.spotLights + summary.directionalLights +

@@ -35,6 +35,7 @@ struct SceneSummary {
     size_t alphaMaskMaterials = 0, alphaBlendMaterials = 0, transmissiveMaterials = 0;
     size_t anisotropicMaterials = 0; // KHR_materials_anisotropy (WF_HAS_ANISOTROPY)
     size_t diffuseTransmissionMaterials = 0; // KHR_materials_diffuse_transmission
+    size_t dispersiveMaterials = 0; // KHR_materials_dispersion on glass (WF_HAS_DISPERSION)
     double loadSeconds = 0.0; // reading and converting the file; set by whoever timed it
 };
 
