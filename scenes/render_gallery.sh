@@ -39,6 +39,9 @@ mkdir -p docs/images/materials
 "$wavefront" render scenes/lamp_shades.gltf -o "$tmp/lamp_shades.exr" --width 300 --spp 256 \
     --seed 1 --quiet
 mv "$tmp/lamp_shades.png" docs/images/materials/lamp_shades.png
+# KHR_materials_dispersion: a prism's rainbow (docs/gltf.md).
+"$wavefront" render scenes/prism.gltf -o "$tmp/prism.exr" --width 300 --spp 2048 --seed 1 --quiet
+mv "$tmp/prism.png" docs/images/materials/prism.png
 # The animated scene at three times (render --frames: frames 0, 12 and 24 at 24 fps).
 anim=docs/images/animation
 mkdir -p "$anim"
