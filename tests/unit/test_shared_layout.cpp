@@ -288,6 +288,7 @@ TEST(SharedLayout, BindingNumbersAreDistinct) {
         {"VERTEX_COLORS", WF_BINDING_VERTEX_COLORS, 1},
         {"VERTEX_COLOR_PAGE1", WF_BINDING_VERTEX_COLOR_PAGE1, 7},
         {"SAMPLER_TABLES", WF_BINDING_SAMPLER_TABLES, 1},
+        {"PATH_WAVELENGTH", WF_BINDING_PATH_WAVELENGTH, 1},
     };
     std::map<int, std::string> owner;
     for (const Range& r : ranges)
