@@ -42,6 +42,13 @@ mv "$tmp/lamp_shades.png" docs/images/materials/lamp_shades.png
 # KHR_materials_dispersion: a prism's rainbow (docs/gltf.md).
 "$wavefront" render scenes/prism.gltf -o "$tmp/prism.exr" --width 300 --spp 2048 --seed 1 --quiet
 mv "$tmp/prism.png" docs/images/materials/prism.png
+# Each extension's material beside the same without it (scenes/make_material_pairs.py).
+for pair in anisotropy:256 iridescence:256 dispersion:1024; do
+    name=${pair%%:*}
+    "$wavefront" render "scenes/${name}_pair.gltf" -o "$tmp/${name}_pair.exr" --width 320 \
+        --spp "${pair#*:}" --max-depth 8 --seed 1 --quiet
+    mv "$tmp/${name}_pair.png" "docs/images/materials/${name}_pair.png"
+done
 # The animated scene at three times (render --frames: frames 0, 12 and 24 at 24 fps).
 anim=docs/images/animation
 mkdir -p "$anim"
