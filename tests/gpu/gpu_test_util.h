@@ -53,4 +53,12 @@ int expectRegionsUnbiased(const std::vector<std::vector<float>>& images,
                           uint32_t height, uint32_t block, const std::string& what,
                           const std::vector<bool>* skipRegion = nullptr);
 
+// Whether a shader variant defines `key` (the extensions' switches are defined only where used).
+inline bool hasDefine(const ShaderDefines& defines, const std::string& key) {
+    for (const auto& [name, value] : defines)
+        if (name == key)
+            return true;
+    return false;
+}
+
 } // namespace wf::test

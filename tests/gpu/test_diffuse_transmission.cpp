@@ -284,13 +284,6 @@ TEST(DiffuseTransmission, WhiteFurnace) {
     EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
 }
 
-bool hasDefine(const ShaderDefines& defines, const std::string& key) {
-    for (const auto& [name, value] : defines)
-        if (name == key)
-            return true;
-    return false;
-}
-
 // WF_HAS_DIFFUSE_TRANSMISSION is defined only for scenes that use it.
 TEST(DiffuseTransmission, DefinedOnlyForScenesThatUseIt) {
     ShaderCompiler compiler(defaultShaderDir(), "");

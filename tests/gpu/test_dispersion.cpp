@@ -191,13 +191,6 @@ TEST(Dispersion, PrismCastsARainbow) {
     EXPECT_EQ(gpuContext().validationMessageCount(), 0u);
 }
 
-bool hasDefine(const ShaderDefines& defines, const std::string& key) {
-    for (const auto& [name, value] : defines)
-        if (name == key)
-            return true;
-    return false;
-}
-
 // dispersion 0 is the file without the extension, bit for bit, and neither compiles it in.
 TEST(Dispersion, ZeroIsTheFileWithoutTheExtension) {
     const std::string text = readText(std::string(WF_TEST_SCENE_DIR) + "/prism.gltf");

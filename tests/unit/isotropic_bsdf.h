@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include <glm/glm.hpp>
+#include <gtest/gtest.h>
 
 namespace wf::test {
 
@@ -38,5 +39,30 @@ glm::vec3 isotropicEval(const PlainMaterial& m, glm::vec3 wo, glm::vec3 wi);
 float isotropicPdf(const PlainMaterial& m, glm::vec3 wo, glm::vec3 wi);
 PlainSample isotropicSample(const PlainMaterial& m, glm::vec3 wo, float uLobe, glm::vec2 u);
 bool isotropicHasNonDelta(const PlainMaterial& m);
+
+// The full build's BSDF `m` (its extension at strength or factor 0) against the plain one,
+// bit for bit: eval, pdf, hasNonDelta and a sample drawn with the same numbers. Params and
+// Sample are the including test's BsdfParams and BsdfSample (its own defines).
+template <class Params, class Sample>
+::testing::AssertionResult matchesPlainBsdf(const Params& m, const PlainMaterial& plain,
+                                            glm::vec3 wo, glm::vec3 wi, float uLobe,
+                                            glm::vec2 u) {
+    if (!sameBits(bsdfEval(m, wo, wi), isotropicEval(plain, wo, wi)))
+        return ::testing::AssertionFailure() << "eval differs";
+    if (!sameBits(bsdfPdf(m, wo, wi), isotropicPdf(plain, wo, wi)))
+        return ::testing::AssertionFailure() << "pdf differs";
+    if (bsdfHasNonDelta(m) != isotropicHasNonDelta(plain))
+        return ::testing::AssertionFailure() << "hasNonDelta differs";
+    Sample s;
+    const bool sampled = bsdfSample(m, wo, uLobe, u, s);
+    const PlainSample reference = isotropicSample(plain, wo, uLobe, u);
+    if (sampled != reference.sampled)
+        return ::testing::AssertionFailure() << "one samples, the other does not";
+    if (sampled && !(sameBits(s.wi, reference.wi) && sameBits(s.weight, reference.weight) &&
+                     sameBits(s.pdf, reference.pdf) && sameBits(s.eta, reference.eta) &&
+                     s.isDelta == reference.isDelta))
+        return ::testing::AssertionFailure() << "the samples differ";
+    return ::testing::AssertionSuccess();
+}
 
 } // namespace wf::test
