@@ -21,13 +21,8 @@ CameraGeometry sceneCamera() {
 #endif
     camera.up = params.cameraUp;
 #if WF_MOTION
-    if (params.cameraMotionKeys != 0u) {
-        uint first = params.cameraMotionKeys - 1u;
-        camera.position = motionKeyAt(first, 3u, 0u).xyz;
-        camera.forward = normalize(motionKeyAt(first, 3u, 1u).xyz);
-        camera.right = normalize(cross(camera.forward, motionKeyAt(first, 3u, 2u).xyz));
-        camera.up = cross(camera.right, camera.forward);
-    }
+    if (params.cameraMotionKeys != 0u)
+        movingCameraFrame(camera.position, camera.forward, camera.right, camera.up);
 #endif
     camera.width = params.width;
     camera.height = params.height;

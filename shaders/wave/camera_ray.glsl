@@ -17,14 +17,8 @@ void cameraRay(uint pixel, uint sampleIndex, out vec3 origin, out vec3 direction
     vec3 cameraRight = params.cameraRight;
 #if WF_MOTION
     wfRayTime = sample1D(pixel, sampleIndex, WF_DIM_TIME, params.seed);
-    if (params.cameraMotionKeys != 0u) {
-        // The interpolated frame, made orthonormal again as the host makes it (cameraRight).
-        uint first = params.cameraMotionKeys - 1u;
-        cameraPosition = motionKeyAt(first, 3u, 0u).xyz;
-        cameraForward = normalize(motionKeyAt(first, 3u, 1u).xyz);
-        cameraRight = normalize(cross(cameraForward, motionKeyAt(first, 3u, 2u).xyz));
-        cameraUp = cross(cameraRight, cameraForward);
-    }
+    if (params.cameraMotionKeys != 0u)
+        movingCameraFrame(cameraPosition, cameraForward, cameraRight, cameraUp);
 #endif
     if (params.orthoHalfHeight > 0.0) { // orthographic: parallel rays from the view's plane
         origin = cameraPosition +

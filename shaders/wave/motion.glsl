@@ -43,6 +43,16 @@ vec4 motionKeyAt(uint first, uint stride, uint row) {
     uint key = first + motionSegment(wfRayTime, along) * stride + row;
     return mix(motionKeys[key], motionKeys[key + stride], along);
 }
+
+// A moving camera's frame at the path's time (params.cameraMotionKeys != 0): its keys
+// interpolated, made orthonormal again as the host makes it (cameraRight).
+void movingCameraFrame(out vec3 position, out vec3 forward, out vec3 right, out vec3 up) {
+    uint first = params.cameraMotionKeys - 1u;
+    position = motionKeyAt(first, 3u, 0u).xyz;
+    forward = normalize(motionKeyAt(first, 3u, 1u).xyz);
+    right = normalize(cross(forward, motionKeyAt(first, 3u, 2u).xyz));
+    up = cross(right, forward);
+}
 #else
 float pathTime() { return 0.0; } // nothing moves: every path is at the shutter's one instant
 #endif
