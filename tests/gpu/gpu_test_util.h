@@ -53,6 +53,25 @@ int expectRegionsUnbiased(const std::vector<std::vector<float>>& images,
                           uint32_t height, uint32_t block, const std::string& what,
                           const std::vector<bool>* skipRegion = nullptr);
 
+// A shade variant with the switches that touch the BSDF set by the bits of `bits`: 1 textures
+// (with ray cones), 2 volume, 4 the layers (clear coat and sheen), 8 path guiding. The
+// extensions' tests add their own switch and compile it beside each.
+inline ShaderDefines materialSwitchDefines(int bits) {
+    const bool textures = bits & 1;
+    return {{"WF_WORKGROUP_SIZE", "64"},
+            {"WF_HAS_EMITTERS", "1"},
+            {"WF_HAS_TRIANGLE_EMITTERS", "1"},
+            {"WF_LIGHT_SAMPLING", "2"},
+            {"WF_HAS_NORMALS", "1"},
+            {"WF_HAS_TEXTURES", textures ? "1" : "0"},
+            {"WF_TEXEL_PAGES", textures ? "1" : "0"},
+            {"WF_RAY_CONES", textures ? "1" : "0"},
+            {"WF_HAS_VOLUME", bits & 2 ? "1" : "0"},
+            {"WF_HAS_CLEARCOAT", bits & 4 ? "1" : "0"},
+            {"WF_HAS_SHEEN", bits & 4 ? "1" : "0"},
+            {"WF_GUIDING", bits & 8 ? "1" : "0"}};
+}
+
 // Whether a shader variant defines `key` (the extensions' switches are defined only where used).
 inline bool hasDefine(const ShaderDefines& defines, const std::string& key) {
     for (const auto& [name, value] : defines)

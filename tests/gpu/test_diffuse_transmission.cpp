@@ -304,20 +304,8 @@ TEST(DiffuseTransmission, CompilesWithTheOtherMaterialSwitches) {
     ShaderCompiler compiler(defaultShaderDir(), "");
     for (int bits = 0; bits < 16; ++bits)
         for (const char* pass : {"shade.comp", "megakernel.comp"}) {
-            const bool textures = bits & 1;
-            ShaderDefines defines = {{"WF_WORKGROUP_SIZE", "64"},
-                                     {"WF_HAS_EMITTERS", "1"},
-                                     {"WF_HAS_TRIANGLE_EMITTERS", "1"},
-                                     {"WF_LIGHT_SAMPLING", "2"},
-                                     {"WF_HAS_NORMALS", "1"},
-                                     {"WF_HAS_TEXTURES", textures ? "1" : "0"},
-                                     {"WF_TEXEL_PAGES", textures ? "1" : "0"},
-                                     {"WF_RAY_CONES", textures ? "1" : "0"},
-                                     {"WF_HAS_VOLUME", bits & 2 ? "1" : "0"},
-                                     {"WF_HAS_CLEARCOAT", bits & 4 ? "1" : "0"},
-                                     {"WF_HAS_SHEEN", bits & 4 ? "1" : "0"},
-                                     {"WF_GUIDING", bits & 8 ? "1" : "0"},
-                                     {"WF_HAS_DIFFUSE_TRANSMISSION", "1"}};
+            ShaderDefines defines = materialSwitchDefines(bits);
+            defines.push_back({"WF_HAS_DIFFUSE_TRANSMISSION", "1"});
             if (bits == 15) {
                 defines.push_back({"WF_HAS_ANISOTROPY", "1"});
                 defines.push_back({"WF_HAS_TANGENTS", "0"});

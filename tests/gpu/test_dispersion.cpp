@@ -236,21 +236,9 @@ TEST(Dispersion, CompilesWithTheOtherSwitches) {
     ShaderCompiler compiler(defaultShaderDir(), "");
     for (int bits = 0; bits < 16; ++bits)
         for (const char* pass : {"shade.comp", "megakernel.comp", "raygen.comp"}) {
-            const bool textures = bits & 1;
-            const ShaderDefines defines = {{"WF_WORKGROUP_SIZE", "64"},
-                                           {"WF_HAS_EMITTERS", "1"},
-                                           {"WF_HAS_TRIANGLE_EMITTERS", "1"},
-                                           {"WF_LIGHT_SAMPLING", "2"},
-                                           {"WF_HAS_NORMALS", "1"},
-                                           {"WF_HAS_TEXTURES", textures ? "1" : "0"},
-                                           {"WF_TEXEL_PAGES", textures ? "1" : "0"},
-                                           {"WF_RAY_CONES", textures ? "1" : "0"},
-                                           {"WF_HAS_VOLUME", bits & 2 ? "1" : "0"},
-                                           {"WF_HAS_CLEARCOAT", bits & 4 ? "1" : "0"},
-                                           {"WF_HAS_SHEEN", bits & 4 ? "1" : "0"},
-                                           {"WF_GUIDING", bits & 8 ? "1" : "0"},
-                                           {"WF_MOTION", bits == 15 ? "1" : "0"},
-                                           {"WF_HAS_DISPERSION", "1"}};
+            ShaderDefines defines = materialSwitchDefines(bits);
+            defines.push_back({"WF_MOTION", bits == 15 ? "1" : "0"});
+            defines.push_back({"WF_HAS_DISPERSION", "1"});
             ASSERT_GT(compiler.compile(pass, defines).spirv.size(), 5u) << pass << " " << bits;
         }
     const ShaderDefines delta = {{"WF_WORKGROUP_SIZE", "64"}, {"WF_HAS_EMITTERS", "1"},
