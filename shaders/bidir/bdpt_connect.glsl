@@ -22,6 +22,7 @@ struct BdptCameraVertex {
     vec3 beta;          // the camera subpath's throughput at the vertex
     VcmSubpathMis mis;  // after vcmOnHit here
     uint sampleIndex;   // its MIS configuration's (and with WF_VCM, its merging radius's)
+    uint pixel;         // with sampleIndex, where its random numbers come from
     BsdfParams bsdf;
 #if WF_BSDF_LAYERS
     BsdfLayers layers;

@@ -33,15 +33,17 @@ ivec3 vcmCell(vec3 p, float cellSize) {
     return ivec3(floor((p - params.sceneCenter) / cellSize));
 }
 
+uint vcmHashStep(uint h, int coordinate) {
+    h ^= uint(coordinate) + 0x7F4A7C15u + (h << 6) + (h >> 2);
+    h *= 0x85EBCA6Bu;
+    return h ^ (h >> 13);
+}
+
 uint vcmBucket(ivec3 cell, uint sampleIndex) {
     // Each coordinate through a multiply-xorshift round, so that neighbouring cells and
     // sample indices spread over the whole table.
-    uint h = sampleIndex * 0x9E3779B9u;
-    for (int a = 0; a < 3; ++a) {
-        h ^= uint(cell[a]) + 0x7F4A7C15u + (h << 6) + (h >> 2);
-        h *= 0x85EBCA6Bu;
-        h ^= h >> 13;
-    }
+    uint h = vcmHashStep(vcmHashStep(vcmHashStep(sampleIndex * 0x9E3779B9u, cell.x), cell.y),
+                         cell.z);
     return h & (params.mergeCells - 1u);
 }
 

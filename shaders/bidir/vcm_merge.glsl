@@ -7,6 +7,11 @@
 #define WF_VCM_MERGE_GLSL
 #include "bidir/light_film.glsl"
 
+#define WF_VCM_QUERY_BOUND 0.1
+// An independent random number per camera vertex for the query's roulette, off the sampler's
+// dimensions (rng.h numbers those from 0 up), so that vcm's other samples stay as bdpt's.
+#define WF_DIM_MERGE_ROULETTE 0x40000000u
+
 // The merges of camera vertex c at camera bounce `depth` of `path` (of a wave of
 // `wavePixels` pixels per sample slot), summed in the light film's fixed point (so their order
 // does not matter). Merges over WF_LIGHT_FILM_MAX or not
@@ -21,28 +26,53 @@ LightFilmSum vcmMerge(BdptCameraVertex c, uint path, uint depth, uint wavePixels
     // A photon's flux is its throughput over the light subpaths of the sample index; the
     // estimate divides it by the disk it is gathered over.
     float normalization = 1.0 / (WF_PI * radiusSq * float(params.pixelCount));
-    uint sampleSlot = path / wavePixels;
+    // Russian roulette on the query, unbiased (taken with probability q, it counts 1 / q). Its
+    // merges weigh at most vcmMergeWeightBound; below WF_VCM_QUERY_BOUND the query is taken with
+    // probability bound / WF_VCM_QUERY_BOUND, so a merge's value grows to at most
+    // WF_VCM_QUERY_BOUND times its unweighted estimate. Camera vertices that connect far better
+    // than they merge (most of a diffuse scene's) made most of merging's time for a few tenths
+    // of a percent of the image (docs/bidirectional.md).
+    float queryProbability =
+        min(1.0, vcmMergeWeightBound(cfg, c.mis) * (1.0 / WF_VCM_QUERY_BOUND));
+    if (queryProbability < 1.0 &&
+        independentSample1D(c.pixel, c.sampleIndex, WF_DIM_MERGE_ROULETTE + depth,
+                            params.seed) >= queryProbability)
+        return sum;
+    normalization /= queryProbability;
+    uint firstPath = path / wavePixels * wavePixels; // the first path of its sample slot
+    uint lastSlot = (params.maxDepth - depth - 1u) * params.pathCapacity;
     ivec3 low = vcmCell(c.p - vec3(radius), 2.0 * radius);
-    uint visited[8];
-    uint visitedCount = 0u;
+    // The 8 cells' buckets in two vectors, not an array: a dynamically indexed array lives
+    // in memory on lavapipe, a vector's lanes in registers.
+    uint si = c.sampleIndex;
+    uvec4 lowBuckets = uvec4(vcmBucket(low, si), vcmBucket(low + ivec3(1, 0, 0), si),
+                             vcmBucket(low + ivec3(0, 1, 0), si),
+                             vcmBucket(low + ivec3(1, 1, 0), si));
+    uvec4 highBuckets = uvec4(vcmBucket(low + ivec3(0, 0, 1), si),
+                              vcmBucket(low + ivec3(1, 0, 1), si),
+                              vcmBucket(low + ivec3(0, 1, 1), si),
+                              vcmBucket(low + ivec3(1, 1, 1), si));
     for (uint corner = 0u; corner < 8u; ++corner) {
-        ivec3 cell = low + ivec3(corner & 1u, (corner >> 1u) & 1u, corner >> 2u);
-        uint bucket = vcmBucket(cell, c.sampleIndex);
+        uint bucket = corner < 4u ? lowBuckets[corner] : highBuckets[corner - 4u];
         // Two cells may share a bucket: read each list once, or its photons count twice.
-        bool seen = false;
-        for (uint i = 0u; i < visitedCount; ++i)
-            seen = seen || visited[i] == bucket;
-        if (seen)
+        bvec4 earlierLow = lessThan(uvec4(0u, 1u, 2u, 3u), uvec4(corner));
+        bvec4 earlierHigh = lessThan(uvec4(4u, 5u, 6u, 7u), uvec4(corner));
+        bvec4 sameLow = equal(lowBuckets, uvec4(bucket));
+        bvec4 sameHigh = equal(highBuckets, uvec4(bucket));
+        if (any(bvec4(sameLow.x && earlierLow.x, sameLow.y && earlierLow.y,
+                      sameLow.z && earlierLow.z, sameLow.w && earlierLow.w)) ||
+            any(bvec4(sameHigh.x && earlierHigh.x, sameHigh.y && earlierHigh.y,
+                      sameHigh.z && earlierHigh.z, sameHigh.w && earlierHigh.w)))
             continue;
-        visited[visitedCount++] = bucket;
         for (uint slot = mergeLists[bucket]; slot != WF_VCM_END;
              slot = mergeLists[params.mergeCells + slot]) {
             vec4 position = lightVertexPositions[slot];
             vec3 offset = position.xyz - c.p;
-            uint lightPath = slot % params.pathCapacity;
-            // Buckets hold other cells and other sample indices too.
-            if (dot(offset, offset) > radiusSq || lightPath / wavePixels != sampleSlot ||
-                depth + slot / params.pathCapacity + 2u > params.maxDepth)
+            if (dot(offset, offset) > radiusSq)
+                continue;
+            // Buckets hold other cells and other sample indices too; slot = light bounce *
+            // pathCapacity + path, and bounce d merges as a path of depth + d + 2 segments.
+            if (slot >= lastSlot || slot % params.pathCapacity - firstPath >= wavePixels)
                 continue;
             vec4 lightDirection = lightVertexDirections[slot];
             vec4 lightThroughput = lightVertexThroughputs[slot];

@@ -205,6 +205,13 @@ WF_INLINE float vcmWeightMerge(VcmMisConfig cfg, VcmSubpathMis camera, VcmSubpat
     return 1.0f / (wLight + 1.0f + wCamera);
 }
 
+// The most any merge at a camera vertex can weigh, known before its query: the light side's
+// terms and the reverse pdf's are not negative, so the weight is at most 1 / (1 + the camera
+// subpath's connection term). vcm_merge.glsl plays Russian roulette on queries it bounds low.
+WF_INLINE float vcmMergeWeightBound(VcmMisConfig cfg, VcmSubpathMis camera) {
+    return 1.0f / (1.0f + camera.dVCM * cfg.connectOverMerge);
+}
+
 #ifdef __cplusplus
 } // namespace wf::gpu_types
 #endif

@@ -414,6 +414,7 @@ void shadePathVertex(inout PathVertex v) {
     bdptVertex.beta = v.beta;
     bdptVertex.mis = mis;
     bdptVertex.sampleIndex = v.sampleIndex;
+    bdptVertex.pixel = v.pixel;
     bdptVertex.bsdf = bsdf;
 #endif
     if (v.depth + 1u >= params.maxDepth)

@@ -284,6 +284,34 @@ TEST(VcmMis, RecursiveWeightsMatchTheDefinition) {
     EXPECT_GT(compared, 10000);
 }
 
+// vcm_merge.glsl's roulette rests on vcmMergeWeightBound: no merge at a camera vertex weighs
+// more than it, whatever the light subpath and the photon's direction.
+TEST(VcmMis, MergeWeightsStayUnderTheirBound) {
+    std::mt19937 rng(4646);
+    int merges = 0, tight = 0;
+    for (const Mode& mode : kModes) {
+        if (!mode.merge)
+            continue;
+        for (int k = 2; k <= 6; ++k)
+            for (int trial = 0; trial < 200; ++trial) {
+                const AbstractPath path = randomPath(rng, k, LightKind::Area, 0.3);
+                const Params par = randomParams(rng);
+                const RecursiveWeights rec(path, mode, par);
+                for (const Strategy& st : explicitStrategies(path, mode, par)) {
+                    if (!st.merge)
+                        continue;
+                    const double weight = rec.weight(st);
+                    const double bound = gt::vcmMergeWeightBound(rec.cfg, rec.camera[st.t - 1]);
+                    EXPECT_LE(weight, bound * (1.0 + 1e-5)) << describe(path, st, mode);
+                    ++merges;
+                    tight += weight > 0.5 * bound;
+                }
+            }
+    }
+    EXPECT_GT(merges, 1000);
+    EXPECT_GT(tight, merges / 20); // a bound that is not merely 1
+}
+
 // Camera - specular - specular - emitter: no vertex can be connected or merged, so the camera
 // hitting the emitter is the only strategy and must keep the whole weight in every mode.
 TEST(VcmMis, OnlyTheEmitterHitSamplesAllSpecularPaths) {
