@@ -10,7 +10,10 @@ colours, a rainbow on the floor beyond (violet nearest the prism, red farthest).
 finds that light by BSDF sampling from the floor through the glass and the slit, so the rainbow
 is a caustic (docs/gltf.md says how it is traced): the strip and slit are long along the axis,
 where their length blurs no colour, so that it converges in a few hundred samples per pixel.
-Run `python3 make_prism.py`.
+prism_rough.gltf is the same scene with a rough prism (roughness 0.2): the beam leaves it
+blurred, and a path's vertex on the prism's inside reaches the light by next-event estimation
+(rough dispersive glass, where --spectral hero weighs four wavelengths). Run
+`python3 make_prism.py`.
 """
 
 import math
@@ -54,10 +57,10 @@ def dispersive(g, index, dispersion):
     return index
 
 
-def prism_scene():
+def prism_scene(roughness=0.0):
     g = GltfWriter()
     white = material(g, "floor", (0.8, 0.8, 0.8), lambert=True)
-    glass = dispersive(g, material(g, "dispersive glass", (1.0, 1.0, 1.0), roughness=0.0,
+    glass = dispersive(g, material(g, "dispersive glass", (1.0, 1.0, 1.0), roughness=roughness,
                                    transmission=1.0, ior=1.5), 5.0)
     g.node(name="floor", mesh=g.mesh("floor", [g.primitive(floor(10.0), white)]))
     dark = material(g, "wall", (0.05, 0.05, 0.05), lambert=True)
@@ -76,6 +79,7 @@ def prism_scene():
 
 if __name__ == "__main__":
     here = os.path.dirname(os.path.abspath(__file__))
-    doc = prism_scene()
-    doc.doc["asset"]["generator"] = "scenes/make_prism.py"
-    doc.write(os.path.join(here, "prism.gltf"))
+    for name, roughness in (("prism", 0.0), ("prism_rough", 0.2)):
+        doc = prism_scene(roughness)
+        doc.doc["asset"]["generator"] = "scenes/make_prism.py"
+        doc.write(os.path.join(here, name + ".gltf"))

@@ -52,7 +52,10 @@ void main() {
         v.previousNormal = 0.0;
         v.beta = vec3(1.0);
         v.etaScale = 1.0;
-#if WF_HAS_DISPERSION
+#if WF_HAS_DISPERSION && WF_SPECTRAL_HERO
+        for (uint j = 0u; j < WF_HERO_LANES; ++j)
+            v.lanes[j] = vec4(0.0); // RGB until its first dispersive vertex
+#elif WF_HAS_DISPERSION
         v.wavelength = 0.0; // RGB until its first dispersive vertex
 #endif
 #if WF_RAY_CONES

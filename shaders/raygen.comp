@@ -12,6 +12,9 @@ layout(local_size_x = WF_WORKGROUP_SIZE) in;
 #include "wave/wave_paths.glsl"
 #include "wave/camera_ray.glsl"
 #include "surface/ray_cones.glsl"
+#if WF_HAS_DISPERSION
+#include "bsdf/dispersion.h"
+#endif
 #if WF_INTEGRATOR == WF_INTEGRATOR_BDPT && WF_HAS_EMITTERS
 #include "bidir/bdpt_state.glsl"
 #endif
@@ -36,7 +39,10 @@ void main() {
 #if WF_MOTION
     rayTime[path] = wfRayTime; // drawn by cameraRay
 #endif
-#if WF_HAS_DISPERSION
+#if WF_HAS_DISPERSION && WF_SPECTRAL_HERO
+    for (uint j = 0u; j < WF_HERO_LANES; ++j)
+        pathLanes[WF_HERO_LANES * path + j] = vec4(0.0); // RGB until its first dispersive vertex
+#elif WF_HAS_DISPERSION
     pathWavelength[path] = 0.0; // RGB until its first dispersive vertex
 #endif
 #if WF_GUIDING

@@ -71,7 +71,10 @@ void main() {
         vec4 pathThroughput = throughputAt(path);
         v.beta = pathThroughput.rgb;
         v.etaScale = pathThroughput.w;
-#if WF_HAS_DISPERSION
+#if WF_HAS_DISPERSION && WF_SPECTRAL_HERO
+        for (uint j = 0u; j < WF_HERO_LANES; ++j)
+            v.lanes[j] = pathLanes[WF_HERO_LANES * path + j];
+#elif WF_HAS_DISPERSION
         v.wavelength = pathWavelength[path];
 #endif
 #if WF_RAY_CONES
@@ -96,7 +99,10 @@ void main() {
             rayOrigin[path] = wfPack(vec4(v.origin, v.previousPdf));
             rayDirection[path] = wfPack(vec4(v.direction, v.previousNormal));
             throughput[path] = wfPack(vec4(v.beta, v.etaScale));
-#if WF_HAS_DISPERSION
+#if WF_HAS_DISPERSION && WF_SPECTRAL_HERO
+            for (uint j = 0u; j < WF_HERO_LANES; ++j)
+                pathLanes[WF_HERO_LANES * path + j] = v.lanes[j];
+#elif WF_HAS_DISPERSION
             pathWavelength[path] = v.wavelength;
 #endif
 #if WF_RAY_CONES

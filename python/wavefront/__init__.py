@@ -165,7 +165,7 @@ class Renderer:
                texture_filter=None, shade_split=None, no_randomize=False, spp_offset=None,
                spp_total=None, aov=(), time_limit=None, target_error=None, guiding=None,
                error_replicates=None, integrator=None, bdpt_heuristic=None, vcm_radius=None,
-               progress=None):
+               spectral=None, progress=None):
         """Renders `scene` and returns a RenderOutput. None means the CLI's default (spp 64,
         width 512, height from the camera's aspect, seed 0, sampler "sobol", max_depth 16,
         light_sampling "mis", ...). aov: names among albedo, normal, depth, variance, samples.

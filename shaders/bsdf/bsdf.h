@@ -527,6 +527,34 @@ WF_INLINE bool bsdfSample(BsdfParams m, vec3 wo, float uLobe, vec2 u, WF_OUT(Bsd
     return s.pdf > 0.0f && bsdfFinite(s.weight) && bsdfFinite(vec3(s.pdf));
 }
 
+// The Dirac reflection bsdfSample (and deltaOnlySample) picks for wo where roughness is 0: its
+// throughput (a Dirac sample's weight times pdf) and the probability of that choice (its pdf);
+// zero for rough lobes. Every ior reflects into the same mirror direction, so --spectral hero
+// weighs its four wavelengths' chances of this one event (wave/hero_lanes.glsl).
+WF_INLINE vec3 bsdfDeltaReflection(BsdfParams m, vec3 wo, WF_OUT(float) probability) {
+    probability = 0.0f;
+#if WF_BSDF_DIFFUSE_ONLY
+    return vec3(0.0f);
+#endif
+    if (wo.z == 0.0f) {
+        return vec3(0.0f);
+    }
+    m = bsdfSanitize(m);
+    BsdfLobes l = bsdfLobes(m, wo.z < 0.0f);
+    float c = abs(wo.z);
+    vec2 choice = microChoice(m, l, c);
+    if (!l.delta || choice.x + choice.y <= 0.0f) {
+        return vec3(0.0f);
+    }
+#if WF_BSDF_DELTA_ONLY
+    float pDiffuse = 0.0f;
+#else
+    float pDiffuse = bsdfDiffuseProbability(m, l, c);
+#endif
+    probability = (1.0f - pDiffuse) * choice.x;
+    return microReflectance(m, l, c);
+}
+
 // Whether some lobe has a density (NEE and MIS can work at this vertex).
 WF_INLINE bool bsdfHasNonDelta(BsdfParams m) {
 #if WF_BSDF_DELTA_ONLY

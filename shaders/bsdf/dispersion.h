@@ -8,7 +8,9 @@
 // by dispersionWeight(lambda). From then on every dispersive dielectric bends it by
 // n(lambda); RGB reflectances and emission met later filter that weighted throughput (an RGB
 // filter per wavelength: exact for grey surfaces). The weight's average over lambda is exactly
-// (1, 1, 1), so white light through dispersive glass keeps its colour on average.
+// (1, 1, 1), so white light through dispersive glass keeps its colour on average. With
+// --spectral hero the path carries four wavelengths instead (heroLaneWavelength below;
+// wave/hero_lanes.glsl).
 //
 // The weight: the CIE 1931 2-degree colour matching functions, by Wyman, Sloan and Shirley's
 // multi-lobe Gaussian fit (JCGT 2(2), 2013), to linear sRGB (D65), negative parts clipped, each
@@ -72,6 +74,17 @@ WF_INLINE vec3 dispersionWeight(float lambda) {
 // dispersionWeight(lambda) (the colour's density over the uniform pdf, both per 400 nm).
 WF_INLINE float sampleWavelength(float u) {
     return WF_LAMBDA_MIN + (WF_LAMBDA_MAX - WF_LAMBDA_MIN) * u;
+}
+
+// --spectral hero (WF_SPECTRAL_HERO; Wilkie et al. 2014, "Hero wavelength spectral sampling"):
+// at its first dispersive vertex a path takes WF_HERO_LANES wavelengths, the hero (drawn as
+// above) and the others a quarter of the range apart, wrapped into it; each lane is then
+// uniform over the range, and the four stratify it.
+#define WF_HERO_LANES 4u
+WF_INLINE float heroLaneWavelength(float hero, uint lane) {
+    const float range = WF_LAMBDA_MAX - WF_LAMBDA_MIN;
+    float lambda = hero + float(lane) * (range / float(WF_HERO_LANES));
+    return lambda >= WF_LAMBDA_MAX ? lambda - range : lambda;
 }
 
 #ifdef __cplusplus

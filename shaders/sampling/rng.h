@@ -21,8 +21,11 @@
 //     6               BSDF lobe choice
 //     7               light extra (environment texel choice)
 //     8               with dispersion only (WF_HAS_DISPERSION): the wavelength a path picks
-//                     at its first dispersive vertex (bsdf/dispersion.h); 9 unused, so that
-//                     bounces still start on a pair and other scenes keep their numbering
+//                     at its first dispersive vertex (bsdf/dispersion.h)
+//     9               with dispersion only: under --spectral hero (WF_SPECTRAL_HERO) the lane
+//                     that samples a later dispersive vertex (wave/hero_lanes.glsl); unused
+//                     otherwise, so that bounces still start on a pair and other scenes keep
+//                     their numbering
 #ifndef WF_RNG_H
 #define WF_RNG_H
 
@@ -87,6 +90,7 @@ namespace wf::gpu_types {
 #define WF_DIM_BSDF_LOBE 6u
 #define WF_DIM_LIGHT_EXTRA 7u
 #define WF_DIM_WAVELENGTH 8u
+#define WF_DIM_HERO_LANE 9u
 
 // `independent`: a fresh hash of (pixel, sample, dimension, seed) per call.
 WF_INLINE vec2 independentSample2D(uint pixel, uint sampleIndex, uint dimension, uint seed) {

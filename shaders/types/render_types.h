@@ -111,8 +111,12 @@ namespace wf::gpu_types {
 // 110-117 are the vertex colours' (texture_types.h).
 #define WF_BINDING_LIGHT_VERTEX_POSITIONS 128
 #define WF_BINDING_MERGE_LISTS 129
-// WF_HAS_DISPERSION: per path, the wavelength it carries (nm; 0 while it is still RGB).
+// WF_HAS_DISPERSION: per path, the wavelength it carries (nm; 0 while it is still RGB); with
+// WF_SPECTRAL_HERO (--spectral hero) its four lanes instead (wave/hero_lanes.glsl).
 #define WF_BINDING_PATH_WAVELENGTH 118 // after the vertex colours' pages (110 .. 117)
+#ifndef WF_SPECTRAL_HERO
+#define WF_SPECTRAL_HERO 0
+#endif
 // WF_GUIDING (shaders/guiding/guide_bindings.glsl): the path guide's SD-tree and records.
 #define WF_BINDING_GUIDE_PARAMS 120   // GuideParams
 #define WF_BINDING_GUIDE_SPATIAL 121  // GuideSpatialNode[]

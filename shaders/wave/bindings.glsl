@@ -68,7 +68,11 @@ layout(std430, binding = WF_BINDING_ACTIVE_PIXELS) readonly buffer ActivePixelBu
     uint activePixels[]; // image pixel indices, in the order waves cover them
 };
 #endif
-#if WF_HAS_DISPERSION
+#if WF_HAS_DISPERSION && WF_SPECTRAL_HERO
+layout(std430, binding = WF_BINDING_PATH_WAVELENGTH) buffer PathLaneBuffer {
+    vec4 pathLanes[]; // [4 path + j]: lane j's (share, wavelength) (wave/hero_lanes.glsl)
+};
+#elif WF_HAS_DISPERSION
 layout(std430, binding = WF_BINDING_PATH_WAVELENGTH) buffer PathWavelengthBuffer {
     float pathWavelength[]; // nm; 0 while the path is RGB (bsdf/dispersion.h)
 };

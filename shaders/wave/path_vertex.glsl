@@ -44,7 +44,9 @@ struct PathVertex {
     float previousNormal; // encodeReceiverNormal at the vertex it left (light tree MIS; 0: none)
     vec3 beta;         // throughput
     float etaScale;    // product of eta^2 over refractions, so that RR ignores radiance scaling
-#if WF_HAS_DISPERSION
+#if WF_HAS_DISPERSION && WF_SPECTRAL_HERO
+    vec4 lanes[WF_HERO_LANES]; // --spectral hero: each lane's share and wavelength (hero_lanes)
+#elif WF_HAS_DISPERSION
     float wavelength;  // nm, from the path's first dispersive vertex on; 0 while it is RGB
 #endif
 #if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
@@ -194,6 +196,9 @@ BsdfLayers layersAt(SurfaceHit surface) {
 }
 #endif
 #include "wave/shading_frame.glsl"
+#if WF_HAS_DISPERSION && WF_SPECTRAL_HERO
+#include "wave/hero_lanes.glsl"
+#endif
 #if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
 #include "bidir/bdpt_connect.glsl"
 // The last camera vertex shaded, for shade.comp's connections (bdpt_connect.glsl).
@@ -272,7 +277,12 @@ void shadePathVertex(inout PathVertex v) {
 #endif
 
     BsdfParams bsdf = bsdfAt(surface);
-#if WF_HAS_DISPERSION
+#if WF_HAS_DISPERSION && WF_SPECTRAL_HERO
+    // --spectral hero: the path's four wavelengths from its first dispersive vertex on;
+    // bsdf takes the ior of the lane that samples (hero_lanes.glsl).
+    HeroVertex hero = heroAt(v, surface, bsdf.ior);
+    bsdf.ior = hero.ior[hero.lane];
+#elif WF_HAS_DISPERSION
     // KHR_materials_dispersion (bsdf/dispersion.h): the path picks its wavelength at its first
     // dispersive vertex, before next-event estimation and the BSDF sample, so that both (and
     // every dispersive vertex after) bend it by n(lambda); the weight averages to (1, 1, 1).
@@ -351,6 +361,13 @@ void shadePathVertex(inout PathVertex v) {
 #else
             vec3 f = bsdfEval(bsdf, woLocal, wiLocal);
 #endif
+#if WF_HAS_DISPERSION && WF_SPECTRAL_HERO
+            // Each lane's f; the BSDF side of MIS is the lanes' mixture (heroPdf below).
+            vec3 heroF[WF_HERO_LANES];
+            float heroPdf = 0.0;
+            if (hero.on)
+                f = heroEval(v, hero, bsdf WF_HERO_LAYERS_ARG, woLocal, wiLocal, heroF, heroPdf);
+#endif
             float weight = 1.0;
 #if WF_LIGHT_SAMPLING == 2 && WF_GUIDING
             if (!light.isDelta) {
@@ -358,6 +375,9 @@ void shadePathVertex(inout PathVertex v) {
                 float directionPdf = layeredPdf(bsdf, layers, woLocal, wiLocal);
 #else
                 float directionPdf = bsdfPdf(bsdf, woLocal, wiLocal);
+#endif
+#if WF_HAS_DISPERSION && WF_SPECTRAL_HERO
+                directionPdf = hero.on ? heroPdf : directionPdf;
 #endif
                 // A leaf at share 1 (still walking while training, for its records) weighs the
                 // BSDF's pdf alone: its walk here would be multiplied by 0.
@@ -368,6 +388,10 @@ void shadePathVertex(inout PathVertex v) {
                         guideFraction);
                 weight = powerHeuristic(light.pdf, directionPdf);
             }
+#elif WF_LIGHT_SAMPLING == 2 && WF_HAS_DISPERSION && WF_SPECTRAL_HERO
+            if (!light.isDelta)
+                weight = powerHeuristic(light.pdf, hero.on ? heroPdf
+                                                           : WF_HERO_PDF(bsdf, woLocal, wiLocal));
 #elif WF_LIGHT_SAMPLING == 2
 #if WF_BSDF_LAYERS
             if (!light.isDelta)
@@ -462,6 +486,10 @@ void shadePathVertex(inout PathVertex v) {
         wi = normalize(tangent * s.wi.x + bitangent * s.wi.y + n * s.wi.z);
         if (s.isDelta) {
             s.weight /= guideFraction; // a Dirac lobe only the BSDF's share can choose
+#if WF_HAS_DISPERSION && WF_SPECTRAL_HERO
+            if (hero.on)
+                s.weight = heroScatterDelta(v, hero, bsdf, woLocal, s, guideFraction);
+#endif
         } else {
             // Either branch: f |cos| over the mixture's pdf, so that both sides of MIS see one
             // function of the direction (the NEE side evaluates the guide's pdf at the light's
@@ -473,15 +501,29 @@ void shadePathVertex(inout PathVertex v) {
             vec3 f = bsdfEval(bsdf, woLocal, s.wi);
             float directionPdf = bsdfPdf(bsdf, woLocal, s.wi);
 #endif
+#if WF_HAS_DISPERSION && WF_SPECTRAL_HERO
+            vec3 heroF[WF_HERO_LANES];
+            if (hero.on)
+                f = heroEval(v, hero, bsdf WF_HERO_LAYERS_ARG, woLocal, s.wi, heroF,
+                             directionPdf);
+#endif
             float guideDensity = squarePdf * WF_GUIDE_INV_4PI * jacobian;
             s.pdf = guideMixturePdf(directionPdf, guideDensity, guideFraction);
             s.weight = s.pdf > 0.0 ? f * (abs(s.wi.z) / s.pdf) : vec3(0.0);
+#if WF_HAS_DISPERSION && WF_SPECTRAL_HERO
+            if (hero.on)
+                s.weight = heroScatter(v, heroF, abs(s.wi.z), s.pdf);
+#endif
             recordBsdfPdf = directionPdf;
             recordGuidePdf = guideDensity;
             recordFCos = (f.r + f.g + f.b) * (1.0 / 3.0) * abs(s.wi.z);
         }
     } else {
         wi = normalize(tangent * s.wi.x + bitangent * s.wi.y + n * s.wi.z);
+#if WF_HAS_DISPERSION && WF_SPECTRAL_HERO
+        if (hero.on)
+            heroScatterSample(v, hero, bsdf WF_HERO_LAYERS_ARG, woLocal, s);
+#endif
     }
 #else
 #if WF_BSDF_LAYERS
@@ -494,6 +536,10 @@ void shadePathVertex(inout PathVertex v) {
         return;
 #endif
     vec3 wi = normalize(tangent * s.wi.x + bitangent * s.wi.y + n * s.wi.z);
+#if WF_HAS_DISPERSION && WF_SPECTRAL_HERO
+    if (hero.on)
+        heroScatterSample(v, hero, bsdf WF_HERO_LAYERS_ARG, woLocal, s);
+#endif
 #endif
 #if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
     float scatterReversePdf =

@@ -299,6 +299,9 @@ int runRenderCommand(const std::vector<std::string>& args) {
     if (auto env = parsed.value("--env"))
         run.sceneHash += "+" + fileHash(*env);
     run.renderSettings = renderSettingsKey(settings, parsed);
+    const std::string spectral = spectralSettingFor(settings, scene.materials);
+    if (!spectral.empty())
+        run.renderSettings += " spectral " + spectral;
     run.sampler = samplerName(settings.sampler);
     run.seed = static_cast<int>(settings.seed);
     run.maxDepth = static_cast<int>(settings.maxDepth);
@@ -348,6 +351,8 @@ int runRenderCommand(const std::vector<std::string>& args) {
     statsContext.extraFields.push_back({"loadSeconds", jsonNumber(summary.loadSeconds)});
     statsContext.extraFields.push_back(traversalStatsField(renderer));
     statsContext.extraFields.push_back({"guidingDecision", jsonQuoted(guideDecision.reason)});
+    if (!spectral.empty())
+        statsContext.extraFields.push_back({"spectral", jsonQuoted(spectral)});
     if (settings.integrator != Integrator::Path) {
         // Light subpaths reuse the camera paths' state; what they add is the light film (and
         // with bdpt the kept light vertices and a wider shadow queue).
@@ -437,6 +442,8 @@ int runRenderCommand(const std::vector<std::string>& args) {
                            {"guidingImageSpp", std::to_string(stats.guideFinalSamples)}};
         reportGuiding(verbose, stats, statsContext);
     }
+    if (!spectral.empty())
+        guideAttributes.push_back({"spectral", spectral});
     if (settings.integrator != Integrator::Path) {
         // One light subpath per camera sample: both counts, so that a reader can normalise.
         const uint64_t samples = uint64_t(settings.width) * settings.height * finished.spp;

@@ -173,6 +173,14 @@ std::string renderSettingsKey(const RenderSettings& s, const ParsedArgs& parsed)
                                     : "");
 }
 
+std::string spectralSettingFor(const RenderSettings& s, const std::vector<Material>& materials) {
+    const bool disperses = std::any_of(materials.begin(), materials.end(),
+                                       [](const Material& m) {
+                                           return gpu_types::materialDisperses(m);
+                                       });
+    return disperses ? spectralSamplingName(s.spectral) : "";
+}
+
 // --target-error refuses what would need a sample range it does not have.
 void checkAdaptiveFlags(const ParsedArgs& parsed, const RenderSettings& settings) {
     for (const char* flag : {"--checkpoint", "--resume", "--spp-offset", "--spp-total"})

@@ -21,6 +21,10 @@ std::vector<std::string> parseAovList(const std::string& list);
 // Everything that shapes the image but the seed and the sample range (their own attributes):
 // parts merge only when this agrees (image/render_parts.h).
 std::string renderSettingsKey(const RenderSettings& s, const ParsedArgs& parsed);
+// --spectral, the one setting only scenes with KHR_materials_dispersion read: "hero" or
+// "single" there (renderSettingsKey's " spectral NAME", an EXR attribute, a JSON field), ""
+// in any other scene, whose image it leaves as it is.
+std::string spectralSettingFor(const RenderSettings& s, const std::vector<Material>& materials);
 // --target-error refuses what would need a sample range it does not have.
 void checkAdaptiveFlags(const ParsedArgs& parsed, const RenderSettings& settings);
 

@@ -58,6 +58,10 @@ std::vector<OptionSpec> samplingOptions() {
         {"--vcm-radius", "", "F", "vcm's merging radius at the first sample, as a fraction of "
                                   "the scene's bounding-sphere radius (default 0.01); sample "
                                   "i merges within that times (i + 1)^-1/8"},
+        {"--spectral", "", "MODE", "scenes with KHR_materials_dispersion only: from its first "
+                                   "dispersive vertex on a path carries single (one "
+                                   "wavelength; default) or hero (four, a quarter of the "
+                                   "range apart, weighed by spectral MIS; docs/gltf.md)"},
         {"--light-sampling", "", "MODE", "bsdf (emission found by BSDF rays), nee (light "
                                          "sampling only) or mis (default)"},
         {"--light-selection", "", "MODE", "how NEE picks a light: uniform, power or tree (the "
@@ -251,6 +255,9 @@ void applyRenderFlags(const ParsedArgs& parsed, uint32_t defaultMaxDepth,
         settings.integrator != Integrator::Vcm)
         throw UsageError("--vcm-radius applies to --integrator vcm");
     settings.vcmRadius = parsed.floatValue("--vcm-radius", settings.vcmRadius, 1e-6f, 1.0f);
+    settings.spectral = parseSpectralSampling(
+        parsed.choiceValue("--spectral", spectralSamplingName(settings.spectral),
+                           {"single", "hero"}));
     settings.lightSampling =
         parseLightSampling(parsed.choiceValue("--light-sampling", "mis", {"bsdf", "nee", "mis"}));
     if (parsed.has("--light-selection"))

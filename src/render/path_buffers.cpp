@@ -58,8 +58,9 @@ PathBuffers::PathBuffers(const Context& context, uint32_t pathCapacity, uint32_t
     rayQueues = Buffer(context, "ray queues", uint64_t(pathCapacity) * 2 * 4);
     if (variant.motion)
         rayTime = Buffer(context, "ray times", uint64_t(pathCapacity) * 4);
-    if (variant.dispersion)
-        pathWavelength = Buffer(context, "path wavelengths", uint64_t(pathCapacity) * 4);
+    if (variant.dispersion) // --spectral hero: four lanes of (share, wavelength) per path
+        pathWavelength = Buffer(context, "path wavelengths",
+                                uint64_t(pathCapacity) * (variant.heroWavelengths ? 64 : 4));
     if (variant.shadeKinds != 0) // at most 3 x 4 bytes x 4 M paths: within 128 MiB
         kindQueues =
             Buffer(context, "shade bins", uint64_t(pathCapacity) * variant.shadeBins() * 4);

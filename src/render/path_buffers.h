@@ -56,7 +56,9 @@ struct PathBuffers {
     uint32_t replicates = 1;
     Buffer rayCones;     // WF_RAY_CONES: per path, the ray's cone width and spread (vec2)
     Buffer rayTime;      // WF_MOTION: per path, its time within the shutter (float)
-    Buffer pathWavelength; // WF_HAS_DISPERSION: per path, its wavelength (nm, 0: RGB; float)
+    // WF_HAS_DISPERSION: per path, its wavelength (nm, 0: RGB; float); with WF_SPECTRAL_HERO
+    // its four lanes (vec4 each: share of the throughput, wavelength)
+    Buffer pathWavelength;
     Buffer kindQueues;   // WF_SHADE_BINS: per shade bin, pathCapacity slots of the ray queue
     // Light tracing: per path slot (a pixel in a sample slot of a whole-image wave), the light
     // subpaths' splats in 64-bit fixed point, 24 bytes (bidir/light_film.glsl); zeroed here

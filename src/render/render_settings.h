@@ -46,6 +46,9 @@ struct RenderSettings {
     // --vcm-radius: vcm's merging radius at sample index 0, as a fraction of the scene's
     // bounding-sphere radius; sample index i merges within r (i + 1)^-1/8 (bidir/vcm_grid.glsl).
     float vcmRadius = 0.01f;
+    // --spectral: in scenes with dispersion only, one wavelength per path or four (hero
+    // wavelengths with spectral MIS; shader_variant.h). Another image of the same expectation.
+    SpectralSampling spectral = SpectralSampling::Single;
     LightSampling lightSampling = LightSampling::Mis;
     LightSelection lightSelection = LightSelection::Auto; // --light-selection
     bool triangleSolidAngle = true; // --triangle-sampling solid-angle (else area)

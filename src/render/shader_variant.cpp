@@ -85,6 +85,7 @@ ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& se
                                            m.sheenRoughnessTexture != WF_NO_TEXTURE);
         variant.thicknessTextures |= volume && m.thicknessTexture != WF_NO_TEXTURE;
     }
+    variant.heroWavelengths = variant.dispersion && settings.spectral == SpectralSampling::Hero;
     // The smallest register stack that holds the tree's stack need (bvh_traverse.h).
     const uint32_t need = scene.bvhStats.stackNeed;
     variant.registerStack = !settings.registerStack               ? 0u
@@ -185,6 +186,8 @@ ShaderDefines ShaderVariant::defines() const {
         defines.emplace_back("WF_HAS_DIFFUSE_TRANSMISSION", "1");
     if (dispersion) // defined only then: other scenes keep their shaders and sample numbering
         defines.emplace_back("WF_HAS_DISPERSION", "1");
+    if (dispersion && heroWavelengths)
+        defines.emplace_back("WF_SPECTRAL_HERO", "1");
     if (shadeKinds != 0) {
         defines.push_back({"WF_SHADE_BINS", std::to_string(shadeBins())});
         defines.push_back({"WF_LIGHT_HIT_BIN", std::to_string(lightHitBin(shadeKinds))});
@@ -230,6 +233,18 @@ std::string describeLightSelection(const PreparedScene& scene, const ShaderVaria
         text += detail;
     }
     return text;
+}
+
+SpectralSampling parseSpectralSampling(const std::string& name) {
+    if (name == "single")
+        return SpectralSampling::Single;
+    if (name == "hero")
+        return SpectralSampling::Hero;
+    throw UsageError("--spectral expects single or hero, got '" + name + "'");
+}
+
+const char* spectralSamplingName(SpectralSampling mode) {
+    return mode == SpectralSampling::Hero ? "hero" : "single";
 }
 
 Integrator parseIntegrator(const std::string& name) {

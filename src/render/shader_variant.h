@@ -28,6 +28,14 @@ constexpr bool bidirectional(Integrator integrator) {
     return integrator == Integrator::Bdpt || integrator == Integrator::Vcm;
 }
 
+// --spectral, in scenes with KHR_materials_dispersion only (bsdf/dispersion.h): from its first
+// dispersive vertex on a path carries one wavelength (single) or four, a hero and three a
+// quarter of the range apart, weighed by spectral MIS at dispersive vertices (hero,
+// WF_SPECTRAL_HERO; wave/hero_lanes.glsl). Images of the same expectation.
+enum class SpectralSampling { Single, Hero };
+SpectralSampling parseSpectralSampling(const std::string& name); // UsageError if unknown
+const char* spectralSamplingName(SpectralSampling mode);
+
 // How next-event estimation picks a light (--light-selection): uniformly, by power from one
 // alias table, or by the light tree's importance at the shading point. Auto: the tree where
 // the scene has kLightTreeMinLights or more lights for it, else power.
@@ -61,6 +69,7 @@ struct ShaderVariant {
     // WF_HAS_DISPERSION (defined only then): glass with KHR_materials_dispersion; a path
     // carries one wavelength from its first dispersive vertex on (bsdf/dispersion.h)
     bool dispersion = false;
+    bool heroWavelengths = false;     // WF_SPECTRAL_HERO (defined only then): --spectral hero
     bool volume = false;              // WF_HAS_VOLUME: some transmissive material absorbs
     bool specularTextures = false;    // WF_HAS_SPECULAR_TEXTURES: KHR_materials_specular maps
     // The layers' and volume's textures (issue 48), each only where a material with the layer

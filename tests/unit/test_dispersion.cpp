@@ -1,7 +1,9 @@
 // KHR_materials_dispersion on the CPU (shaders/bsdf/dispersion.h and bsdf.h, exactly as the
 // shade pass runs them): n(lambda) against the spec's formula and its Abbe number, the RGB
 // weights of a wavelength (average (1, 1, 1), finite, the rainbow's order), and refraction
-// through a dispersive slab following Snell with n(lambda) at each wavelength.
+// through a dispersive slab following Snell with n(lambda) at each wavelength; --spectral
+// hero's lanes (one per quarter of the range, each uniform over it, their mean weight white)
+// and the Dirac reflection every lane weighs (bsdfDeltaReflection, bsdfSample's own).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -107,6 +109,58 @@ TEST(Dispersion, SlabRefractsBySnellAtEachWavelength) {
         EXPECT_NEAR(out.wi.y, -wo.y, 1e-5f);
         EXPECT_NEAR(-out.wi.z, -wo.z, 1e-5f);
     }
+}
+
+// --spectral hero: the four lanes of any hero fall one in each quarter of the range, 100 nm
+// apart (wrapped), so each lane is uniform over it as the hero is, and a path's weight, the
+// lanes' mean, averages to white as the single wavelength's does.
+TEST(Dispersion, HeroLanesStratifyTheRange) {
+    const int n = 100000;
+    glm::dvec3 sum(0.0);
+    for (int i = 0; i < n; ++i) {
+        const float hero = sampleWavelength((i + 0.5f) / n);
+        int quarters = 0;
+        vec3 mean(0.0f);
+        for (uint j = 0; j < WF_HERO_LANES; ++j) {
+            const float lambda = heroLaneWavelength(hero, j);
+            ASSERT_GE(lambda, WF_LAMBDA_MIN) << hero << " " << j;
+            ASSERT_LT(lambda, WF_LAMBDA_MAX) << hero << " " << j;
+            quarters |= 1 << int((lambda - WF_LAMBDA_MIN) / 100.0f);
+            const float shift = std::fmod(lambda - hero + 400.0f, 400.0f);
+            ASSERT_NEAR(shift, 100.0f * float(j), 1e-3f) << hero << " " << j;
+            mean += dispersionWeight(lambda) * 0.25f;
+        }
+        ASSERT_EQ(quarters, 15) << hero;
+        sum += glm::dvec3(mean);
+    }
+    EXPECT_EQ(heroLaneWavelength(WF_LAMBDA_MIN, 0), WF_LAMBDA_MIN);
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(sum[c] / n, 1.0, 1e-4) << "channel " << c;
+}
+
+// bsdfDeltaReflection is the Dirac reflection bsdfSample picks, its throughput and chance, at
+// every ior a lane takes, on both sides of the glass (TIR included), and nothing where the
+// surface is rough.
+TEST(Dispersion, DeltaReflectionIsTheSamplesReflection) {
+    for (float lambda : {380.0f, 450.0f, 587.56f, 700.0f})
+        for (float cosine : {0.95f, 0.6f, 0.3f, 0.1f, -0.3f, -0.8f, -0.95f}) {
+            const float n = dispersionIor(1.5f, 5.0f, lambda);
+            BsdfParams glass{vec3(0.9f, 0.8f, 1.0f), 0.0f, 0.0f, n, 1.0f, 1.0f, vec3(1.0f)};
+            const float sine = std::sqrt(1.0f - cosine * cosine);
+            const vec3 wo(sine, 0.0f, cosine);
+            BsdfSample s;
+            ASSERT_TRUE(bsdfSample(glass, wo, 0.0f, vec2(0.5f), s)) << lambda << " " << cosine;
+            ASSERT_TRUE(s.isDelta);
+            ASSERT_GT(s.wi.z * wo.z, 0.0f); // uLobe 0 picks the reflection
+            float probability = -1.0f;
+            const vec3 throughput = bsdfDeltaReflection(glass, wo, probability);
+            EXPECT_NEAR(probability, s.pdf, 1e-6f) << lambda << " " << cosine;
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(throughput[c], s.weight[c] * s.pdf, 1e-6f) << lambda << " " << cosine;
+            glass.roughness = 0.2f;
+            EXPECT_EQ(bsdfDeltaReflection(glass, wo, probability), vec3(0.0f));
+            EXPECT_EQ(probability, 0.0f);
+        }
 }
 
 } // namespace

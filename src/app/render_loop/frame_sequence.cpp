@@ -169,7 +169,9 @@ int runFrameSequence(const ParsedArgs& parsed, const RenderRequest& request) {
         part.height = int(settings.height);
         part.scene = scenePath;
         part.sceneHash = sceneHash;
-        part.renderSettings = renderSettingsKey(settings, parsed) + " frame " +
+        const std::string spectral = spectralSettingFor(settings, prepared.materials);
+        part.renderSettings = renderSettingsKey(settings, parsed) +
+                              (spectral.empty() ? "" : " spectral " + spectral) + " frame " +
                               std::to_string(frame) + " fps " + std::to_string(fps);
         part.sampler = samplerName(settings.sampler);
         part.seed = int(settings.seed);
