@@ -134,6 +134,9 @@ TEST(Dispersion, HeroLanesStratifyTheRange) {
         sum += glm::dvec3(mean);
     }
     EXPECT_EQ(heroLaneWavelength(WF_LAMBDA_MIN, 0), WF_LAMBDA_MIN);
+    for (float hero : {380.0f, 480.0f, 580.0f, 680.0f}) // lanes that land on 780 exactly wrap
+        for (uint j = 0; j < WF_HERO_LANES; ++j)
+            EXPECT_LT(heroLaneWavelength(hero, j), WF_LAMBDA_MAX) << hero << " " << j;
     for (int c = 0; c < 3; ++c)
         EXPECT_NEAR(sum[c] / n, 1.0, 1e-4) << "channel " << c;
 }
