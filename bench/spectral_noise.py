@@ -12,7 +12,7 @@ over the pixels:
     luminance noise = mean(Var(Y) / (Ybar^2 + eps)),
     colour noise    = mean((Var(r - Y) + Var(b - Y)) / (Ybar^2 + eps)).
 Both scale as 1 / spp for an unbiased render, so "at equal time" multiplies each by the
-render's seconds (mean over seeds; the ratio single / hero of noise x seconds is hero's
+render's seconds (mean over seeds, after an untimed render that compiles the shaders; the ratio single / hero of noise x seconds is hero's
 efficiency gain). Prints a markdown table.
 """
 import argparse
@@ -50,6 +50,9 @@ def main():
         rows = {}
         for mode in ("single", "hero"):
             images, seconds = [], []
+            # Untimed first: the shaders compile on a mode's first render.
+            renderer.render(scene, spp=1, width=args.width, max_depth=args.max_depth,
+                            spectral=mode)
             for seed in range(1, args.seeds + 1):
                 out = renderer.render(scene, spp=args.spp, width=args.width, seed=seed,
                                       max_depth=args.max_depth, spectral=mode)
