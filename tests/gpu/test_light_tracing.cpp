@@ -280,7 +280,7 @@ TEST(Vcm, MergesCarryAFloorUnderAnEnvironment) {
     scene.environment = rowEnvironment(1, 1, nullptr);
     scene.environment.rgb = {0.25f, 0.25f, 0.25f};
     const double expected = lambertRadiance(albedo, M_PI * 0.25);
-    for (float radius : {0.01f, 0.05f, 0.2f}) { // 0.01: most queries under the roulette
+    for (float radius : {0.01f, 0.05f, 0.2f}) { // 0.01: the default
         std::vector<double> means;
         for (uint32_t seed = 0; seed < 8; ++seed) {
             RenderSettings settings = settingsFor(Integrator::Vcm, 64, 20 + seed);
