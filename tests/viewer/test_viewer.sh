@@ -124,6 +124,15 @@ run "render-bdpt" 0 "$wavefront" render "$cornell" "${common[@]}" --integrator b
 check "bdpt view matches bdpt render" "$compare" "$work/view-bdpt.exr" "$work/render-bdpt.exr" \
     --spp 8
 
+# Hero wavelengths (--spectral hero) through the rough dispersive prism: render's image.
+run "view-hero" 0 "$wavefront" view "$scenes/prism_rough.gltf" "${common[@]}" "${slow[@]}" \
+    --spectral hero --width 64 --height 48 --until-done --no-overlay \
+    --screenshot "$work/view-hero.exr"
+run "render-hero" 0 "$wavefront" render "$scenes/prism_rough.gltf" "${common[@]}" \
+    --spectral hero --width 64 --height 48 -o "$work/render-hero.exr" --quiet
+check "hero view matches hero render" "$compare" "$work/view-hero.exr" \
+    "$work/render-hero.exr" --spp 8
+
 # A finite-set sampler: the viewer's set is its --spp, as render's is.
 run "view-stratified" 0 "$wavefront" view "$cornell" "${common[@]}" "${slow[@]}" \
     --sampler stratified \
