@@ -42,28 +42,18 @@ LightFilmSum vcmMerge(BdptCameraVertex c, uint path, uint depth, uint wavePixels
     uint firstPath = path / wavePixels * wavePixels; // the first path of its sample slot
     uint lastSlot = (params.maxDepth - depth - 1u) * params.pathCapacity;
     ivec3 low = vcmCell(c.p - vec3(radius), 2.0 * radius);
-    // The 8 cells' buckets in two vectors, not an array: a dynamically indexed array lives
-    // in memory on lavapipe, a vector's lanes in registers.
-    uint si = c.sampleIndex;
-    uvec4 lowBuckets = uvec4(vcmBucket(low, si), vcmBucket(low + ivec3(1, 0, 0), si),
-                             vcmBucket(low + ivec3(0, 1, 0), si),
-                             vcmBucket(low + ivec3(1, 1, 0), si));
-    uvec4 highBuckets = uvec4(vcmBucket(low + ivec3(0, 0, 1), si),
-                              vcmBucket(low + ivec3(1, 0, 1), si),
-                              vcmBucket(low + ivec3(0, 1, 1), si),
-                              vcmBucket(low + ivec3(1, 1, 1), si));
+    uint visited[8];
+    uint visitedCount = 0u;
     for (uint corner = 0u; corner < 8u; ++corner) {
-        uint bucket = corner < 4u ? lowBuckets[corner] : highBuckets[corner - 4u];
+        ivec3 cell = low + ivec3(corner & 1u, (corner >> 1u) & 1u, corner >> 2u);
+        uint bucket = vcmBucket(cell, c.sampleIndex);
         // Two cells may share a bucket: read each list once, or its photons count twice.
-        bvec4 earlierLow = lessThan(uvec4(0u, 1u, 2u, 3u), uvec4(corner));
-        bvec4 earlierHigh = lessThan(uvec4(4u, 5u, 6u, 7u), uvec4(corner));
-        bvec4 sameLow = equal(lowBuckets, uvec4(bucket));
-        bvec4 sameHigh = equal(highBuckets, uvec4(bucket));
-        if (any(bvec4(sameLow.x && earlierLow.x, sameLow.y && earlierLow.y,
-                      sameLow.z && earlierLow.z, sameLow.w && earlierLow.w)) ||
-            any(bvec4(sameHigh.x && earlierHigh.x, sameHigh.y && earlierHigh.y,
-                      sameHigh.z && earlierHigh.z, sameHigh.w && earlierHigh.w)))
+        bool seen = false;
+        for (uint i = 0u; i < visitedCount; ++i)
+            seen = seen || visited[i] == bucket;
+        if (seen)
             continue;
+        visited[visitedCount++] = bucket;
         for (uint slot = mergeLists[bucket]; slot != WF_VCM_END;
              slot = mergeLists[params.mergeCells + slot]) {
             vec4 position = lightVertexPositions[slot];
