@@ -21,7 +21,13 @@ same triangles in world space, each material as the Mitsuba BSDF that is the sam
 light's emission on its front face only, the same camera) with a box pixel filter. Each
 renderer's relMSE is measured against its own high-spp reference (so a
 small systematic difference between the two does not count as noise); the two references'
-relMSE against each other is printed as a check that the scenes match.
+relMSE against each other is printed as a check that the scenes match. Each reference is the
+mean of two independent halves (two seeds), whose difference measures the reference's own
+noise: (a - b)^2 / 4 per pixel is an unbiased estimate of the mean's variance, and a timed
+render's squared error against a noisy reference exceeds its error against the truth by just
+that variance (the two are independent). The tables print both relMSE figures, the raw one
+and the one with the reference's noise taken off, and the efficiencies of both; the raw one
+charges the reference's noise to whichever renderer is closer to the truth.
 
 A third row times Wavefront with Mitsuba's own estimator (`--sampler independent
 --triangle-sampling area`: independent random numbers, the light sampled by area, as Mitsuba's
@@ -217,6 +223,24 @@ def rel_mse(image, reference):
     return float(np.mean((image - reference) ** 2 / (reference ** 2 + 1e-2)))
 
 
+class Reference:
+    """A reference image from two independent halves, and the relMSE its own noise adds to any
+    independent image's relMSE against it: (a - b)^2 / 4 per pixel estimates the variance of
+    their mean without bias, weighed as rel_mse weighs a squared error."""
+
+    def __init__(self, half_a, half_b):
+        self.image = 0.5 * (half_a + half_b)
+        self.noise = float(np.mean((half_a - half_b) ** 2 / 4.0 / (self.image ** 2 + 1e-2)))
+
+
+def render_reference(render_half, spp, seed):
+    """Two halves of spp / 2 samples with seeds seed and seed + 500, and their Reference."""
+    half_spp = max(1, spp // 2)
+    a = render_half(half_spp, seed)
+    b = render_half(half_spp, seed + 500)
+    return Reference(a, b)
+
+
 def bench_ratio(exe, gltf, folder, width, height, spp, max_depth):
     out = os.path.join(folder, "bench.json")
     subprocess.run([exe, "bench", gltf, "--width",
@@ -271,16 +295,18 @@ def main():
         ref_seed = 1000
         # A first render compiles the JIT variants' kernels; a new seed does not recompile.
         render_mitsuba(mi, gltf, folder, w, h, 4, depth, args.rr_depth + 1, ref_seed + 1)
-        mi_ref, mi_ref_s = render_mitsuba(mi, gltf, folder, w, h, args.reference_spp, depth,
-                                          args.rr_depth + 1, ref_seed)
+        mi_ref = render_reference(
+            lambda n, seed: render_mitsuba(mi, gltf, folder, w, h, n, depth, args.rr_depth + 1,
+                                           seed)[0], args.reference_spp, ref_seed)
         # With the timed row's integrator: the same expectation as the path tracer's, and on
         # scenes of specular chains far less noise at the same samples.
         # vcm's own reference would carry its bias: bdpt's is unbiased.
         ref_integrator = "bdpt" if args.integrator == "vcm" else args.integrator
-        wf_ref, wf_ref_s = render_wavefront(mi, args.wavefront, gltf, folder, w, h,
-                                            args.reference_spp, depth, args.rr_depth,
-                                            "reference", ref_seed, args.sampler,
-                                            flags=["--integrator", ref_integrator])
+        wf_ref = render_reference(
+            lambda n, seed: render_wavefront(mi, args.wavefront, gltf, folder, w, h, n, depth,
+                                             args.rr_depth, "reference", seed, args.sampler,
+                                             flags=["--integrator", ref_integrator])[0],
+            args.reference_spp, ref_seed)
         # Timed renders alternate between the two, each with its own seed, so that a drift in
         # the machine's speed (other tenants) falls on both; times are medians, errors means.
         mi_runs, wf_runs, matched_runs, ptracer_runs = [], [], [], []
@@ -289,8 +315,10 @@ def main():
                            "ptracer")
             # Its own reference: a light tracer leaves Dirac surfaces seen directly black, so
             # its expectation is not the path tracer's.
-            ptracer_ref, _ = render_mitsuba(mi, gltf, folder, w, h, args.reference_spp, depth,
-                                            args.rr_depth + 1, ref_seed, "ptracer")
+            ptracer_ref = render_reference(
+                lambda n, seed: render_mitsuba(mi, gltf, folder, w, h, n, depth,
+                                               args.rr_depth + 1, seed, "ptracer")[0],
+                args.reference_spp, ref_seed)
         for seed in range(args.repeats):
             if args.integrator == "light":
                 ptracer_runs.append(render_mitsuba(mi, gltf, folder, w, h, spp, depth,
@@ -316,38 +344,49 @@ def main():
         timed.append((mitsuba_name + " ptracer", ptracer_runs, ptracer_ref))
     for name, runs, ref in timed:
         seconds = float(np.median([run[1] for run in runs]))
-        err = (float(np.mean([rel_mse(run[0], ref) for run in runs])) if ref is not None
+        err = (float(np.mean([rel_mse(run[0], ref.image) for run in runs])) if ref is not None
                else float("nan"))
+        noise = ref.noise if ref is not None else float("nan")
+        # Not positive where the reference is noisier than the timed image can show: no figure.
+        clean = err - noise if err > noise else float("nan")
         rows[name] = {"seconds": seconds, "pathsPerSecond": paths / seconds, "relMSE": err,
-                      "relMSETimesSeconds": err * seconds,
+                      "relMSETimesSeconds": err * seconds, "referenceNoise": noise,
+                      "relMSEReferenceNoiseRemoved": clean,
+                      "relMSEReferenceNoiseRemovedTimesSeconds": clean * seconds,
                       "imageMean": float(np.mean([run[0].mean() for run in runs])),
                       "runSeconds": [run[1] for run in runs]}
     ratio = rows["Wavefront"]["pathsPerSecond"] / rows[mitsuba_name]["pathsPerSecond"]
     efficiency = (rows[mitsuba_name]["relMSETimesSeconds"] /
                   rows["Wavefront"]["relMSETimesSeconds"])
+    clean_key = "relMSEReferenceNoiseRemovedTimesSeconds"
+    efficiency_clean = rows[mitsuba_name][clean_key] / rows["Wavefront"][clean_key]
     matched = rows[matched_name]["pathsPerSecond"] / rows[mitsuba_name]["pathsPerSecond"]
     print("%s %dx%d, %d spp, max depth %d; references %d spp; %d alternating timed renders "
           "each (median seconds, mean relMSE); Wavefront guiding %s, integrator %s" % (
               args.scene, w, h, spp, depth, args.reference_spp, args.repeats, args.guiding,
               args.integrator))
-    print("| renderer | seconds | paths/s | relMSE | relMSE x seconds | image mean |")
-    print("|---|---|---|---|---|---|")
+    print("| renderer | seconds | paths/s | relMSE | its reference's noise | relMSE less it | "
+          "relMSE x seconds | the same less the noise | image mean |")
+    print("|---|---|---|---|---|---|---|---|---|")
     for name, r in rows.items():
-        print("| %s | %.2f | %.3f M | %.4g | %.4g | %.4f |" % (
-            name, r["seconds"], r["pathsPerSecond"] / 1e6, r["relMSE"],
-            r["relMSETimesSeconds"], r["imageMean"]))
-    check = rel_mse(wf_ref, mi_ref)
+        print("| %s | %.2f | %.3f M | %.4g | %.3g | %.4g | %.4g | %.4g | %.4f |" % (
+            name, r["seconds"], r["pathsPerSecond"] / 1e6, r["relMSE"], r["referenceNoise"],
+            r["relMSEReferenceNoiseRemoved"], r["relMSETimesSeconds"], r[clean_key],
+            r["imageMean"]))
+    check = rel_mse(wf_ref.image, mi_ref.image)
     print("references: relMSE of Wavefront's against Mitsuba's %.4g (means %.4f vs %.4f)" % (
-        check, wf_ref.mean(), mi_ref.mean()))
-    print("Wavefront / Mitsuba: %.3f paths/s, %.3f efficiency (1 / relMSE x time)" % (
-        ratio, efficiency))
+        check, wf_ref.image.mean(), mi_ref.image.mean()))
+    print("Wavefront / Mitsuba: %.3f paths/s, %.3f efficiency (1 / relMSE x time), %.3f with "
+          "the references' noise taken off" % (ratio, efficiency, efficiency_clean))
     print("Wavefront with Mitsuba's estimator / Mitsuba: %.3f paths/s" % matched)
     print("wavefront / megakernel (bench, same run): %.3f" % bench["wavefrontOverMegakernel"])
-    ptracer_efficiency = None
+    ptracer_efficiency = ptracer_efficiency_clean = None
     if ptracer_runs:
         ptracer = rows[mitsuba_name + " ptracer"]
         ptracer_efficiency = ptracer["relMSETimesSeconds"] / rows["Wavefront"]["relMSETimesSeconds"]
-        print("Wavefront light / Mitsuba ptracer: %.3f efficiency" % ptracer_efficiency)
+        ptracer_efficiency_clean = ptracer[clean_key] / rows["Wavefront"][clean_key]
+        print("Wavefront light / Mitsuba ptracer: %.3f efficiency, %.3f with the references' "
+              "noise taken off" % (ptracer_efficiency, ptracer_efficiency_clean))
     if args.json:
         with open(args.json, "w") as f:
             json.dump({"mitsubaVariant": args.variant, "scene": args.scene,
@@ -357,9 +396,12 @@ def main():
                        "wavefrontGuiding": args.guiding,
                        "wavefrontIntegrator": args.integrator,
                        "wavefrontOverPtracerEfficiency": ptracer_efficiency,
+                       "wavefrontOverPtracerEfficiencyReferenceNoiseRemoved":
+                           ptracer_efficiency_clean,
                        "renderers": rows,
                        "referencesRelMSE": check, "wavefrontOverMitsubaPathsPerSecond": ratio,
                        "wavefrontOverMitsubaEfficiency": efficiency,
+                       "wavefrontOverMitsubaEfficiencyReferenceNoiseRemoved": efficiency_clean,
                        "wavefrontMatchedOverMitsubaPathsPerSecond": matched,
                        "wavefrontMatchedFlags": MITSUBA_ESTIMATOR,
                        "wavefrontOverMegakernel": bench["wavefrontOverMegakernel"],
