@@ -10,6 +10,7 @@ needs `pip install mitsuba` (into a virtual environment of your own, not the pro
         [--scene cornell|mirror-glass|mesh|tiny-light|lamps|instances|glass-caustic] [--wavefront build/wavefront] [--width 256]
         [--spp 64] [--max-depth 8] [--reference-spp 512] [--repeats 3] [--sampler NAME]
         [--guiding on|off] [--integrator path|light|bdpt|vcm] [--json bench/results/peer.json]
+    python3 bench/mitsuba_peer.py --self-test   # the reference-noise correction, numpy only
 
 `llvm_ad_rgb` (Dr.Jit's LLVM JIT, vectorised: what a CPU user would pick) needs an LLVM that
 Dr.Jit can drive: on Debian 12 `apt install libllvm19`; the script points DRJIT_LIBLLVM_PATH at
@@ -233,6 +234,27 @@ class Reference:
         self.noise = float(np.mean((half_a - half_b) ** 2 / 4.0 / (self.image ** 2 + 1e-2)))
 
 
+def self_test():
+    """Reference's noise term on synthetic images of known truth: the timed images' relMSE
+    with it taken off must match their relMSE against the truth, and the raw one must not."""
+    rng = np.random.default_rng(7)
+    truth = rng.uniform(0.05, 2.0, size=(128, 128, 3))
+    half_sd, image_sd = 0.06 * truth, 0.08 * truth  # each half's noise and a timed image's
+    reference = Reference(truth + rng.normal(0.0, 1.0, truth.shape) * half_sd,
+                          truth + rng.normal(0.0, 1.0, truth.shape) * half_sd)
+    images = [truth + rng.normal(0.0, 1.0, truth.shape) * image_sd for _ in range(4)]
+    raw = np.mean([rel_mse(image, reference.image) for image in images])
+    against_truth = np.mean([np.mean((image - truth) ** 2 / (reference.image ** 2 + 1e-2))
+                             for image in images])
+    cleaned = raw - reference.noise
+    print("self-test: relMSE against the truth %.5g, raw %.5g, less the reference's noise %.5g"
+          % (against_truth, raw, cleaned))
+    if abs(cleaned / against_truth - 1.0) > 0.03 or raw / against_truth - 1.0 < 0.2:
+        print("self-test FAILED", file=sys.stderr)
+        return 1
+    return 0
+
+
 def render_reference(render_half, spp, seed):
     """Two halves of spp / 2 samples with seeds seed and seed + 500, and their Reference."""
     half_spp = max(1, spp // 2)
@@ -271,6 +293,9 @@ def main():
     parser.add_argument("--repeats", type=int, default=3,
                         help="timed renders of each, alternating (median time, mean relMSE)")
     parser.add_argument("--json", help="write the numbers here")
+    parser.add_argument("--self-test", action="store_true",
+                        help="check the reference-noise correction on synthetic images and exit "
+                             "(needs numpy only)")
     parser.add_argument("--scene", default="cornell", choices=SCENES,
                         help="; ".join("%s: %s" % kind for kind in SCENE_KINDS.items()) +
                         " (default cornell)")
@@ -279,6 +304,8 @@ def main():
                         help="Mitsuba's variant (default scalar_rgb; llvm_ad_rgb is the fast one "
                              "on a CPU, cuda_ad_rgb on an NVIDIA GPU)")
     args = parser.parse_args()
+    if args.self_test:
+        sys.exit(self_test())
 
     if args.variant == "llvm_ad_rgb" and "DRJIT_LIBLLVM_PATH" not in os.environ:
         llvm = find_libllvm19()
