@@ -14,6 +14,7 @@
 #include "app/render_options.h"
 #include "errors.h"
 #include "gpu/context.h"
+#include "image/error_metrics.h"
 #include "image/exr_io.h"
 #include "render/convergence_summary.h"
 #include "render/gpu_scene/scene_buffers.h"
@@ -42,7 +43,9 @@ const CommandSpec& convergeSpec() {
                 {"--output", "-o", "DIR", "output folder (required; created if missing)"},
                 {"--reference", "", "REF.exr", "reference image (default: rendered first with the "
                                                "default method, saved as DIR/reference.exr)"},
-                {"--reference-spp", "", "N", "samples per pixel of that reference (default 4096)"},
+                {"--reference-spp", "", "N", "samples per pixel of that reference (default 4096), "
+                                            "two halves of two seeds whose difference "
+                                            "measures the relMSE its own noise adds"},
                 {"--time", "", "T", "render seconds per method and seed: samples double until a "
                                     "checkpoint passes T (default 4)"},
                 {"--methods", "", "LIST", "comma-separated methods, each words joined by '+': a "
@@ -222,11 +225,32 @@ int runConvergeCommand(const std::vector<std::string>& args) {
                                     : integratorName(settings.integrator));
         info.referenceSpp = referenceSpp;
         std::fprintf(stderr, "wavefront: no --reference: rendering one with Wavefront itself, "
-                     "%s at %u spp (seed %u), saved as %s\n", info.referenceMethod.c_str(),
-                     referenceSpp, settings.seed, info.reference.c_str());
-        WavefrontRenderer renderer(context, prepared, settings, compiler);
-        renderer.render();
-        reference = renderer.readImage();
+                     "%s at %u spp (seeds %u and %u), saved as %s\n",
+                     info.referenceMethod.c_str(), referenceSpp, settings.seed,
+                     settings.seed + 1, info.reference.c_str());
+        // Two independent halves (two seeds): their difference measures the reference's own
+        // noise, which every relMSE against it includes (info.referenceNoise).
+        const uint32_t halfSpp[2] = {referenceSpp / 2, referenceSpp - referenceSpp / 2};
+        std::vector<float> halves[2];
+        const uint32_t firstSeed = settings.seed;
+        for (int h = 0; h < 2; ++h) {
+            if (halfSpp[h] == 0)
+                continue;
+            settings.samplesPerPixel = halfSpp[h];
+            settings.seed = firstSeed + uint32_t(h);
+            WavefrontRenderer renderer(context, prepared, settings, compiler);
+            renderer.render();
+            halves[h] = renderer.readImage();
+        }
+        settings.seed = firstSeed;
+        if (halfSpp[0] == 0) {
+            reference = std::move(halves[1]); // one sample: no noise estimate
+        } else {
+            reference = mergeBySampleCount({halves[0], halves[1]},
+                                           {double(halfSpp[0]), double(halfSpp[1])});
+            info.referenceNoise = referenceNoiseRelMse(halves[0], halfSpp[0], halves[1],
+                                                       halfSpp[1], reference);
+        }
         writeExr(info.reference, int(base.width), int(base.height), reference,
                  {{"software", "Wavefront"}, {"scene", scenePath},
                   {"sampler", samplerName(settings.sampler)}},
@@ -256,6 +280,10 @@ int runConvergeCommand(const std::vector<std::string>& args) {
     writeConvergenceJson((fs::path(*dir) / "convergence.json").string(), info, runs, summaries,
                          crops);
     std::fputs(rankingText(summaries, info.target).c_str(), stdout);
+    if (std::isfinite(info.referenceNoise))
+        std::printf("the reference's own noise adds relMSE %.3g to each figure above "
+                    "(convergence.json: relMseLessReferenceNoise takes it off)\n",
+                    info.referenceNoise);
     if (!parsed.has("--no-plot"))
         plotCharts(*dir);
     if (context.validationMessageCount() > 0) {

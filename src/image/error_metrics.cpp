@@ -28,6 +28,26 @@ ImageError imageError(const std::vector<float>& image, const std::vector<float>&
     return error;
 }
 
+double referenceNoiseRelMse(const std::vector<float>& a, double samplesA,
+                            const std::vector<float>& b, double samplesB,
+                            const std::vector<float>& reference) {
+    if (a.size() != reference.size() || b.size() != reference.size() || reference.empty() ||
+        !(samplesA > 0.0) || !(samplesB > 0.0))
+        throw InternalError("reference noise: two halves of the reference's size and samples "
+                            "needed");
+    // E[(a - b)^2] = s^2 (1 / nA + 1 / nB) for per-sample variance s^2; the mean's is
+    // s^2 / (nA + nB).
+    const double scale = samplesA * samplesB / ((samplesA + samplesB) * (samplesA + samplesB));
+    double sum = 0.0;
+    for (size_t i = 0; i < reference.size(); ++i) {
+        const double r = reference[i];
+        const double d = double(a[i]) - double(b[i]);
+        if (std::isfinite(d))
+            sum += d * d * scale / (r * r + kRelMseEpsilon);
+    }
+    return sum / double(reference.size());
+}
+
 std::vector<float> mergeBySampleCount(const std::vector<std::vector<float>>& images,
                                       const std::vector<double>& samplesPerPixel) {
     if (images.empty() || images.size() != samplesPerPixel.size())

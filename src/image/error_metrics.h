@@ -19,6 +19,15 @@ struct ImageError {
 // the sizes differ or are zero.
 ImageError imageError(const std::vector<float>& image, const std::vector<float>& reference);
 
+// What a reference's own noise adds to the relMSE of any image independent of it, estimated
+// without bias from two independent renders a and b of nA and nB samples per pixel whose
+// sample-weighted mean is the reference: per value (a - b)^2 nA nB / (nA + nB)^2 (the variance
+// of that mean), over reference^2 + epsilon as relMse weighs it. An image's relMSE against the
+// truth is its relMSE against the reference less this. Throws InternalError on mismatched sizes.
+double referenceNoiseRelMse(const std::vector<float>& a, double samplesA,
+                            const std::vector<float>& b, double samplesB,
+                            const std::vector<float>& reference);
+
 // The sample-weighted mean of partial renders (--spp-offset parts): sum of spp_i * image_i over
 // the sum of spp_i. How partial renders merge into the image of one run of all their samples.
 std::vector<float> mergeBySampleCount(const std::vector<std::vector<float>>& images,

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
+#include <utility>
 
 #include "errors.h"
 #include "image/error_metrics.h"
@@ -25,6 +27,42 @@ TEST(ErrorMetrics, PartsMergeBySampleCount) {
     const std::vector<float> merged = mergeBySampleCount({{1.0f, 4.0f}, {4.0f, 1.0f}}, {1, 2});
     EXPECT_FLOAT_EQ(merged[0], 3.0f);
     EXPECT_FLOAT_EQ(merged[1], 2.0f);
+}
+
+// Synthetic renders of a known truth: each value's sample mean has variance sd^2 / spp. The
+// reference's noise term must make an independent image's relMSE against the reference that
+// against the truth, for halves of equal and of unequal sample counts.
+TEST(ErrorMetrics, ReferenceNoiseIsWhatTheReferenceAddsToRelMse) {
+    std::mt19937 rng(11);
+    std::normal_distribution<double> normal(0.0, 1.0);
+    std::uniform_real_distribution<double> value(0.05, 2.0);
+    const size_t n = 200000;
+    std::vector<double> truth(n);
+    for (double& t : truth)
+        t = value(rng);
+    auto render = [&](double spp) {
+        std::vector<float> image(n);
+        for (size_t i = 0; i < n; ++i)
+            image[i] = float(truth[i] + 0.5 * truth[i] / std::sqrt(spp) * normal(rng));
+        return image;
+    };
+    for (const auto [sppA, sppB] : {std::pair{64.0, 64.0}, std::pair{32.0, 96.0}}) {
+        const std::vector<float> a = render(sppA), b = render(sppB);
+        const std::vector<float> reference =
+            mergeBySampleCount({a, b}, {sppA, sppB});
+        const std::vector<float> image = render(32.0); // a quarter of the reference's samples
+        double againstTruth = 0.0;
+        for (size_t i = 0; i < n; ++i) {
+            const double d = double(image[i]) - truth[i];
+            againstTruth += d * d / (double(reference[i]) * reference[i] + kRelMseEpsilon);
+        }
+        againstTruth /= double(n);
+        const double raw = imageError(image, reference).relMse;
+        const double noise = referenceNoiseRelMse(a, sppA, b, sppB, reference);
+        EXPECT_GT(raw - againstTruth, 0.15 * againstTruth) << "the reference's noise shows";
+        EXPECT_NEAR(raw - noise, againstTruth, 0.02 * againstTruth) << sppA << " + " << sppB;
+    }
+    EXPECT_THROW(referenceNoiseRelMse({1.0f}, 1.0, {1.0f, 2.0f}, 1.0, {1.0f}), InternalError);
 }
 
 TEST(ConvergenceSummary, QuantilesAndSlopes) {

@@ -117,14 +117,18 @@ void writeConvergenceJson(const std::string& path, const ConvergenceInfo& info,
       << jsonArray(seeds) << ",\n  \"timeBudgetSeconds\": " << jsonNumber(info.timeBudget)
       << ",\n  \"reference\": {\"file\": " << jsonQuoted(info.reference)
       << ", \"method\": " << jsonQuoted(info.referenceMethod) << ", \"spp\": "
-      << info.referenceSpp << "},\n  \"relMseEpsilon\": " << jsonNumber(kRelMseEpsilon)
+      << info.referenceSpp << ", \"noiseRelMse\": " << jsonNumber(info.referenceNoise)
+      << "},\n  \"relMseEpsilon\": " << jsonNumber(kRelMseEpsilon)
       << ",\n  \"target\": " << jsonNumber(info.target) << ",\n  \"methods\": [\n";
     for (size_t m = 0; m < summaries.size(); ++m) {
         const MethodSummary& s = summaries[m];
-        std::vector<double> spp, gpu, wall, rel, low, high, mse, bias, estimated, reliable;
+        std::vector<double> spp, gpu, wall, rel, lessNoise, low, high, mse, bias, estimated,
+            reliable;
         for (const CheckpointSummary& p : s.points) {
             spp.push_back(p.spp), gpu.push_back(p.gpuSeconds), wall.push_back(p.wallSeconds);
             rel.push_back(p.relMse), low.push_back(p.relMseLow), high.push_back(p.relMseHigh);
+            // The median less a constant is the median of the figures less it.
+            lessNoise.push_back(p.relMse - info.referenceNoise);
             mse.push_back(p.mse), bias.push_back(p.bias);
             estimated.push_back(p.estimatedRelMse), reliable.push_back(p.estimateReliable);
         }
@@ -134,7 +138,8 @@ void writeConvergenceJson(const std::string& path, const ConvergenceInfo& info,
           << jsonQuoted(integratorName(runs[m].method.integrator))
           << ",\n     \"spp\": " << jsonArray(spp) << ",\n     \"gpuSeconds\": " << jsonArray(gpu)
           << ",\n     \"wallSeconds\": " << jsonArray(wall) << ",\n     \"relMse\": "
-          << jsonArray(rel) << ",\n     \"relMseQ1\": " << jsonArray(low)
+          << jsonArray(rel) << ",\n     \"relMseLessReferenceNoise\": " << jsonArray(lessNoise)
+          << ",\n     \"relMseQ1\": " << jsonArray(low)
           << ",\n     \"relMseQ3\": " << jsonArray(high) << ",\n     \"mse\": " << jsonArray(mse)
           << ",\n     \"bias\": " << jsonArray(bias) << ",\n     \"estimatedRelMse\": "
           << jsonArray(estimated) << ",\n     \"estimateReliable\": " << jsonArray(reliable)

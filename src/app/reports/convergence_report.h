@@ -2,6 +2,7 @@
 // checkpoint), convergence.json (the run, per-checkpoint medians and quartiles, slopes, the
 // ranking), equal-time crops, and the ranking as printed text.
 #pragma once
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,9 @@ struct ConvergenceInfo {
     std::string reference;        // the reference's path
     std::string referenceMethod;  // how Wavefront rendered it, or "given"
     uint32_t referenceSpp = 0;    // 0 when given
+    // The relMSE the reference's own noise adds to every figure against it (error_metrics.h's
+    // referenceNoiseRelMse of its two halves); NaN when unknown (a given reference).
+    double referenceNoise = std::numeric_limits<double>::quiet_NaN();
     double target = 0.0;          // relMSE of the ranking
     int crop[4] = {0, 0, 0, 0};   // x, y, width, height of the equal-time crops
 };
