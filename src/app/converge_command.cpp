@@ -140,6 +140,31 @@ void parseCrop(const ParsedArgs& parsed, ConvergenceInfo& info) {
     std::copy(crop, crop + 4, info.crop);
 }
 
+// The reference: the sample-weighted mean of two independent halves of settings' samples
+// (seeds settings.seed and settings.seed + 1), whose difference measures the relMSE its own
+// noise adds to every figure against it (`noise`; left as it is for a single sample).
+std::vector<float> renderReference(const Context& context, const PreparedScene& prepared,
+                                   const ShaderCompiler& compiler, const RenderSettings& settings,
+                                   double& noise) {
+    auto render = [&](uint32_t spp, uint32_t seed) {
+        RenderSettings half = settings;
+        half.samplesPerPixel = spp;
+        half.seed = seed;
+        WavefrontRenderer renderer(context, prepared, half, compiler);
+        renderer.render();
+        return renderer.readImage();
+    };
+    const uint32_t sppA = settings.samplesPerPixel / 2;
+    const uint32_t sppB = settings.samplesPerPixel - sppA;
+    if (sppA == 0)
+        return render(sppB, settings.seed);
+    const std::vector<float> a = render(sppA, settings.seed);
+    const std::vector<float> b = render(sppB, settings.seed + 1);
+    std::vector<float> reference = mergeBySampleCount({a, b}, {double(sppA), double(sppB)});
+    noise = referenceNoiseRelMse(a, sppA, b, sppB, reference);
+    return reference;
+}
+
 } // namespace
 
 std::string convergeHelp() { return helpText(convergeSpec()); }
@@ -228,29 +253,7 @@ int runConvergeCommand(const std::vector<std::string>& args) {
                      "%s at %u spp (seeds %u and %u), saved as %s\n",
                      info.referenceMethod.c_str(), referenceSpp, settings.seed,
                      settings.seed + 1, info.reference.c_str());
-        // Two independent halves (two seeds): their difference measures the reference's own
-        // noise, which every relMSE against it includes (info.referenceNoise).
-        const uint32_t halfSpp[2] = {referenceSpp / 2, referenceSpp - referenceSpp / 2};
-        std::vector<float> halves[2];
-        const uint32_t firstSeed = settings.seed;
-        for (int h = 0; h < 2; ++h) {
-            if (halfSpp[h] == 0)
-                continue;
-            settings.samplesPerPixel = halfSpp[h];
-            settings.seed = firstSeed + uint32_t(h);
-            WavefrontRenderer renderer(context, prepared, settings, compiler);
-            renderer.render();
-            halves[h] = renderer.readImage();
-        }
-        settings.seed = firstSeed;
-        if (halfSpp[0] == 0) {
-            reference = std::move(halves[1]); // one sample: no noise estimate
-        } else {
-            reference = mergeBySampleCount({halves[0], halves[1]},
-                                           {double(halfSpp[0]), double(halfSpp[1])});
-            info.referenceNoise = referenceNoiseRelMse(halves[0], halfSpp[0], halves[1],
-                                                       halfSpp[1], reference);
-        }
+        reference = renderReference(context, prepared, compiler, settings, info.referenceNoise);
         writeExr(info.reference, int(base.width), int(base.height), reference,
                  {{"software", "Wavefront"}, {"scene", scenePath},
                   {"sampler", samplerName(settings.sampler)}},
