@@ -54,8 +54,11 @@ using test::Document;
 using test::encodeVertices;
 using test::meshoptView;
 
+// A folder per test: ctest runs these tests as parallel processes, and every test writes its
+// own original.glb (one shared folder let one test read another's half-written file).
 std::string tempFile(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / "wf_test_gltf_compression";
+    const fs::path dir = fs::temp_directory_path() / "wf_test_gltf_compression" /
+                         ::testing::UnitTest::GetInstance()->current_test_info()->name();
     fs::create_directories(dir);
     return (dir / name).string();
 }
