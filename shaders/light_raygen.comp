@@ -1,6 +1,7 @@
 #version 460
-// light_raygen (--integrator light, bdpt): the first ray of one light subpath per path of the wave,
-// after the camera's pass has found what each camera ray sees.
+// light_raygen (--integrator light, bdpt): the first ray of one light subpath per path of the wave
+// whose pixel index is below params.lightPaths (bidir/light_share.glsl), after the camera's pass
+// has found what each camera ray sees.
 // In: params, the emitter table and lights, push constants (the wave: path p traces the light
 // subpath of p's pixel and sample index, bidir/light_subpath.glsl).
 // Out: rayOrigin/rayDirection/throughput of every path that carries light, appended to ray
@@ -33,7 +34,7 @@ WF_DEFINE_QUEUE_APPEND(appendRay, counters.rayCount)
 void main() {
     uint path = gl_GlobalInvocationID.x;
     bool emits = false;
-    if (path < pass.pathCount) {
+    if (path < pass.pathCount && tracesLightSubpath(path % pass.wavePixels)) {
         EmittedRay ray;
 #if WF_MOTION
         // The camera subpath's time (camera_ray.glsl's dimension): both subpaths of a sample,

@@ -131,7 +131,7 @@ void shadeLightVertex(inout LightVertex v) {
         vec3 f = bsdfEval(bsdf, toCameraLocal, toLightLocal);
 #endif
         vec3 value = v.beta * f *
-                     (abs(toCameraLocal.z) *
+                     (lightShareSplatScale() * abs(toCameraLocal.z) *
                       adjointShadingFactor(surface.ns, surface.ng, toLight, c.toCamera) *
                       c.importance);
 #if WF_INTEGRATOR == WF_INTEGRATOR_BDPT

@@ -138,11 +138,13 @@ void main() {
 #if WF_INTEGRATOR == WF_INTEGRATOR_BDPT
     // The connections to the path slot's light vertices, one light bounce at a time, so that
     // every lane takes part in each append; light_splat tests them and adds them to the
-    // path's light film entry (several per path: its adds are atomic).
+    // path's light film entry (several per path: its adds are atomic). The light subpath is
+    // the one its pixel shares in its sample's slots (bidir/light_share.glsl).
+    uint lightPath = path - path % pass.wavePixels + lightSubpathOfPixel(path % pass.wavePixels);
     for (uint d = 0u; d + 3u <= params.maxDepth; ++d) {
         vec3 origin, segment, value;
-        bool connects = inQueue && bdptConnect(bdptVertex, path, pass.depth, d, origin, segment,
-                                               value);
+        bool connects = inQueue && bdptConnect(bdptVertex, lightPath, pass.depth, d, origin,
+                                               segment, value);
         uint slot = appendShadow(connects);
         if (connects) {
             shadowOrigin[slot] = wfPack(uvec4(floatBitsToUint(origin), path));

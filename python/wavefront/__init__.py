@@ -92,7 +92,7 @@ class Renderer:
     (render(..., guiding="on")); each result's stats say what auto decided (guidingDecision).
     integrator: "path" (the path tracer), "light" (light tracing), "bdpt" (bidirectional path
     tracing) or "vcm" (vertex connection and merging: consistent, not unbiased; vcm_radius as
-    --vcm-radius), as the CLI's --integrator:
+    --vcm-radius; light_share as --light-share), as the CLI's --integrator:
     the default of every render(), which may override it (render(..., integrator="path")).
     Raises DeviceError when there is no usable device.
     """
@@ -165,7 +165,7 @@ class Renderer:
                texture_filter=None, shade_split=None, no_randomize=False, spp_offset=None,
                spp_total=None, aov=(), time_limit=None, target_error=None, guiding=None,
                error_replicates=None, integrator=None, bdpt_heuristic=None, vcm_radius=None,
-               spectral=None, progress=None):
+               light_share=None, spectral=None, progress=None):
         """Renders `scene` and returns a RenderOutput. None means the CLI's default (spp 64,
         width 512, height from the camera's aspect, seed 0, sampler "sobol", max_depth 16,
         light_sampling "mis", ...). aov: names among albedo, normal, depth, variance, samples.

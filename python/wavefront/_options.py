@@ -13,7 +13,7 @@ RENDER_OPTIONS = (
     "light_sampling", "light_selection", "triangle_sampling", "sphere_sampling",
     "min_throughput", "clamp", "seed", "sampler", "texture_filter", "shade_split",
     "no_randomize", "spp_offset", "spp_total", "guiding", "error_replicates", "integrator",
-    "bdpt_heuristic", "vcm_radius", "spectral",
+    "bdpt_heuristic", "vcm_radius", "light_share", "spectral",
 )
 # load()'s options: those that change the scene rather than a render.
 LOAD_OPTIONS = ("camera", "env", "instancing", "aperture", "focus_distance", "time", "frame",

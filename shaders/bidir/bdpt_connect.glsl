@@ -59,18 +59,18 @@ float bdptPdf(BsdfParams bsdf,
 #define WF_BDPT_LOBES(bsdf, layers) bsdf
 #endif
 
-// Camera vertex c at camera bounce `depth` joined to light bounce d of `path`'s light
-// subpath: the segment to test (offset off both surfaces) and the weighted value to add to
+// Camera vertex c at camera bounce `depth` joined to light bounce d of the light subpath in
+// path slot `lightPath` (its pixel's, bidir/light_share.glsl): the segment to test (offset off both surfaces) and the weighted value to add to
 // the path's light film entry when it is unoccluded. False when there is nothing to connect
 // (no kept vertex, a Dirac one, a path over the maximum depth, a zero BSDF).
-bool bdptConnect(BdptCameraVertex c, uint path, uint depth, uint d, out vec3 origin,
+bool bdptConnect(BdptCameraVertex c, uint lightPath, uint depth, uint d, out vec3 origin,
                  out vec3 segment, out vec3 value) {
     origin = vec3(0.0);
     segment = vec3(0.0);
     value = vec3(0.0);
-    if (!c.connectable || d >= lightDepths[path] || depth + d + 3u > params.maxDepth)
+    if (!c.connectable || d >= lightDepths[lightPath] || depth + d + 3u > params.maxDepth)
         return false;
-    uint slot = d * params.pathCapacity + path;
+    uint slot = d * params.pathCapacity + lightPath;
     vec4 lightThroughput = lightVertexThroughputs[slot];
     if (all(equal(lightThroughput.rgb, vec3(0.0))))
         return false;

@@ -10,6 +10,7 @@
 #define WF_BDPT_STATE_GLSL
 #include "bidir/vcm_mis.h"
 #include "bidir/scene_camera.glsl"
+#include "bidir/light_share.glsl"
 #if WF_VCM
 #include "bidir/vcm_grid.glsl"
 #endif
@@ -45,10 +46,10 @@ layout(std430, binding = WF_BINDING_LIGHT_VERTEX_THROUGHPUTS) buffer LightVertex
 VcmMisConfig bdptMisConfig(uint sampleIndex) {
 #if WF_VCM
     float radius = vcmMergeRadius(sampleIndex);
-    return makeVcmMisConfig(WF_BDPT_MIS_EXPONENT, float(params.pixelCount),
-                            WF_PI * radius * radius * float(params.pixelCount), true, true);
+    return makeVcmMisConfig(WF_BDPT_MIS_EXPONENT, float(params.lightPaths),
+                            WF_PI * radius * radius * float(params.lightPaths), true, true);
 #else
-    return makeVcmMisConfig(WF_BDPT_MIS_EXPONENT, float(params.pixelCount), 0.0, true, false);
+    return makeVcmMisConfig(WF_BDPT_MIS_EXPONENT, float(params.lightPaths), 0.0, true, false);
 #endif
 }
 

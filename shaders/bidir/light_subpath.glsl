@@ -15,6 +15,7 @@
 #define WF_LIGHT_SUBPATH_GLSL
 #include "bidir/light_emission.h"
 #include "bidir/scene_camera.glsl"
+#include "bidir/light_share.glsl"
 
 #define WF_LIGHT_DIM_CHOICE 0u    // 1D: the emitter
 #define WF_LIGHT_DIM_POINT 1u     // 2D: the point on it (or on the scene's disk)

@@ -67,7 +67,7 @@ LightFilmSum vcmMerge(BdptCameraVertex c, uint path, uint depth, uint wavePixels
     VcmMisConfig cfg = bdptMisConfig(c.sampleIndex);
     // A photon's flux is its throughput over the light subpaths of the sample index; the
     // estimate divides it by the disk it is gathered over.
-    float normalization = 1.0 / (WF_PI * radiusSq * float(params.pixelCount));
+    float normalization = 1.0 / (WF_PI * radiusSq * float(params.lightPaths));
     // Russian roulette on the query, unbiased (taken with probability q, it counts 1 / q). Its
     // merges weigh at most vcmMergeWeightBound; below WF_VCM_QUERY_BOUND the query is taken with
     // probability bound / WF_VCM_QUERY_BOUND, so a merge's value grows to at most

@@ -175,7 +175,9 @@ struct RenderParams {
     // hash grid's cells (a power of two).
     float mergeRadius;
     uint mergeCells;
-    uint pad4;
+    // Light subpaths per sample index (light, bdpt, vcm): one per --light-share pixels
+    // (bidir/light_share.glsl); pixelCount without sharing.
+    uint lightPaths;
 };
 
 // VkDispatchIndirectCommand followed by the item count the dispatch covers.

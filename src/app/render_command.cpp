@@ -23,6 +23,7 @@
 #include "render/gpu_scene/scene_buffers.h"
 #include "render/guiding/guiding_schedule.h"
 #include "render/guiding/sd_tree.h"
+#include "render/integrator_support.h"
 #include "render/wavefront_renderer.h"
 #include "scene/scene_summary.h"
 
@@ -445,14 +446,20 @@ int runRenderCommand(const std::vector<std::string>& args) {
     if (!spectral.empty())
         guideAttributes.push_back({"spectral", spectral});
     if (settings.integrator != Integrator::Path) {
-        // One light subpath per camera sample: both counts, so that a reader can normalise.
-        const uint64_t samples = uint64_t(settings.width) * settings.height * finished.spp;
+        // One light subpath per --light-share pixels and sample: both counts, so that a reader
+        // can normalise.
+        const uint32_t pixels = settings.width * settings.height;
+        const uint64_t samples = uint64_t(pixels) * finished.spp;
+        const uint64_t lightPaths =
+            uint64_t(lightSubpathsPerSample(settings, renderer.variant().integrator,
+                                            renderer.variant().motion, pixels)) *
+            finished.spp;
         guideAttributes.insert(guideAttributes.end(),
                                {{"integrator", integratorName(settings.integrator)},
                                 {"cameraSamples", std::to_string(samples)},
-                                {"lightPaths", std::to_string(samples)}});
+                                {"lightPaths", std::to_string(lightPaths)}});
         statsContext.extraFields.push_back({"cameraSamples", std::to_string(samples)});
-        statsContext.extraFields.push_back({"lightPaths", std::to_string(samples)});
+        statsContext.extraFields.push_back({"lightPaths", std::to_string(lightPaths)});
     }
     if (settings.integrator == Integrator::Vcm) {
         // Merging is consistent, not unbiased: say so beside the image and its error figure.

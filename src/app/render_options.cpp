@@ -58,6 +58,11 @@ std::vector<OptionSpec> samplingOptions() {
         {"--vcm-radius", "", "F", "vcm's merging radius at the first sample, as a fraction of "
                                   "the scene's bounding-sphere radius (default 0.01); sample "
                                   "i merges within that times (i + 1)^-1/8"},
+        {"--light-share", "", "N", "light, bdpt and vcm: one light subpath per N pixels per "
+                                   "sample, shared by those pixels' camera subpaths (pixels "
+                                   "scattered over the image; unbiased: another image of the "
+                                   "same expectation, fewer light tracer splats; default 8 for "
+                                   "bdpt, 1 for light and vcm; 1 under --shutter)"},
         {"--spectral", "", "MODE", "scenes with KHR_materials_dispersion only: from its first "
                                    "dispersive vertex on a path carries single (one "
                                    "wavelength; default) or hero (four, a quarter of the "
@@ -255,6 +260,10 @@ void applyRenderFlags(const ParsedArgs& parsed, uint32_t defaultMaxDepth,
         settings.integrator != Integrator::Vcm)
         throw UsageError("--vcm-radius applies to --integrator vcm");
     settings.vcmRadius = parsed.floatValue("--vcm-radius", settings.vcmRadius, 1e-6f, 1.0f);
+    if (parsed.has("--light-share") && parsed.has("--integrator") &&
+        settings.integrator == Integrator::Path)
+        throw UsageError("--light-share applies to --integrator light, bdpt or vcm");
+    settings.lightShare = parsed.uintValue("--light-share", 0, 1, 1u << 24);
     settings.spectral = parseSpectralSampling(
         parsed.choiceValue("--spectral", spectralSamplingName(settings.spectral),
                            {"single", "hero"}));

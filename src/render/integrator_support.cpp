@@ -39,5 +39,17 @@ void requireIntegratorSupport(const RenderSettings& settings, const PreparedScen
         refuse("an orthographic camera has no lens that light paths can connect to");
 }
 
+uint32_t defaultLightShare(Integrator integrator) {
+    return integrator == Integrator::Bdpt ? 8u : 1u;
+}
+
+uint32_t lightSubpathsPerSample(const RenderSettings& settings, Integrator integrator,
+                                bool motion, uint32_t pixelCount) {
+    if (integrator == Integrator::Path || motion)
+        return pixelCount;
+    const uint64_t share =
+        settings.lightShare > 0 ? settings.lightShare : defaultLightShare(integrator);
+    return static_cast<uint32_t>((uint64_t(pixelCount) + share - 1) / share);
+}
 
 } // namespace wf

@@ -6,6 +6,7 @@
 #include "errors.h"
 #include "gpu/context.h"
 #include "render/gpu_scene/scene_buffers.h"
+#include "render/integrator_support.h"
 #include "render/path_buffers.h"
 
 namespace wf {
@@ -78,6 +79,8 @@ RenderParams renderParams(const PreparedScene& scene, const Camera& camera,
     params.motionSegments = scene.motionSegments;
     // A camera set since (the viewer's) has no keys: it stays where it is put.
     params.cameraMotionKeys = camera.motion.empty() ? 0u : scene.cameraMotionKeys;
+    params.lightPaths =
+        lightSubpathsPerSample(settings, variant.integrator, variant.motion, pixelCount);
     if (variant.integrator == Integrator::Vcm) {
         params.mergeRadius = settings.vcmRadius * scene.bounds.radius;
         params.mergeCells = PathBuffers::mergeCells(

@@ -46,6 +46,10 @@ struct RenderSettings {
     // --vcm-radius: vcm's merging radius at sample index 0, as a fraction of the scene's
     // bounding-sphere radius; sample index i merges within r (i + 1)^-1/8 (bidir/vcm_grid.glsl).
     float vcmRadius = 0.01f;
+    // --light-share N: light, bdpt and vcm trace one light subpath per N pixels per sample,
+    // which those pixels' camera subpaths share (shaders/bidir/light_share.glsl); 0 takes the
+    // integrator's default (kDefaultLightShare). Another image of the same expectation.
+    uint32_t lightShare = 0;
     // --spectral: in scenes with dispersion only, one wavelength per path or four (hero
     // wavelengths with spectral MIS; shader_variant.h). Another image of the same expectation.
     SpectralSampling spectral = SpectralSampling::Single;

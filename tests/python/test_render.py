@@ -224,3 +224,10 @@ def test_light_tracing_from_the_renderer_or_the_call(renderer, cornell):
         wf.Renderer(integrator="sppm")
     vcm = renderer.render(cornell, width=16, spp=2, max_depth=4, integrator="vcm", vcm_radius=0.05)
     assert np.isfinite(vcm.image).all() and vcm.image.mean() > 0.0
+    # light_share as --light-share: one light subpath per pixel is another image of bdpt's.
+    shared = renderer.render(cornell, width=16, spp=4, max_depth=4, integrator="bdpt", seed=5)
+    own = renderer.render(cornell, width=16, spp=4, max_depth=4, integrator="bdpt", seed=5,
+                          light_share=1)
+    assert not np.array_equal(shared.image, own.image)
+    with pytest.raises(ValueError, match="light_share"):
+        renderer.render(cornell, width=16, spp=1, integrator="path", light_share=2)
