@@ -364,11 +364,15 @@ int runRenderCommand(const std::vector<std::string>& args) {
         statsContext.extraFields.push_back(
             {"lightSubpathMemory", "{\"bytesPerPath\": " + std::to_string(pathBytes) +
                                        ", \"bytesPerWave\": " + std::to_string(waveBytes) + "}"});
+        const uint32_t share = renderer.variant().lightShare;
+        statsContext.extraFields.push_back({"lightShare", std::to_string(share)});
         if (verbose)
-            std::fprintf(stderr, "wavefront: %s: light subpaths reuse the path state and add "
-                                 "%llu bytes per path, %.1f MiB per wave of %u paths\n",
-                         integratorName(settings.integrator), (unsigned long long)pathBytes,
-                         double(waveBytes) / 1048576.0, renderer.pathCapacity());
+            std::fprintf(stderr, "wavefront: %s: one light subpath per %u pixel%s and sample; "
+                                 "light subpaths reuse the path state and add %llu bytes per "
+                                 "path, %.1f MiB per wave of %u paths\n",
+                         integratorName(settings.integrator), share, share == 1 ? "" : "s",
+                         (unsigned long long)pathBytes, double(waveBytes) / 1048576.0,
+                         renderer.pathCapacity());
     }
     if (adaptive) {
         renderAdaptively(renderer, settings, targetError, run, verbose,
@@ -451,8 +455,7 @@ int runRenderCommand(const std::vector<std::string>& args) {
         const uint32_t pixels = settings.width * settings.height;
         const uint64_t samples = uint64_t(pixels) * finished.spp;
         const uint64_t lightPaths =
-            uint64_t(lightSubpathsPerSample(settings, renderer.variant().integrator,
-                                            renderer.variant().motion, pixels)) *
+            uint64_t(lightSubpathsPerSample(renderer.variant().lightShare, pixels)) *
             finished.spp;
         guideAttributes.insert(guideAttributes.end(),
                                {{"integrator", integratorName(settings.integrator)},

@@ -147,6 +147,9 @@ std::string renderSettingsKey(const RenderSettings& s, const ParsedArgs& parsed)
            (s.bdptBalance ? "balance " : "") +
            (s.integrator == Integrator::Vcm ? "vcm-radius " + std::to_string(s.vcmRadius) + " "
                                             : std::string()) +
+           (s.integrator != Integrator::Path && s.lightShare > 0
+                ? "light-share " + std::to_string(s.lightShare) + " "
+                : std::string()) +
            lightSamplingName(s.lightSampling) + " " +
            lightSelectionName(s.lightSelection) + " triangle " +
            (s.triangleSolidAngle ? "solid-angle" : "area") + " sphere " +

@@ -41,7 +41,8 @@ std::vector<OptionSpec> samplingOptions() {
                                      "emitters they see; unbiased, leaves black what only "
                                      "Dirac surfaces seen directly show), bdpt "
                                      "(bidirectional path tracing: each pixel sample's camera "
-                                     "and light subpaths, every connection between them "
+                                     "subpath and the light subpath it shares with "
+                                     "--light-share pixels, every connection between them "
                                      "weighed by MIS, the power heuristic; unbiased; keeps "
                                      "max-depth - 2 light vertices per pixel) or vcm (vertex "
                                      "connection and merging: bdpt plus merging each camera "
@@ -61,8 +62,10 @@ std::vector<OptionSpec> samplingOptions() {
         {"--light-share", "", "N", "light, bdpt and vcm: one light subpath per N pixels per "
                                    "sample, shared by those pixels' camera subpaths (pixels "
                                    "scattered over the image; unbiased: another image of the "
-                                   "same expectation, fewer light tracer splats; default 8 for "
-                                   "bdpt, 1 for light and vcm; 1 under --shutter)"},
+                                   "same expectation with fewer light tracer splats; default 8 "
+                                   "for bdpt in scenes without a Dirac lobe (roughness 0 on a "
+                                   "mirror, clear glass or a coat), whose caustics need those "
+                                   "splats, else 1; always 1 with something moving)"},
         {"--spectral", "", "MODE", "scenes with KHR_materials_dispersion only: from its first "
                                    "dispersive vertex on a path carries single (one "
                                    "wavelength; default) or hero (four, a quarter of the "

@@ -1,5 +1,6 @@
 #include "render/integrator_support.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -39,17 +40,30 @@ void requireIntegratorSupport(const RenderSettings& settings, const PreparedScen
         refuse("an orthographic camera has no lens that light paths can connect to");
 }
 
-uint32_t defaultLightShare(Integrator integrator) {
-    return integrator == Integrator::Bdpt ? 8u : 1u;
+namespace {
+
+// Roughness 0 (which no texture raises) on a lobe that exists: a mirror, clear glass, a
+// smooth coat.
+bool hasDiracLobe(const Material& m) {
+    const bool smooth = m.roughness <= 0.0f && m.anisotropyStrength <= 0.0f &&
+                        (m.metallic > 0.0f || m.specular > 0.0f || m.transmission > 0.0f);
+    return smooth || (m.clearcoat > 0.0f && m.clearcoatRoughness <= 0.0f);
 }
 
-uint32_t lightSubpathsPerSample(const RenderSettings& settings, Integrator integrator,
-                                bool motion, uint32_t pixelCount) {
+} // namespace
+
+uint32_t lightShareFor(const RenderSettings& settings, Integrator integrator, bool motion,
+                       const std::vector<Material>& materials) {
     if (integrator == Integrator::Path || motion)
-        return pixelCount;
-    const uint64_t share =
-        settings.lightShare > 0 ? settings.lightShare : defaultLightShare(integrator);
-    return static_cast<uint32_t>((uint64_t(pixelCount) + share - 1) / share);
+        return 1;
+    if (settings.lightShare > 0)
+        return settings.lightShare;
+    const bool dirac = std::any_of(materials.begin(), materials.end(), hasDiracLobe);
+    return integrator == Integrator::Bdpt && !dirac ? 8u : 1u;
+}
+
+uint32_t lightSubpathsPerSample(uint32_t share, uint32_t pixelCount) {
+    return static_cast<uint32_t>((uint64_t(pixelCount) + share - 1) / std::max(share, 1u));
 }
 
 } // namespace wf

@@ -79,8 +79,7 @@ RenderParams renderParams(const PreparedScene& scene, const Camera& camera,
     params.motionSegments = scene.motionSegments;
     // A camera set since (the viewer's) has no keys: it stays where it is put.
     params.cameraMotionKeys = camera.motion.empty() ? 0u : scene.cameraMotionKeys;
-    params.lightPaths =
-        lightSubpathsPerSample(settings, variant.integrator, variant.motion, pixelCount);
+    params.lightPaths = lightSubpathsPerSample(variant.lightShare, pixelCount);
     if (variant.integrator == Integrator::Vcm) {
         params.mergeRadius = settings.vcmRadius * scene.bounds.radius;
         params.mergeCells = PathBuffers::mergeCells(

@@ -6,6 +6,7 @@
 
 #include "errors.h"
 #include "render/gpu_scene/scene_buffers.h"
+#include "render/integrator_support.h"
 #include "passes/shade_kinds.h"
 #include "render/wavefront_renderer.h"
 #include "passes/workgroup.h"
@@ -98,6 +99,8 @@ ShaderVariant chooseVariant(const PreparedScene& scene, const RenderSettings& se
     variant.thinLens = scene.camera.aperture > 0.0f;
     variant.instances = !scene.instances.empty();
     variant.motion = scene.motionSegments > 0;
+    variant.lightShare =
+        lightShareFor(settings, variant.integrator, variant.motion, scene.materials);
     variant.sampler = settings.sampler;
     variant.randomizeSamples = settings.randomizeSamples;
     variant.errorReplicates = errorReplicatesFor(settings);

@@ -96,6 +96,8 @@ struct ShaderVariant {
     bool rayTracing = false;
     bool guiding = false;             // WF_GUIDING: the path guide's mixture and training
     bool motion = false;              // WF_MOTION: something moves within the shutter
+    // Pixels per light subpath (--light-share; no define: RenderParams::lightPaths).
+    uint32_t lightShare = 1;
     TablePages trianglePages;         // WF_TRIANGLE_PAGES, _SHIFT: set by the renderer
     TablePages bvhPages;              // WF_BVH_PAGES, _SHIFT: set by the renderer
     TablePages instancePages;         // WF_INSTANCE_PAGES, _SHIFT: set by the renderer
