@@ -63,9 +63,10 @@ std::vector<OptionSpec> samplingOptions() {
                                    "sample, shared by those pixels' camera subpaths (pixels "
                                    "scattered over the image; unbiased: another image of the "
                                    "same expectation with fewer light tracer splats; default 8 "
-                                   "for bdpt in scenes without a Dirac lobe (roughness 0 on a "
-                                   "mirror, clear glass or a coat), whose caustics need those "
-                                   "splats, else 1; always 1 with something moving)"},
+                                   "for bdpt and vcm in scenes without a Dirac lobe (roughness "
+                                   "0 on a mirror, clear glass or a coat), whose caustics need "
+                                   "those splats and photons, else 1, and 1 for light; always 1 "
+                                   "with something moving)"},
         {"--spectral", "", "MODE", "scenes with KHR_materials_dispersion only: from its first "
                                    "dispersive vertex on a path carries single (one "
                                    "wavelength; default) or hero (four, a quarter of the "

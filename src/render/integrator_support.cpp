@@ -59,7 +59,7 @@ uint32_t lightShareFor(const RenderSettings& settings, Integrator integrator, bo
     if (settings.lightShare > 0)
         return settings.lightShare;
     const bool dirac = std::any_of(materials.begin(), materials.end(), hasDiracLobe);
-    return integrator == Integrator::Bdpt && !dirac ? 8u : 1u;
+    return integrator != Integrator::Light && !dirac ? 8u : 1u;
 }
 
 uint32_t lightSubpathsPerSample(uint32_t share, uint32_t pixelCount) {

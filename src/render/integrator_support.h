@@ -15,12 +15,13 @@ struct PreparedScene;
 void requireIntegratorSupport(const RenderSettings& settings, const PreparedScene& scene);
 
 // Pixels per light subpath (ShaderVariant::lightShare): --light-share, else its default. bdpt
-// shares each light subpath among 8 pixels where no material has a Dirac lobe: on the Cornell
-// box its relMSE per sample fell by 17% at 30% less time against one per pixel (the light
-// tracer's splats, which no pixel's sampler stratifies, weigh less), while on the glass
-// caustic, seen directly only through those splats, 8 cost 1.5x the efficiency
-// (docs/bidirectional.md). Light tracing and vcm keep one per pixel, and every integrator does
-// where something moves (a shared subpath would have to share its camera subpaths' instants).
+// and vcm share each light subpath among 8 pixels where no material has a Dirac lobe: on the
+// Cornell box bdpt's relMSE per sample fell by 17% at 30% less time against one per pixel (the
+// light tracer's splats, which no pixel's sampler stratifies, weigh less), while on the glass
+// caustic, seen directly only through those splats, 8 cost 1.5x the efficiency, and vcm's
+// merges on the mirror + glass box want every photon (docs/bidirectional.md). Light tracing
+// keeps one per pixel, and every integrator does where something moves (a shared subpath
+// would have to share its camera subpaths' instants).
 uint32_t lightShareFor(const RenderSettings& settings, Integrator integrator, bool motion,
                        const std::vector<Material>& materials);
 
