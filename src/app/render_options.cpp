@@ -264,8 +264,7 @@ void applyRenderFlags(const ParsedArgs& parsed, uint32_t defaultMaxDepth,
         settings.integrator != Integrator::Vcm)
         throw UsageError("--vcm-radius applies to --integrator vcm");
     settings.vcmRadius = parsed.floatValue("--vcm-radius", settings.vcmRadius, 1e-6f, 1.0f);
-    if (parsed.has("--light-share") && parsed.has("--integrator") &&
-        settings.integrator == Integrator::Path)
+    if (parsed.has("--light-share") && settings.integrator == Integrator::Path)
         throw UsageError("--light-share applies to --integrator light, bdpt or vcm");
     settings.lightShare = parsed.uintValue("--light-share", 0, 1, 1u << 24);
     settings.spectral = parseSpectralSampling(
