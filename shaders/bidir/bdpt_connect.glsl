@@ -60,8 +60,9 @@ float bdptPdf(BsdfParams bsdf,
 #endif
 
 // Camera vertex c at camera bounce `depth` joined to light bounce d of the light subpath in
-// path slot `lightPath` (its pixel's, bidir/light_share.glsl): the segment to test (offset off both surfaces) and the weighted value to add to
-// the path's light film entry when it is unoccluded. False when there is nothing to connect
+// path slot `lightPath` (the one its pixel shares, bidir/light_share.glsl): the segment to
+// test (offset off both surfaces) and the weighted value to add to the path's light film entry
+// when it is unoccluded. False when there is nothing to connect
 // (no kept vertex, a Dirac one, a path over the maximum depth, a zero BSDF).
 bool bdptConnect(BdptCameraVertex c, uint lightPath, uint depth, uint d, out vec3 origin,
                  out vec3 segment, out vec3 value) {

@@ -63,7 +63,8 @@ uint32_t lightShareFor(const RenderSettings& settings, Integrator integrator, bo
 }
 
 uint32_t lightSubpathsPerSample(uint32_t share, uint32_t pixelCount) {
-    return static_cast<uint32_t>((uint64_t(pixelCount) + share - 1) / std::max(share, 1u));
+    const uint64_t pixels = std::max<uint64_t>(share, 1);
+    return static_cast<uint32_t>((pixelCount + pixels - 1) / pixels);
 }
 
 } // namespace wf

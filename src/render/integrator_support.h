@@ -1,5 +1,6 @@
-// What the integrators other than the path tracer (--integrator light, bdpt) do not take yet,
-// or cannot: checked before a renderer is made, a one-line UsageError each.
+// What the integrators other than the path tracer (--integrator light, bdpt, vcm) do not take
+// yet, or cannot: checked before a renderer is made, a one-line UsageError each; and how many
+// pixels share each of their light subpaths (--light-share).
 #pragma once
 #include <cstdint>
 #include <vector>
